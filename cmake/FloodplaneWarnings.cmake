@@ -1,0 +1,21 @@
+# One place that decides the warnings for every floodplane target (KISS-ICP style).
+function(floodplane_set_warnings target)
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
+                                             -Wnon-virtual-dtor -Wold-style-cast
+                                             -Wcast-align -Woverloaded-virtual)
+    if(FLOODPLANE_WERROR)
+      target_compile_options(${target} PRIVATE -Werror)
+    endif()
+  endif()
+endfunction()
+
+# Opt-in native code generation. Debian's PCL is built for baseline x86-64; mixing
+# -march=native objects with it changes Eigen's alignment and crashes at free(), so the
+# option also sets PCL_NO_PRECOMPILE to build PCL's templates with the same flags.
+function(floodplane_set_arch target)
+  if(FLOODPLANE_NATIVE)
+    target_compile_options(${target} PRIVATE -march=native)
+    target_compile_definitions(${target} PUBLIC PCL_NO_PRECOMPILE)
+  endif()
+endfunction()

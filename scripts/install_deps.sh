@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what floodplane needs from Debian 12's packages. As root it installs them;
+# otherwise it prints the command to run and fails, so nothing half-happens.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libpcl-dev libeigen3-dev libflann-dev      # PCL (brings VTK and Boost), Eigen, FLANN
+  liblz4-dev libpng-dev                      # PCD compression link line, PNG output
+  libgtest-dev libgmock-dev libbenchmark-dev # tests and benchmarks
+  libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
+  clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+cmd="apt-get install -y --no-install-recommends ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install_deps: missing packages: ${missing[*]}" >&2
+  echo "install_deps: run as root:  apt-get update && $cmd" >&2
+  exit 1
+fi
+echo "install_deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+$cmd
