@@ -34,6 +34,7 @@ PlaneFit PlaneSums::fit() const {
   plane.normal = solver.eigenvectors().col(0).normalized();
   if (plane.normal.dot(c) > 0.0) plane.normal = -plane.normal;  // face the sensor at 0
   plane.offset = -plane.normal.dot(c);
+  plane.eigenvalues = eigenvalues;
   plane.mean_squared_error = std::max(eigenvalues(0), 0.0);
   plane.curvature = plane.mean_squared_error / trace;
   plane.valid = plane.normal.allFinite() && std::isfinite(plane.offset);

@@ -24,8 +24,12 @@ class DistanceBuffer {
   float distance(std::size_t pixel) const { return distances_[pixel]; }
 
   /// Eq. 4 as a predicate: would a flood at this plane distance take the pixel?
-  bool fitsBetter(std::size_t pixel, float plane_distance) const {
-    return labels_[pixel] == 0 || plane_distance < distances_[pixel];
+  /// `margin` is a hysteresis the paper does not have: an owned pixel changes hands only if
+  /// the new plane is closer by more than the margin. With depth noise, two floods on one
+  /// wall have almost the same plane and would otherwise trade pixels by coin flip, leaving
+  /// both as salt and pepper for the relabelling to shatter.
+  bool fitsBetter(std::size_t pixel, float plane_distance, float margin = 0.f) const {
+    return labels_[pixel] == 0 || plane_distance + margin < distances_[pixel];
   }
 
   /// Gives the pixel to `segment` at `plane_distance`; returns the previous owner (0: none).

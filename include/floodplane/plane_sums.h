@@ -2,6 +2,10 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "floodplane/point_grid.h"
 
 namespace floodplane {
@@ -12,10 +16,34 @@ struct PlaneFit {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, towards the sensor origin
   double offset = 0.0;                                ///< d
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< population covariance (1/N)
+  Eigen::Vector3d eigenvalues = Eigen::Vector3d::Zero();  ///< of the covariance, ascending
   double mean_squared_error = 0.0;  ///< smallest eigenvalue: mean squared distance to the plane
   double curvature = 0.0;           ///< lambda_0 / (lambda_0 + lambda_1 + lambda_2), as PCL
   bool valid = false;               ///< false with fewer than 3 points or a degenerate spread
 };
+
+/// Smallest |cos| of the angle between a plane's normal and the viewing ray to its points.
+/// A camera cannot see a surface edge-on; a "plane" beyond 87 degrees of incidence is the
+/// fan of viewing rays of a few image rows or columns, which fits any depth noise along
+/// those rays (it passes through the sensor: d = 0), not a surface.
+constexpr double kMinIncidenceCosine = 0.05;
+
+/// Whether the plane through `point` with unit `normal` faces the sensor at the origin by
+/// more than kMinIncidenceCosine.
+inline bool facesSensor(const Eigen::Vector3d& normal, const Eigen::Vector3d& point) {
+  const double range = point.norm();
+  return range > 0.0 && std::abs(normal.dot(point)) >= kMinIncidenceCosine * range;
+}
+
+/// Standard deviation of a fitted normal's direction [rad]: the residual variance over the
+/// number of points times their spread along the plane's narrower in-plane axis. Infinite
+/// when the points do not span a plane clearly (second eigenvalue under 4x the first: a line,
+/// or a strip no wider than the noise), whatever their number.
+inline double normalUncertainty(const PlaneFit& fit, double count) {
+  if (!fit.valid || !(fit.eigenvalues(1) >= 4.0 * fit.eigenvalues(0)) || !(count > 0.0))
+    return std::numeric_limits<double>::infinity();
+  return std::sqrt(fit.eigenvalues(0) / (count * fit.eigenvalues(1)));
+}
 
 /// Running sums of a point set (count, sum of P, sum of P P^T) in double precision. Adding,
 /// removing and merging are O(1), and so is the plane fit: the paper's merge step needs
@@ -50,6 +78,15 @@ struct PlaneSums {
   Eigen::Vector3d centroid() const {
     if (count <= 0.0) return Eigen::Vector3d::Zero();
     return Eigen::Vector3d(sx, sy, sz) / count;
+  }
+
+  /// Mean squared distance of the points to the plane n . P + d = 0, from the sums alone.
+  double meanSquaredDistance(const Eigen::Vector3d& n, double d) const {
+    if (count <= 0.0) return 0.0;
+    const double quadratic = n.x() * n.x() * sxx + n.y() * n.y() * syy + n.z() * n.z() * szz +
+                             2.0 * (n.x() * n.y() * sxy + n.x() * n.z() * sxz + n.y() * n.z() * syz);
+    const double linear = n.x() * sx + n.y() * sy + n.z() * sz;
+    return std::max(0.0, (quadratic + 2.0 * d * linear) / count + d * d);
   }
 
   /// The least-squares plane: centroid, and the eigenvector of the covariance with the

@@ -25,6 +25,8 @@ struct Shadow {
 /// pixel of a span is decided by one comparison, with its left or right neighbour; the first
 /// pixel of a span found in a shadow, with its neighbour in the parent row.
 ///
+/// `visitor.span(y, x_begin, x_end)` is told of every span once it is complete.
+///
 /// `shadows` is scratch space; pass the same vector every time to avoid allocation.
 template <class Visitor>
 void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visitor,
@@ -38,6 +40,7 @@ void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visit
     while (left > 0 && visitor.join(index(left, y), index(left - 1, y))) --left;
     right = x;
     while (right < width - 1 && visitor.join(index(right, y), index(right + 1, y))) ++right;
+    visitor.span(y, left, right);
   };
   const auto push = [&](int y, int x_begin, int x_end, int direction) {
     if (y >= 0 && y < height) shadows.push_back({y, x_begin, x_end, direction});

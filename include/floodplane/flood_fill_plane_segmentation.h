@@ -1,0 +1,166 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pcl/ModelCoefficients.h>
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/segmentation/planar_region.h>
+
+#include "floodplane/params.h"
+#include "floodplane/segmenter.h"
+
+namespace floodplane {
+
+/// Plane segmentation of organized point clouds by seeded span flood fill (Roychoudhury,
+/// Missura, Bennewitz: "Plane Segmentation in Organized Point Clouds using Flood Fill"),
+/// a drop-in for pcl::OrganizedMultiPlaneSegmentation that needs no normals:
+///
+///   floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> seg;   // was OMPS<..., Normal, Label>
+///   seg.setInputCloud(cloud);                                    // no setInputNormals
+///   seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+///
+/// Outputs mean what they mean for OMPS, with these definitions:
+/// - planes are numbered 1..K by inlier count, largest first; `inlier_indices[k-1]`,
+///   `model_coefficients[k-1]`, `regions[k-1]` describe plane k;
+/// - `labels` is an organized cloud of the input's size: label k for an inlier of plane k,
+///   0 for every other point ("no plane");
+/// - `label_indices[k]` holds the points labelled k; `label_indices[0]` the finite points
+///   that belong to no plane;
+/// - coefficients (a, b, c, d) describe a x + b y + c z + d = 0 with (a, b, c) unit length and
+///   pointing towards the sensor (the cloud's sensor_origin_), for every plane;
+/// - centroids and covariances (population, 1/N) are those of the inliers;
+/// - a region's contour is its ordered outer boundary (8-connected, clockwise in the image).
+///
+/// Input: any organized cloud (height > 1). Non-finite points are holes. The cloud's sensor
+/// pose (sensor_origin_, sensor_orientation_) is honoured: results do not change when cloud
+/// and pose move together. setIndices() is ignored, as by OMPS: the whole grid is segmented.
+/// An unorganized or missing cloud gives a PCL_ERROR and empty outputs.
+///
+/// Bad parameter values throw std::invalid_argument from the setter, naming it.
+/// Not thread-safe; use one instance per thread. Buffers are reused between calls.
+template <typename PointT, typename PointLT = pcl::Label>
+class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
+  using pcl::PCLBase<PointT>::input_;
+
+ public:
+  using PointCloud = pcl::PointCloud<PointT>;
+  using PointCloudPtr = typename PointCloud::Ptr;
+  using PointCloudConstPtr = typename PointCloud::ConstPtr;
+  using PointCloudL = pcl::PointCloud<PointLT>;
+  using PointCloudLPtr = typename PointCloudL::Ptr;
+  using PointCloudLConstPtr = typename PointCloudL::ConstPtr;
+  using Ptr = std::shared_ptr<FloodFillPlaneSegmentation<PointT, PointLT>>;
+  using ConstPtr = std::shared_ptr<const FloodFillPlaneSegmentation<PointT, PointLT>>;
+  using Regions = std::vector<pcl::PlanarRegion<PointT>, Eigen::aligned_allocator<pcl::PlanarRegion<PointT>>>;
+  using Centroids = std::vector<Eigen::Vector4f, Eigen::aligned_allocator<Eigen::Vector4f>>;
+  using Covariances = std::vector<Eigen::Matrix3f, Eigen::aligned_allocator<Eigen::Matrix3f>>;
+
+  FloodFillPlaneSegmentation() = default;
+  explicit FloodFillPlaneSegmentation(const Params& params) { setParams(params); }
+  ~FloodFillPlaneSegmentation() override = default;
+
+  // ---- OrganizedMultiPlaneSegmentation's parameters ----------------------------------------
+  /// Smallest number of inliers of a reported plane. Default 300.
+  void setMinInliers(unsigned min_inliers) { params_.min_inliers = min_inliers; }
+  unsigned getMinInliers() const { return params_.min_inliers; }
+  /// theta_angle [rad]: the largest angle between normals in the seed tests (Eqs. 6, 7) and
+  /// between merging planes (Eq. 9). Must be in (0, pi/2). Default 0.1.
+  void setAngularThreshold(double angular_threshold);
+  double getAngularThreshold() const { return params_.angular_threshold; }
+  /// sigma_plane [m]: the largest point-to-plane distance in the flood (Eq. 2). Default 0.01.
+  void setDistanceThreshold(double distance_threshold);
+  double getDistanceThreshold() const { return params_.distance_threshold; }
+  /// Largest curvature lambda_0 / (lambda_0 + lambda_1 + lambda_2) of a reported plane, as
+  /// in OMPS. Default 1/3, which accepts every plane (OMPS's 0.001 rejects far Kinect walls).
+  void setMaximumCurvature(double maximum_curvature);
+  double getMaximumCurvature() const { return params_.maximum_curvature; }
+  /// Project the regions' contour points onto their plane along the viewing rays, as OMPS's
+  /// segmentAndRefine does. Default false.
+  void setProjectPoints(bool project_points) { params_.project_points = project_points; }
+  bool getProjectPoints() const { return params_.project_points; }
+
+  // ---- the paper's parameters and floodplane's own --------------------------------------
+  /// sigma_seed [m]: side of the seed cube (Sec. III-C). Default 0.06.
+  void setSeedSize(double seed_size);
+  double getSeedSize() const { return params_.seed_size; }
+  /// sigma_plane-merge [m] of Eq. 9. Default 0.03.
+  void setMergeDistance(double merge_distance);
+  double getMergeDistance() const { return params_.merge_distance; }
+  /// Sub-sampling factor: 1, 2, 4 or 8 (Table III). Labels are always full resolution.
+  void setSubsampling(int factor);
+  int getSubsampling() const { return params_.subsampling; }
+  /// c [1/m] of the depth noise sigma(r) = c r^2; 0 for the paper's fixed thresholds.
+  void setDepthNoiseCoefficient(double coefficient);
+  double getDepthNoiseCoefficient() const { return params_.depth_noise_coefficient; }
+  /// All parameters at once; throws std::invalid_argument naming the first bad one.
+  void setParams(const Params& params);
+  const Params& getParams() const { return params_; }
+  /// Record the time of each phase (Fig. 5) in getLastSegmentation().phases.
+  void setMeasurePhases(bool measure) { measure_phases_ = measure; }
+
+  // ---- segmentation, with OrganizedMultiPlaneSegmentation's signatures -------------------
+  /// Planes without the refinement step.
+  void segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
+               std::vector<pcl::PointIndices>& inlier_indices);
+  /// Planes without the refinement step, with their inliers' centroids and covariances, the
+  /// label cloud and the points of every label.
+  void segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
+               std::vector<pcl::PointIndices>& inlier_indices, Centroids& centroids,
+               Covariances& covariances, pcl::PointCloud<PointLT>& labels,
+               std::vector<pcl::PointIndices>& label_indices);
+  /// Planar regions (centroid, covariance, count, contour, coefficients) without refinement.
+  void segment(Regions& regions);
+  /// Planar regions after refinement: planes grown into adjacent pixels that fit them.
+  void segmentAndRefine(Regions& regions);
+  /// Everything, after refinement. `labels` is allocated when null.
+  void segmentAndRefine(Regions& regions, std::vector<pcl::ModelCoefficients>& model_coefficients,
+                        std::vector<pcl::PointIndices>& inlier_indices, PointCloudLPtr& labels,
+                        std::vector<pcl::PointIndices>& label_indices,
+                        std::vector<pcl::PointIndices>& boundary_indices);
+
+  /// The last result as the core produced it: labels and planes in the sensor frame, the
+  /// time per phase and statistics. Valid until the next call.
+  const Segmentation& getLastSegmentation() const { return *last_; }
+
+ protected:
+  virtual std::string getClassName() const { return "FloodFillPlaneSegmentation"; }
+
+ private:
+  // A plane of the last result, in the cloud's frame.
+  struct CloudPlane {
+    Eigen::Vector4f coefficients;
+    Eigen::Vector4f centroid;
+    Eigen::Matrix3f covariance;
+    EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+  };
+
+  // Validates the input and runs the core; false (after a PCL_ERROR) when there is nothing
+  // to segment. Fills last_ and planes_.
+  bool run(bool refine, const char* method);
+  void clearOutputs(std::vector<pcl::ModelCoefficients>& model_coefficients,
+                    std::vector<pcl::PointIndices>& inlier_indices) const;
+  void fillCoefficients(std::vector<pcl::ModelCoefficients>& model_coefficients) const;
+  void fillIndices(std::vector<pcl::PointIndices>& inlier_indices, std::vector<pcl::PointIndices>* label_indices) const;
+  void fillLabels(pcl::PointCloud<PointLT>& labels) const;
+  void fillRegions(Regions& regions, std::vector<pcl::PointIndices>* boundary_indices);
+
+  Params params_;
+  bool measure_phases_ = false;
+  Segmenter segmenter_;
+  std::vector<float> sensor_frame_points_;  // the cloud in the sensor frame, when posed
+  std::vector<CloudPlane, Eigen::aligned_allocator<CloudPlane>> planes_;
+  std::vector<int> contour_;
+  const Segmentation* last_ = &empty_;
+  Segmentation empty_;
+};
+
+}  // namespace floodplane
+
+#ifdef PCL_NO_PRECOMPILE
+#include "floodplane/impl/flood_fill_plane_segmentation.hpp"
+#endif

@@ -1,0 +1,307 @@
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+
+#include "floodplane/flood_fill_plane_segmentation.h"
+#include "floodplane/region_boundary.h"
+
+namespace floodplane {
+
+namespace detail {
+/// Throws std::invalid_argument "floodplane::FloodFillPlaneSegmentation::<setter>: <message>".
+void throwBadParameter(const char* setter, const std::string& message);
+}  // namespace detail
+
+// ---- setters -----------------------------------------------------------------------------
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setParams(const Params& params) {
+  try {
+    params.validate();
+  } catch (const std::invalid_argument& e) {
+    detail::throwBadParameter("setParams", e.what());
+  }
+  params_ = params;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setAngularThreshold(double angular_threshold) {
+  if (!(angular_threshold > 0.0 && angular_threshold < M_PI / 2))
+    detail::throwBadParameter("setAngularThreshold", "the angle must be in (0, pi/2) radians, got " +
+                                                         std::to_string(angular_threshold));
+  params_.angular_threshold = angular_threshold;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setDistanceThreshold(double distance_threshold) {
+  if (!(std::isfinite(distance_threshold) && distance_threshold > 0.0))
+    detail::throwBadParameter("setDistanceThreshold", "the distance must be a finite number of metres > 0, got " +
+                                                          std::to_string(distance_threshold));
+  params_.distance_threshold = distance_threshold;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setMaximumCurvature(double maximum_curvature) {
+  if (!(std::isfinite(maximum_curvature) && maximum_curvature >= 0.0))
+    detail::throwBadParameter("setMaximumCurvature", "the curvature must be a finite number >= 0, got " +
+                                                         std::to_string(maximum_curvature));
+  params_.maximum_curvature = maximum_curvature;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setSeedSize(double seed_size) {
+  if (!(std::isfinite(seed_size) && seed_size > 0.0))
+    detail::throwBadParameter("setSeedSize", "the seed size must be a finite number of metres > 0, got " +
+                                                 std::to_string(seed_size));
+  params_.seed_size = seed_size;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setMergeDistance(double merge_distance) {
+  if (!(std::isfinite(merge_distance) && merge_distance > 0.0))
+    detail::throwBadParameter("setMergeDistance", "the merge distance must be a finite number of metres > 0, got " +
+                                                      std::to_string(merge_distance));
+  params_.merge_distance = merge_distance;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setSubsampling(int factor) {
+  if (!isValidSubsampling(factor))
+    detail::throwBadParameter("setSubsampling", "the factor must be 1, 2, 4 or 8, got " + std::to_string(factor));
+  params_.subsampling = factor;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setDepthNoiseCoefficient(double coefficient) {
+  if (!(std::isfinite(coefficient) && coefficient >= 0.0))
+    detail::throwBadParameter("setDepthNoiseCoefficient", "the coefficient must be a finite number >= 0, got " +
+                                                              std::to_string(coefficient));
+  params_.depth_noise_coefficient = coefficient;
+}
+
+// ---- running the core --------------------------------------------------------------------
+
+template <typename PointT, typename PointLT>
+bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* method) {
+  last_ = &empty_;
+  planes_.clear();
+  const std::string name = getClassName();
+  if (!input_) {
+    PCL_ERROR("[floodplane::%s::%s] No input cloud: call setInputCloud first.\n", name.c_str(), method);
+    return false;
+  }
+  if (!input_->isOrganized() || input_->size() != static_cast<std::size_t>(input_->width) * input_->height) {
+    PCL_ERROR("[floodplane::%s::%s] This method needs an organized point cloud (height > 1); got %u x %u "
+              "with %zu points.\n",
+              name.c_str(), method, input_->width, input_->height, static_cast<std::size_t>(input_->size()));
+    return false;
+  }
+
+  // The core works in the sensor frame. Clouds straight from a camera are already in it
+  // and are read in place; a posed cloud is moved into it once.
+  const Eigen::Vector3f origin = input_->sensor_origin_.template head<3>();
+  const Eigen::Quaternionf orientation = input_->sensor_orientation_;
+  const bool in_sensor_frame = origin.isZero(0.0f) && orientation.w() == 1.0f && orientation.vec().isZero(0.0f);
+  const Eigen::Matrix3f rotation = orientation.normalized().toRotationMatrix();
+
+  PointGrid grid;
+  grid.width = static_cast<int>(input_->width);
+  grid.height = static_cast<int>(input_->height);
+  if (in_sensor_frame) {
+    static_assert(sizeof(PointT) % sizeof(float) == 0, "PCL point types are made of 4-byte fields");
+    grid.data = &(*input_)[0].x;
+    grid.stride = sizeof(PointT) / sizeof(float);
+  } else {
+    sensor_frame_points_.resize(input_->size() * 3);
+    const Eigen::Matrix3f to_sensor = rotation.transpose();
+    for (std::size_t i = 0; i < input_->size(); ++i) {
+      const Eigen::Vector3f p = to_sensor * ((*input_)[i].getVector3fMap() - origin);
+      sensor_frame_points_[3 * i] = p.x();
+      sensor_frame_points_[3 * i + 1] = p.y();
+      sensor_frame_points_[3 * i + 2] = p.z();
+    }
+    grid.data = sensor_frame_points_.data();
+    grid.stride = 3;
+  }
+
+  segmenter_.setParams(params_);
+  Segmenter::Options options;
+  options.refine = refine;
+  options.measure_phases = measure_phases_;
+  last_ = &segmenter_.segment(grid, options);
+
+  // The planes in the cloud's frame.
+  planes_.resize(last_->planes.size());
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    const PlaneFit& fit = last_->planes[k].fit;
+    const Eigen::Vector3f normal = rotation * fit.normal.cast<float>();
+    const Eigen::Vector3f centroid = rotation * fit.centroid.cast<float>() + origin;
+    CloudPlane& plane = planes_[k];
+    plane.coefficients << normal, -normal.dot(centroid);
+    plane.centroid << centroid, 1.0f;
+    plane.covariance = rotation * fit.covariance.cast<float>() * rotation.transpose();
+  }
+  return true;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::fillCoefficients(
+    std::vector<pcl::ModelCoefficients>& model_coefficients) const {
+  model_coefficients.resize(planes_.size());
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    model_coefficients[k].header = input_->header;
+    const Eigen::Vector4f& c = planes_[k].coefficients;
+    model_coefficients[k].values.assign(c.data(), c.data() + 4);
+  }
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::PointIndices>& inlier_indices,
+                                                              std::vector<pcl::PointIndices>* label_indices) const {
+  const std::vector<std::uint32_t>& labels = last_->labels;
+  inlier_indices.resize(planes_.size());
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    inlier_indices[k].header = input_->header;
+    inlier_indices[k].indices.clear();
+    inlier_indices[k].indices.reserve(last_->planes[k].inlier_count);
+  }
+  pcl::PointIndices* unlabelled = nullptr;
+  if (label_indices) {
+    label_indices->resize(planes_.size() + 1);
+    unlabelled = &(*label_indices)[0];
+    unlabelled->header = input_->header;
+    unlabelled->indices.clear();
+  }
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const std::uint32_t k = labels[i];
+    if (k != 0) {
+      inlier_indices[k - 1].indices.push_back(static_cast<int>(i));
+    } else if (unlabelled && pcl::isXYZFinite((*input_)[i])) {
+      unlabelled->indices.push_back(static_cast<int>(i));
+    }
+  }
+  if (label_indices) {
+    for (std::size_t k = 0; k < planes_.size(); ++k) (*label_indices)[k + 1] = inlier_indices[k];
+  }
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::fillLabels(pcl::PointCloud<PointLT>& labels) const {
+  labels.header = input_->header;
+  labels.resize(input_->width, input_->height);  // sets width, height and size
+  labels.is_dense = true;
+  labels.sensor_origin_ = input_->sensor_origin_;
+  labels.sensor_orientation_ = input_->sensor_orientation_;
+  for (std::size_t i = 0; i < last_->labels.size(); ++i) labels[i].label = last_->labels[i];
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
+                                                              std::vector<pcl::PointIndices>* boundary_indices) {
+  regions.resize(planes_.size());
+  if (boundary_indices) boundary_indices->resize(planes_.size());
+  const Eigen::Vector3f viewpoint = input_->sensor_origin_.template head<3>();
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    contour_.clear();
+    traceRegionBoundary(last_->labels.data(), last_->width, last_->height, static_cast<std::uint32_t>(k + 1),
+                        last_->planes[k].first_pixel, contour_);
+    const CloudPlane& plane = planes_[k];
+    typename PointCloud::VectorType contour(contour_.size());
+    for (std::size_t j = 0; j < contour_.size(); ++j) {
+      contour[j] = (*input_)[contour_[j]];
+      if (params_.project_points) {
+        // Along the viewing ray from the viewpoint onto the plane, as OMPS.
+        const Eigen::Vector3f n = plane.coefficients.template head<3>();
+        const Eigen::Vector3f ray = contour[j].getVector3fMap() - viewpoint;
+        const float denominator = n.dot(ray);
+        if (std::abs(denominator) > 1e-12f) {
+          const float t = -(n.dot(viewpoint) + plane.coefficients[3]) / denominator;
+          contour[j].getVector3fMap() = viewpoint + t * ray;
+        }
+      }
+    }
+    if (boundary_indices) {
+      (*boundary_indices)[k].header = input_->header;
+      (*boundary_indices)[k].indices.assign(contour_.begin(), contour_.end());
+    }
+    regions[k] = pcl::PlanarRegion<PointT>(plane.centroid.template head<3>(), plane.covariance,
+                                           last_->planes[k].inlier_count, contour, plane.coefficients);
+  }
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::clearOutputs(
+    std::vector<pcl::ModelCoefficients>& model_coefficients, std::vector<pcl::PointIndices>& inlier_indices) const {
+  model_coefficients.clear();
+  inlier_indices.clear();
+}
+
+// ---- the OMPS-compatible entry points ----------------------------------------------------
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
+                                                          std::vector<pcl::PointIndices>& inlier_indices) {
+  clearOutputs(model_coefficients, inlier_indices);
+  if (!run(false, "segment")) return;
+  fillCoefficients(model_coefficients);
+  fillIndices(inlier_indices, nullptr);
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
+                                                          std::vector<pcl::PointIndices>& inlier_indices,
+                                                          Centroids& centroids, Covariances& covariances,
+                                                          pcl::PointCloud<PointLT>& labels,
+                                                          std::vector<pcl::PointIndices>& label_indices) {
+  clearOutputs(model_coefficients, inlier_indices);
+  centroids.clear();
+  covariances.clear();
+  labels.clear();
+  label_indices.clear();
+  if (!run(false, "segment")) return;
+  fillCoefficients(model_coefficients);
+  fillIndices(inlier_indices, &label_indices);
+  fillLabels(labels);
+  for (const CloudPlane& plane : planes_) {
+    centroids.push_back(plane.centroid);
+    covariances.push_back(plane.covariance);
+  }
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::segment(Regions& regions) {
+  regions.clear();
+  if (!run(false, "segment")) return;
+  fillRegions(regions, nullptr);
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(Regions& regions) {
+  regions.clear();
+  if (!run(true, "segmentAndRefine")) return;
+  fillRegions(regions, nullptr);
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(
+    Regions& regions, std::vector<pcl::ModelCoefficients>& model_coefficients,
+    std::vector<pcl::PointIndices>& inlier_indices, PointCloudLPtr& labels,
+    std::vector<pcl::PointIndices>& label_indices, std::vector<pcl::PointIndices>& boundary_indices) {
+  regions.clear();
+  clearOutputs(model_coefficients, inlier_indices);
+  if (!labels) labels.reset(new PointCloudL);
+  labels->clear();
+  label_indices.clear();
+  boundary_indices.clear();
+  if (!run(true, "segmentAndRefine")) return;
+  fillCoefficients(model_coefficients);
+  fillIndices(inlier_indices, &label_indices);
+  fillLabels(*labels);
+  fillRegions(regions, &boundary_indices);
+}
+
+}  // namespace floodplane

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "floodplane/params.h"
+#include "floodplane/plane_sums.h"
+#include "floodplane/point_grid.h"
+
+namespace floodplane {
+
+/// Time spent in each phase of one segmentation (the paper's Fig. 5), in milliseconds.
+/// Filled only when Segmenter::Options::measure_phases is set.
+struct PhaseTimes {
+  double seed_selection = 0.0;  ///< scanning for seeds and testing them (Sec. III-C)
+  double flood_fill = 0.0;      ///< growing segments (Sec. III-A, III-B)
+  double relabelling = 0.0;     ///< connected components after Eq. 4 reassignments
+  double merging = 0.0;         ///< agglomerative plane merging (Sec. III-D)
+  double region_output = 0.0;   ///< labels at full resolution, refinement, plane fits
+  double total() const { return seed_selection + flood_fill + relabelling + merging + region_output; }
+};
+
+/// What happened inside one segmentation, for tests, benchmarks and curious users.
+struct SegmentationStats {
+  std::size_t seed_candidates = 0;  ///< unclaimed pixels tested as seeds
+  std::size_t seeds = 0;            ///< candidates that passed Eqs. 5-7 (one flood each)
+  std::size_t pixels_taken_over = 0;  ///< pixels reassigned by Eq. 4
+  std::size_t segments = 0;         ///< segments after relabelling
+  std::size_t merges = 0;           ///< merges by Eq. 9
+};
+
+/// One plane found in the cloud.
+struct SegmentedPlane {
+  PlaneFit fit;                    ///< least-squares plane of the inliers (sensor frame)
+  std::uint32_t inlier_count = 0;  ///< pixels at full resolution
+  std::size_t first_pixel = 0;     ///< its first pixel in raster order (starts its boundary)
+};
+
+/// The result: a label per pixel of the full-resolution grid and the planes.
+struct Segmentation {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint32_t> labels;    ///< 0 = no plane, k = planes[k - 1]
+  std::vector<SegmentedPlane> planes;   ///< largest first
+  PhaseTimes phases;
+  SegmentationStats stats;
+};
+
+/// The paper's method over a plain point grid, PCL-free: seed selection, span flood fill
+/// with the distance buffer, union-find relabelling, plane merging, region output.
+/// The sensor is at the grid's origin. One instance per thread; every buffer is kept between
+/// calls, so segmenting frames of one size allocates nothing after the first frame.
+class Segmenter {
+ public:
+  struct Options {
+    /// After merging, grow each plane into neighbouring unlabelled pixels that fit it (the
+    /// counterpart of OMPS's refinement; segmentAndRefine sets it).
+    bool refine = true;
+    /// Fill Segmentation::phases (a few clock reads per flood).
+    bool measure_phases = false;
+  };
+
+  explicit Segmenter(const Params& params = Params());
+  ~Segmenter();
+  Segmenter(Segmenter&&) noexcept;
+  Segmenter& operator=(Segmenter&&) noexcept;
+
+  /// Validates and sets the parameters; throws std::invalid_argument.
+  void setParams(const Params& params);
+  const Params& params() const { return params_; }
+
+  /// Segments an organized grid. The result stays valid until the next call.
+  const Segmentation& segment(const PointGrid& grid, const Options& options);
+  const Segmentation& segment(const PointGrid& grid) { return segment(grid, Options()); }
+
+ private:
+  struct Workspace;
+  Params params_;
+  std::unique_ptr<Workspace> workspace_;
+  Segmentation result_;
+};
+
+}  // namespace floodplane

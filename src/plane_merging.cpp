@@ -1,0 +1,128 @@
+#include "floodplane/plane_merging.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace floodplane {
+
+namespace {
+
+double normalVariance(const PlaneSums& sums, const PlaneFit& fit) {
+  const double sigma = normalUncertainty(fit, sums.count);
+  return sigma * sigma;
+}
+
+}  // namespace
+
+MergeCriterion::MergeCriterion(const Params& params)
+    : angle_(params.angular_threshold),
+      merge_distance_(params.merge_distance),
+      fit_tolerance_(0.5 * params.distance_threshold),
+      noise_coefficient_(params.depth_noise_coefficient) {}
+
+bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b,
+                               const PlaneFit& fit_b, double& cost) const {
+  PlaneSums both = a;
+  both.merge(b);
+  const PlaneFit merged = both.fit();
+  if (!merged.valid) return false;
+  const double depth_sigma = noise_coefficient_ * merged.centroid.squaredNorm();
+
+  if (fit_a.valid && fit_b.valid) {
+    // Eq. 9, first term: the normals agree, up to what their own uncertainty explains.
+    const double uncertainty = std::sqrt(normalVariance(a, fit_a) + normalVariance(b, fit_b));
+    const double allowed = std::min(angle_ + 3.0 * uncertainty, 1.5);
+    if (fit_a.normal.dot(fit_b.normal) < std::cos(allowed)) return false;
+    // Eq. 9, second term, both ways.
+    const double tolerance = std::max(merge_distance_, 3.0 * depth_sigma);
+    const Eigen::Vector3d between = fit_a.centroid - fit_b.centroid;
+    if (std::abs(between.dot(fit_a.normal)) >= tolerance) return false;
+    if (std::abs(between.dot(fit_b.normal)) >= tolerance) return false;
+  }
+
+  // Each part fits the merged plane.
+  const double fit_tolerance = std::max(fit_tolerance_, 2.0 * depth_sigma);
+  const double worst = std::max(a.meanSquaredDistance(merged.normal, merged.offset),
+                                b.meanSquaredDistance(merged.normal, merged.offset));
+  if (!(worst <= fit_tolerance * fit_tolerance)) return false;
+  cost = worst / (fit_tolerance * fit_tolerance);
+  return true;
+}
+
+void PlaneMerger::reset(std::size_t segment_count) {
+  edges_.clear();
+  neighbours_.resize(segment_count);
+  for (auto& list : neighbours_) list.clear();
+  parent_.resize(segment_count);
+  for (std::size_t i = 0; i < segment_count; ++i) parent_[i] = static_cast<std::int32_t>(i);
+  merges_ = 0;
+}
+
+void PlaneMerger::addEdge(std::int32_t a, std::int32_t b) {
+  if (a == b || a <= 0 || b <= 0) return;
+  edges_.emplace_back(std::min(a, b), std::max(a, b));
+}
+
+void PlaneMerger::consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums,
+                           const MergeCriterion& criterion) {
+  double cost = 0.0;
+  if (criterion.mergeable(sums[a], fits_[a], sums[b], fits_[b], cost))
+    queue_.push({cost, std::min(a, b), std::max(a, b), versions_[std::min(a, b)], versions_[std::max(a, b)]});
+}
+
+void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& criterion) {
+  const std::size_t n = parent_.size();
+  fits_.resize(n);
+  for (std::size_t i = 1; i < n; ++i) fits_[i] = sums[i].fit();
+  versions_.assign(n, 0);
+  queue_ = {};
+
+  std::sort(edges_.begin(), edges_.end());
+  edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+  for (const auto& [a, b] : edges_) {
+    neighbours_[a].push_back(b);
+    neighbours_[b].push_back(a);
+    consider(a, b, sums, criterion);
+  }
+
+  while (!queue_.empty()) {
+    const Candidate best = queue_.top();
+    queue_.pop();
+    if (parent_[best.a] != best.a || parent_[best.b] != best.b) continue;
+    if (versions_[best.a] != best.version_a || versions_[best.b] != best.version_b) continue;
+
+    // The larger segment survives (the smaller label on a tie), so labels stay stable.
+    std::int32_t keep = best.a, gone = best.b;
+    if (sums[gone].count > sums[keep].count) std::swap(keep, gone);
+    sums[keep].merge(sums[gone]);
+    fits_[keep] = sums[keep].fit();
+    ++versions_[keep];
+    parent_[gone] = keep;
+    ++merges_;
+
+    // The survivor inherits the other's neighbours; they now point at the survivor.
+    std::vector<std::int32_t>& kept = neighbours_[keep];
+    for (const std::int32_t other : neighbours_[gone]) {
+      if (other == keep) continue;
+      kept.push_back(other);
+      std::vector<std::int32_t>& theirs = neighbours_[other];
+      std::replace(theirs.begin(), theirs.end(), gone, keep);
+      std::sort(theirs.begin(), theirs.end());
+      theirs.erase(std::unique(theirs.begin(), theirs.end()), theirs.end());
+    }
+    neighbours_[gone].clear();
+    kept.erase(std::remove(kept.begin(), kept.end(), gone), kept.end());
+    std::sort(kept.begin(), kept.end());
+    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+    for (const std::int32_t other : kept) consider(keep, other, sums, criterion);
+  }
+
+  // Point every segment at its final root.
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int32_t r = static_cast<std::int32_t>(i);
+    while (parent_[r] != r) r = parent_[r];
+    parent_[i] = r;
+  }
+}
+
+}  // namespace floodplane

@@ -1,0 +1,228 @@
+#include "floodplane/region_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace floodplane {
+
+namespace {
+
+constexpr std::size_t kNoPixel = std::numeric_limits<std::size_t>::max();
+
+// A plane's thresholds for pixels that join it after merging. The Euclidean tolerance
+// follows from the plane itself: neighbouring pixels on n.P + d = 0 are alpha r^2 / |d| apart
+// (see FloodCriterion); |d| is bounded below where the plane is seen almost edge-on.
+FloodCriterion planeCriterion(const PlaneFit& fit, const Params& params, float angular_pitch) {
+  FloodCriterion c;
+  c.normal = {static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
+              static_cast<float>(fit.normal.z())};
+  c.offset = static_cast<float>(fit.offset);
+  c.plane_threshold = static_cast<float>(params.distance_threshold);
+  c.plane_noise_factor = static_cast<float>(3.0 * params.depth_noise_coefficient);
+  const double distance = std::max(std::abs(fit.offset), 0.1 * fit.centroid.norm());
+  const double spacing_per_range_sq = angular_pitch / std::max(distance, 1e-6);
+  // Same slack as the flood: twice the spacing, plus the noise of two points.
+  const double k = 2.0 * spacing_per_range_sq + 3.0 * std::sqrt(2.0) * params.depth_noise_coefficient;
+  c.euclidean_factor_sq = static_cast<float>(k * k);
+  return c;
+}
+
+}  // namespace
+
+void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int subsampling,
+                          const MergedSegments& merged, const Params& params, float angular_pitch, bool refine,
+                          Segmentation& out) {
+  // One candidate plane per flat cluster.
+  candidates_.clear();
+  candidate_of_segment_.assign(merged.segment_count, 0);
+  for (std::size_t s = 1; s < merged.segment_count; ++s) {
+    if (merged.root[s] != static_cast<std::int32_t>(s)) continue;
+    const PlaneSums& sums = merged.sums[s];
+    // With s = 1 the counts are exact and refinement only adds pixels: drop small ones now.
+    if (subsampling == 1 && sums.count < params.min_inliers) continue;
+    const PlaneFit fit = sums.fit();
+    if (!fit.valid || fit.curvature > params.maximum_curvature || !facesSensor(fit.normal, fit.centroid)) continue;
+    Candidate candidate;
+    candidate.criterion = planeCriterion(fit, params, angular_pitch);
+    if (subsampling == 1) candidate.sums = sums;
+    candidate.first_pixel = kNoPixel;
+    candidates_.push_back(candidate);
+    candidate_of_segment_[s] = static_cast<std::uint32_t>(candidates_.size());
+  }
+  for (std::size_t s = 1; s < merged.segment_count; ++s)
+    candidate_of_segment_[s] = candidate_of_segment_[merged.root[s]];
+
+  out.width = full.width;
+  out.height = full.height;
+  out.labels.resize(full.size());
+  if (subsampling == 1) {
+    // Counts are known: number the planes by size before writing any label.
+    sortBySize(params.min_inliers);
+    for (std::size_t s = 1; s < merged.segment_count; ++s) candidate_of_segment_[s] = remap_[candidate_of_segment_[s]];
+    labelFullResolution(full, segmented, subsampling, merged, out.labels);
+  } else {
+    labelFullResolution(full, segmented, subsampling, merged, out.labels);
+    if (sortBySize(params.min_inliers)) renumber(out.labels);
+  }
+
+  if (refine) {
+    this->refine(full, out.labels);
+    if (sortBySize(0)) renumber(out.labels);  // refinement may have changed the order by size
+  }
+
+  out.planes.clear();
+  for (const Candidate& candidate : candidates_) {
+    SegmentedPlane plane;
+    plane.fit = candidate.sums.fit();
+    plane.inlier_count = static_cast<std::uint32_t>(candidate.sums.count);
+    plane.first_pixel = candidate.first_pixel;
+    out.planes.push_back(plane);
+  }
+}
+
+void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& segmented, int subsampling,
+                                        const MergedSegments& merged, std::vector<std::uint32_t>& labels) {
+  const std::uint32_t* table = candidate_of_segment_.data();
+  const std::int32_t* segment = merged.labels;
+  if (subsampling == 1) {
+    const std::size_t n = full.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t k = table[segment[i]];
+      labels[i] = k;
+      if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
+    }
+    return;
+  }
+
+  // Each full-resolution pixel takes the best-fitting plane of the four samples around it.
+  const int grid_width = segmented.width;
+  const int grid_height = segmented.height;
+  for (int v = 0; v < full.height; ++v) {
+    const int gy0 = v / subsampling;
+    const int gy1 = std::min(gy0 + 1, grid_height - 1);
+    const std::int32_t* row0 = segment + static_cast<std::size_t>(gy0) * grid_width;
+    const std::int32_t* row1 = segment + static_cast<std::size_t>(gy1) * grid_width;
+    std::uint32_t* out_row = labels.data() + static_cast<std::size_t>(v) * full.width;
+    for (int u = 0; u < full.width; ++u) {
+      const int gx0 = u / subsampling;
+      const int gx1 = std::min(gx0 + 1, grid_width - 1);
+      const std::uint32_t around[4] = {table[row0[gx0]], table[row0[gx1]], table[row1[gx0]], table[row1[gx1]]};
+      std::uint32_t best = 0;
+      if ((around[0] | around[1] | around[2] | around[3]) != 0) {
+        const std::size_t index = static_cast<std::size_t>(v) * full.width + u;
+        const Vec3 q = Vec3::load(full.point(index));
+        const float range_sq = q.squaredNorm();
+        // Every plane has the same tolerance at a given range.
+        float best_distance = candidates_[0].criterion.planeTolerance(range_sq);
+        for (int a = 0; a < 4; ++a) {
+          const std::uint32_t k = around[a];
+          if (k == 0 || k == best) continue;
+          const FloodCriterion& c = candidates_[k - 1].criterion;
+          const float distance = planeDistance(c.normal, c.offset, q);
+          if (distance < best_distance) {
+            best_distance = distance;
+            best = k;
+          }
+        }
+        if (best != 0) {
+          Candidate& chosen = candidates_[best - 1];
+          chosen.sums.add(q);
+          if (chosen.first_pixel == kNoPixel) chosen.first_pixel = index;
+        }
+      }
+      out_row[u] = best;
+    }
+  }
+}
+
+bool RegionBuilder::sortBySize(std::uint32_t min_inliers) {
+  order_.resize(candidates_.size());
+  std::iota(order_.begin(), order_.end(), 0);
+  std::stable_sort(order_.begin(), order_.end(),
+                   [&](std::size_t a, std::size_t b) { return candidates_[a].sums.count > candidates_[b].sums.count; });
+  remap_.assign(candidates_.size() + 1, 0);
+  kept_.clear();
+  bool changed = false;
+  for (std::size_t rank = 0; rank < order_.size(); ++rank) {
+    const Candidate& candidate = candidates_[order_[rank]];
+    if (candidate.sums.count < min_inliers) {
+      changed = true;
+      continue;
+    }
+    kept_.push_back(candidate);
+    remap_[order_[rank] + 1] = static_cast<std::uint32_t>(kept_.size());
+    changed = changed || order_[rank] != rank;
+  }
+  candidates_.swap(kept_);
+  return changed;
+}
+
+void RegionBuilder::renumber(std::vector<std::uint32_t>& labels) {
+  for (Candidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
+  const std::size_t n = labels.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t k = remap_[labels[i]];
+    labels[i] = k;
+    if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
+  }
+}
+
+void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& labels) {
+  if (candidates_.empty()) return;
+  const int width = full.width;
+  const int height = full.height;
+  // Does pixel `to`, next to `from`, join plane k (Eqs. 1-3 with the plane's thresholds)?
+  const auto fits = [&](std::uint32_t k, std::size_t from, std::size_t to, float& distance) {
+    const FloodCriterion& c = candidates_[k - 1].criterion;
+    const Vec3 q = Vec3::load(full.point(to));
+    const float range_sq = q.squaredNorm();
+    if (!(squaredEuclideanDistance(Vec3::load(full.point(from)), q) < c.euclideanToleranceSq(range_sq))) return false;
+    distance = planeDistance(c.normal, c.offset, q);
+    return distance < c.planeTolerance(range_sq);
+  };
+  const auto take = [&](std::uint32_t k, std::size_t pixel) {
+    labels[pixel] = k;
+    Candidate& candidate = candidates_[k - 1];
+    candidate.sums.add(Vec3::load(full.point(pixel)));
+    if (pixel < candidate.first_pixel) candidate.first_pixel = pixel;
+    queue_.push_back(pixel);
+  };
+
+  // Seeds of the growth: unlabelled pixels next to a plane they fit, the best plane first.
+  queue_.clear();
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      if (labels[i] != 0) continue;
+      const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < width ? i + 1 : i,
+                                         y > 0 ? i - width : i, y + 1 < height ? i + width : i};
+      std::uint32_t best = 0;
+      float best_distance = std::numeric_limits<float>::infinity();
+      for (const std::size_t j : neighbours) {
+        const std::uint32_t k = labels[j];
+        float distance = 0.f;
+        if (k != 0 && k != best && fits(k, j, i, distance) && distance < best_distance) {
+          best = k;
+          best_distance = distance;
+        }
+      }
+      if (best != 0) take(best, i);
+    }
+  }
+  // Breadth-first growth from them.
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const std::size_t i = queue_[head];
+    const std::uint32_t k = labels[i];
+    const int x = static_cast<int>(i % static_cast<std::size_t>(width));
+    const int y = static_cast<int>(i / static_cast<std::size_t>(width));
+    float distance = 0.f;
+    if (x > 0 && labels[i - 1] == 0 && fits(k, i, i - 1, distance)) take(k, i - 1);
+    if (x + 1 < width && labels[i + 1] == 0 && fits(k, i, i + 1, distance)) take(k, i + 1);
+    if (y > 0 && labels[i - width] == 0 && fits(k, i, i - width, distance)) take(k, i - width);
+    if (y + 1 < height && labels[i + width] == 0 && fits(k, i, i + width, distance)) take(k, i + width);
+  }
+}
+
+}  // namespace floodplane

@@ -1,0 +1,237 @@
+#include "floodplane/segmenter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "floodplane/connected_components.h"
+#include "floodplane/distance_buffer.h"
+#include "floodplane/plane_flood.h"
+#include "floodplane/plane_merging.h"
+#include "floodplane/region_output.h"
+#include "floodplane/seed_selection.h"
+
+namespace floodplane {
+
+namespace {
+
+// Seed candidates are every kSeedStride-th pixel of every kSeedStride-th row at full
+// resolution, not every pixel as in the paper: a plane worth reporting is many strides
+// wide, and this cuts the cost of testing the pixels no flood claims (clutter, curved
+// surfaces, borders) sixteen-fold (as DDPFF's sparse seed grid). Sub-sampled grids use a
+// proportionally smaller stride.
+constexpr int kSeedStride = 4;
+
+using Clock = std::chrono::steady_clock;
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Accumulates the time of a phase when measuring is on; otherwise does nothing.
+class PhaseTimer {
+ public:
+  PhaseTimer(bool enabled, double& total) : enabled_(enabled), total_(total) {
+    if (enabled_) start_ = Clock::now();
+  }
+  ~PhaseTimer() {
+    if (enabled_) total_ += millisecondsSince(start_);
+  }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  bool enabled_;
+  double& total_;
+  Clock::time_point start_;
+};
+
+}  // namespace
+
+struct Segmenter::Workspace {
+  std::vector<float> subsampled;  // x y z of every s-th pixel when s > 1
+  std::vector<float> pitch_scratch;
+  DistanceBuffer buffer;
+  SeedSelector selector;
+  PlaneFlood flood;
+  std::vector<Segment> segments;
+  std::vector<SegmentEdge> edges;
+  ComponentSplitter splitter;
+  std::vector<std::uint8_t> changed;  // per segment: relabelled, so its edges are recomputed
+  std::vector<std::int32_t> piece_slot;
+  PlaneMerger merger;
+  std::vector<PlaneSums> cluster_sums;
+  RegionBuilder regions;
+
+  // Pass 0: the grid to segment, every s-th pixel of every s-th row.
+  PointGrid sample(const PointGrid& full, int s) {
+    if (s == 1) return full;
+    PointGrid grid;
+    grid.width = (full.width + s - 1) / s;
+    grid.height = (full.height + s - 1) / s;
+    grid.stride = 3;
+    subsampled.resize(grid.size() * 3);
+    float* out = subsampled.data();
+    for (int y = 0; y < full.height; y += s) {
+      for (int x = 0; x < full.width; x += s) {
+        const float* p = full.point(static_cast<std::size_t>(y) * full.width + x);
+        *out++ = p[0];
+        *out++ = p[1];
+        *out++ = p[2];
+      }
+    }
+    grid.data = subsampled.data();
+    return grid;
+  }
+
+  // Sec. III-B, after the floods: split what Eq. 4 takeovers disconnected, recompute the
+  // pieces' sums and their neighbour edges.
+  void relabel(const PointGrid& grid) {
+    const std::int32_t before = static_cast<std::int32_t>(segments.size());
+    std::int32_t next_label = before;
+    changed.assign(segments.size(), 0);
+    std::vector<std::int32_t>& labels = buffer.labels();
+    for (std::int32_t s = 1; s < before; ++s) {
+      if (!segments[s].lost_pixels || segments[s].sums.count <= 0.0) continue;
+      const PixelBox box = segments[s].box;
+      const std::int32_t first_new = next_label;
+      const std::vector<std::int32_t> created = splitter.split(labels.data(), grid.width, box, s, next_label);
+      if (created.empty()) continue;
+      // The pieces: slot 0 keeps label s, slot i > 0 is label first_new + i - 1.
+      const std::size_t pieces = created.size() + 1;
+      const FloodCriterion criterion = segments[s].criterion;
+      segments.resize(static_cast<std::size_t>(next_label));
+      changed.resize(segments.size(), 0);
+      piece_slot.assign(pieces, 0);
+      for (std::size_t slot = 0; slot < pieces; ++slot) {
+        const std::int32_t label = slot == 0 ? s : first_new + static_cast<std::int32_t>(slot) - 1;
+        segments[label] = Segment();
+        segments[label].criterion = criterion;
+        changed[label] = 1;
+      }
+      for (int y = box.y_min; y <= box.y_max; ++y) {
+        for (int x = box.x_min; x <= box.x_max; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * grid.width + x;
+          const std::int32_t label = labels[i];
+          if (label != s && (label < first_new || label >= next_label)) continue;
+          Segment& piece = segments[label];
+          piece.sums.add(Vec3::load(grid.point(i)));
+          piece.box.include(x, y);
+        }
+      }
+    }
+    if (segments.size() == static_cast<std::size_t>(before)) return;
+
+    // Edges of relabelled segments are rebuilt from their pixels.
+    edges.erase(std::remove_if(edges.begin(), edges.end(),
+                               [&](const SegmentEdge& e) { return changed[e.first] || changed[e.second]; }),
+                edges.end());
+    for (std::size_t s = 1; s < segments.size(); ++s) {
+      if (!changed[s]) continue;
+      const PixelBox& box = segments[s].box;
+      const FloodCriterion& c = segments[s].criterion;
+      const std::int32_t label = static_cast<std::int32_t>(s);
+      for (int y = box.y_min; y <= box.y_max; ++y) {
+        for (int x = box.x_min; x <= box.x_max; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * grid.width + x;
+          if (labels[i] != label) continue;
+          const Vec3 p = Vec3::load(grid.point(i));
+          const float tolerance_sq = c.euclideanToleranceSq(p.squaredNorm());
+          const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < grid.width ? i + 1 : i,
+                                             y > 0 ? i - grid.width : i, y + 1 < grid.height ? i + grid.width : i};
+          for (const std::size_t j : neighbours) {
+            const std::int32_t other = labels[j];
+            if (other == 0 || other == label) continue;
+            if (squaredEuclideanDistance(p, Vec3::load(grid.point(j))) < tolerance_sq) edges.emplace_back(label, other);
+          }
+        }
+      }
+    }
+  }
+};
+
+Segmenter::Segmenter(const Params& params) : workspace_(std::make_unique<Workspace>()) { setParams(params); }
+Segmenter::~Segmenter() = default;
+Segmenter::Segmenter(Segmenter&&) noexcept = default;
+Segmenter& Segmenter::operator=(Segmenter&&) noexcept = default;
+
+void Segmenter::setParams(const Params& params) {
+  params.validate();
+  params_ = params;
+}
+
+const Segmentation& Segmenter::segment(const PointGrid& full, const Options& options) {
+  Workspace& ws = *workspace_;
+  result_.phases = PhaseTimes();
+  result_.stats = SegmentationStats();
+  const bool timed = options.measure_phases;
+  const int s = params_.subsampling;
+
+  PointGrid grid;
+  float full_pitch = 0.f;
+  float pitch = 0.f;
+  {
+    PhaseTimer timer(timed, result_.phases.seed_selection);
+    grid = ws.sample(full, s);
+    pitch = SeedSelector::estimateAngularPitch(grid, ws.pitch_scratch, static_cast<float>(s) / 525.0f);
+    full_pitch = pitch / static_cast<float>(s);
+    ws.selector.configure(params_, pitch, grid.width, grid.height);
+    ws.buffer.reset(grid.size());
+    ws.segments.assign(1, Segment());  // label 0: no segment
+    ws.edges.clear();
+    ws.flood.beginFrame();
+  }
+
+  // Seed selection (Sec. III-C) interleaved with flooding (Sec. III-A, III-B), in scan order.
+  {
+    const Clock::time_point scan_start = timed ? Clock::now() : Clock::time_point();
+    double flooding = 0.0;
+    const int stride = std::max(1, kSeedStride / s);
+    const int offset = stride / 2;
+    Seed seed;
+    for (int y = offset; y < grid.height; y += stride) {
+      for (int x = offset; x < grid.width; x += stride) {
+        if (ws.buffer.label(static_cast<std::size_t>(y) * grid.width + x) != 0) continue;
+        ++result_.stats.seed_candidates;
+        if (ws.selector.test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
+        ++result_.stats.seeds;
+        const std::int32_t label = static_cast<std::int32_t>(ws.segments.size());
+        ws.segments.emplace_back();
+        PhaseTimer timer(timed, flooding);
+        result_.stats.pixels_taken_over += ws.flood.grow(grid, seed, label, params_, ws.buffer, ws.segments, ws.edges);
+      }
+    }
+    if (timed) {
+      result_.phases.flood_fill += flooding;
+      result_.phases.seed_selection += millisecondsSince(scan_start) - flooding;
+    }
+  }
+
+  {
+    PhaseTimer timer(timed, result_.phases.relabelling);
+    ws.relabel(grid);
+    result_.stats.segments = ws.segments.size() - 1;
+  }
+
+  {
+    PhaseTimer timer(timed, result_.phases.merging);
+    ws.merger.reset(ws.segments.size());
+    for (const SegmentEdge& edge : ws.edges) ws.merger.addEdge(edge.first, edge.second);
+    ws.cluster_sums.resize(ws.segments.size());
+    for (std::size_t i = 0; i < ws.segments.size(); ++i) ws.cluster_sums[i] = ws.segments[i].sums;
+    ws.merger.merge(ws.cluster_sums, MergeCriterion(params_));
+    result_.stats.merges = ws.merger.mergeCount();
+  }
+
+  {
+    PhaseTimer timer(timed, result_.phases.region_output);
+    MergedSegments merged;
+    merged.labels = ws.buffer.labels().data();
+    merged.root = ws.merger.rootData();
+    merged.sums = ws.cluster_sums.data();
+    merged.segment_count = ws.segments.size();
+    ws.regions.build(full, grid, s, merged, params_, full_pitch, options.refine, result_);
+  }
+  return result_;
+}
+
+}  // namespace floodplane
