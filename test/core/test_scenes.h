@@ -1,0 +1,116 @@
+#pragma once
+// Tiny ray-cast scenes with known planes for the core's tests: a pinhole camera at the
+// origin (x right, y down, z forward) looking at bounded planes. Header-only on purpose:
+// each test program includes it once.
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "floodplane/point_grid.h"
+
+namespace floodplane::test {
+
+struct Pinhole {
+  int width = 64;
+  int height = 48;
+  double focal = 52.5;  // a 640x480 Kinect (f = 525) scaled to the grid
+  double cx() const { return (width - 1) / 2.0; }
+  double cy() const { return (height - 1) / 2.0; }
+};
+
+struct ScenePlane {
+  Eigen::Vector3d normal;  // unit; n . P + d = 0
+  double offset = 0.0;
+  int id = 1;
+  std::function<bool(const Eigen::Vector3d&)> contains = [](const Eigen::Vector3d&) { return true; };
+};
+
+struct RenderedGrid {
+  int width = 0;
+  int height = 0;
+  std::vector<float> xyz;  // stride 3, NaN for no hit
+  std::vector<int> truth;  // plane id, 0 for no hit
+
+  PointGrid grid() const {
+    PointGrid g;
+    g.data = xyz.data();
+    g.stride = 3;
+    g.width = width;
+    g.height = height;
+    return g;
+  }
+  Eigen::Vector3f point(int x, int y) const {
+    const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);
+    return {xyz[i], xyz[i + 1], xyz[i + 2]};
+  }
+};
+
+// The nearest plane hit along each pixel's ray; `range_noise` adds Gaussian noise of that
+// standard deviation [m] along the ray (seeded, deterministic).
+inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes, double range_noise = 0.0,
+                           unsigned seed = 1) {
+  RenderedGrid out;
+  out.width = camera.width;
+  out.height = camera.height;
+  out.xyz.assign(3 * static_cast<std::size_t>(camera.width) * camera.height, std::numeric_limits<float>::quiet_NaN());
+  out.truth.assign(static_cast<std::size_t>(camera.width) * camera.height, 0);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (int v = 0; v < camera.height; ++v) {
+    for (int u = 0; u < camera.width; ++u) {
+      const Eigen::Vector3d ray((u - camera.cx()) / camera.focal, (v - camera.cy()) / camera.focal, 1.0);
+      double best = std::numeric_limits<double>::infinity();
+      int id = 0;
+      for (const ScenePlane& plane : planes) {
+        const double facing = plane.normal.dot(ray);
+        if (std::abs(facing) < 1e-12) continue;
+        const double t = -plane.offset / facing;
+        if (t > 0.0 && t < best && plane.contains(t * ray)) {
+          best = t;
+          id = plane.id;
+        }
+      }
+      if (id == 0) continue;
+      Eigen::Vector3d p = best * ray;
+      if (range_noise > 0.0) p *= 1.0 + range_noise * noise(rng) / p.norm();
+      const std::size_t i = static_cast<std::size_t>(v) * camera.width + u;
+      out.xyz[3 * i] = static_cast<float>(p.x());
+      out.xyz[3 * i + 1] = static_cast<float>(p.y());
+      out.xyz[3 * i + 2] = static_cast<float>(p.z());
+      out.truth[i] = id;
+    }
+  }
+  return out;
+}
+
+// A plane facing the camera at depth z.
+inline ScenePlane frontalPlane(double z, int id = 1) {
+  ScenePlane p;
+  p.normal = Eigen::Vector3d(0, 0, -1);
+  p.offset = z;
+  p.id = id;
+  return p;
+}
+
+// A room corner seen from 1 m above the floor: floor (id 1), back wall at z = 4 (id 2),
+// left wall at x = -1.5 (id 3).
+inline std::vector<ScenePlane> roomCorner() {
+  ScenePlane floor, back, left;
+  floor.normal = Eigen::Vector3d(0, -1, 0);
+  floor.offset = 1.0;
+  floor.id = 1;
+  back.normal = Eigen::Vector3d(0, 0, -1);
+  back.offset = 4.0;
+  back.id = 2;
+  left.normal = Eigen::Vector3d(1, 0, 0);
+  left.offset = 1.5;
+  left.id = 3;
+  return {floor, back, left};
+}
+
+}  // namespace floodplane::test

@@ -1,0 +1,174 @@
+// Sec. III-C: seed selection. Each discontinuity test on a scene built to trip it alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "floodplane/seed_selection.h"
+#include "test_scenes.h"
+
+namespace floodplane {
+namespace {
+
+using test::Pinhole;
+using test::ScenePlane;
+
+// 320 x 240 with the Kinect's field of view: f = 262.5 px, so rho = 8 px at 1 m.
+Pinhole camera() {
+  Pinhole c;
+  c.width = 320;
+  c.height = 240;
+  c.focal = 262.5;
+  return c;
+}
+
+// The pixel column of a point.
+double column(const Eigen::Vector3d& p) { return camera().focal * p.x() / p.z() + camera().cx(); }
+
+Params exactParams() {
+  Params p;
+  p.depth_noise_coefficient = 0.0;  // noise-free scenes: the paper's tests exactly
+  return p;
+}
+
+SeedSelector selectorFor(const test::RenderedGrid& scene, const Params& params) {
+  SeedSelector selector;
+  selector.configure(params, 1.0f / static_cast<float>(camera().focal), scene.width, scene.height);
+  return selector;
+}
+
+constexpr int kX = 160, kY = 120;  // a seed candidate at the image centre (pixel 159.5 + 0.5)
+
+TEST(SeedSelector, ProjectsTheSeedCubeToRhoPixels) {
+  SeedSelector selector;
+  selector.configure(exactParams(), 1.0f / 525.0f, 640, 480);
+  // rho = f (sigma_seed / 2) / (r + sigma_seed / 2)
+  EXPECT_EQ(selector.rhoAt(1.0f), 15);  // 15.29
+  EXPECT_EQ(selector.rhoAt(3.0f), 5);   // 5.20
+  EXPECT_EQ(selector.rhoAt(0.3f), 48);  // 47.7, the cap that bounds Eq. 7's cost
+  EXPECT_EQ(selector.rhoAt(40.0f), 2);  // never below 2: a cross needs points on its arms
+}
+
+TEST(SeedSelector, GrowsTheSeedCubeWithTheDepthNoise) {
+  Params params;
+  params.depth_noise_coefficient = 0.0019;
+  SeedSelector selector;
+  selector.configure(params, 1.0f / 525.0f, 640, 480);
+  EXPECT_FLOAT_EQ(selector.seedSizeAt(1.0f), 0.06f);             // 6 sigma = 1.1 cm < 6 cm
+  EXPECT_NEAR(selector.seedSizeAt(5.0f), 6 * 0.0019 * 25, 1e-6);  // 6 sigma = 28.5 cm
+}
+
+TEST(SeedSelector, FitsTheGridItIsGiven) {
+  SeedSelector selector;
+  selector.configure(exactParams(), 1.0f / 525.0f, 4, 40);
+  EXPECT_EQ(selector.maxRho(), 0);  // a 4-pixel-wide grid has no room for a cross of rho 2
+  selector.configure(exactParams(), 1.0f / 525.0f, 5, 5);
+  EXPECT_EQ(selector.maxRho(), 2);
+  EXPECT_EQ(selector.rhoAt(1.0f), 2);
+}
+
+TEST(SeedSelector, AcceptsAFlatPatchWithItsNormalAndSpacing) {
+  const test::RenderedGrid scene = test::render(camera(), {test::frontalPlane(1.0)});
+  const SeedSelector selector = selectorFor(scene, exactParams());
+  Seed seed;
+  ASSERT_EQ(selector.test(scene.grid(), kX, kY, seed), SeedVerdict::kAccepted);
+  EXPECT_EQ(seed.index, static_cast<std::size_t>(kY) * scene.width + kX);
+  EXPECT_EQ(seed.rho, 8);
+  EXPECT_NEAR(seed.normal.z, -1.0f, 1e-5f);  // unit, facing the sensor
+  EXPECT_NEAR(std::hypot(seed.normal.x, seed.normal.y), 0.0f, 1e-3f);
+  EXPECT_LT(seed.normal_uncertainty, 1e-3f);
+  // Eq. 8: metres per pixel at 1 m is 1 / f.
+  EXPECT_NEAR(seed.spacing, 1.0 / camera().focal, 0.01 / camera().focal);
+}
+
+TEST(SeedSelector, RejectsADepthJumpInsideTheSeedCube) {
+  // Eq. 5: the right arm ends on a wall 60 cm behind.
+  ScenePlane near = test::frontalPlane(1.0, 1);
+  near.contains = [](const Eigen::Vector3d& p) { return column(p) < kX + 4; };
+  const test::RenderedGrid scene = test::render(camera(), {near, test::frontalPlane(1.6, 2)});
+  Seed seed;
+  EXPECT_EQ(selectorFor(scene, exactParams()).test(scene.grid(), kX, kY, seed), SeedVerdict::kDistanceDiscontinuity);
+}
+
+TEST(SeedSelector, RejectsACreaseThroughTheCandidate) {
+  // Eq. 6: a ridge of two planes at 60 degrees runs through the candidate's column; the
+  // centroid test of Eq. 5 cannot see it (both sides recede alike).
+  const double angle = 30.0 * M_PI / 180.0;
+  ScenePlane left, right;
+  left.normal = Eigen::Vector3d(std::sin(angle), 0, -std::cos(angle));
+  right.normal = Eigen::Vector3d(-std::sin(angle), 0, -std::cos(angle));
+  left.offset = right.offset = std::cos(angle);  // both through (0, 0, 1)
+  left.contains = [](const Eigen::Vector3d& p) { return p.x() < 0; };
+  right.contains = [](const Eigen::Vector3d& p) { return p.x() >= 0; };
+  right.id = 2;
+  const test::RenderedGrid scene = test::render(camera(), {left, right});
+  Seed seed;
+  EXPECT_EQ(selectorFor(scene, exactParams()).test(scene.grid(), kX, kY, seed), SeedVerdict::kCoarseCurvature);
+}
+
+TEST(SeedSelector, RejectsARidgeOnOneArmThatTheEndpointsMiss) {
+  // Eq. 7: a 2 cm high, 3 pixel wide ridge halfway along the right arm. The endpoints lie on
+  // the plane, so Eqs. 5 and 6 pass; the points of the arm do not.
+  ScenePlane ridge = test::frontalPlane(0.98, 2);
+  ridge.contains = [](const Eigen::Vector3d& p) { return std::abs(column(p) - (kX + 4)) < 1.5; };
+  const test::RenderedGrid scene = test::render(camera(), {ridge, test::frontalPlane(1.0, 1)});
+  Seed seed;
+  EXPECT_EQ(selectorFor(scene, exactParams()).test(scene.grid(), kX, kY, seed), SeedVerdict::kFineCurvature);
+}
+
+TEST(SeedSelector, RejectsAHoleOnAnArmOrAtTheCandidate) {
+  ScenePlane holed = test::frontalPlane(1.0);
+  holed.contains = [](const Eigen::Vector3d& p) { return std::abs(column(p) - (kX + 3)) > 0.5; };
+  const test::RenderedGrid scene = test::render(camera(), {holed});
+  const SeedSelector selector = selectorFor(scene, exactParams());
+  Seed seed;
+  EXPECT_EQ(selector.test(scene.grid(), kX, kY, seed), SeedVerdict::kHole);
+  EXPECT_EQ(selector.test(scene.grid(), kX + 3, kY, seed), SeedVerdict::kHole);
+}
+
+TEST(SeedSelector, RejectsCandidatesWhoseCrossLeavesTheGrid) {
+  const test::RenderedGrid scene = test::render(camera(), {test::frontalPlane(1.0)});
+  const SeedSelector selector = selectorFor(scene, exactParams());
+  Seed seed;
+  EXPECT_EQ(selector.test(scene.grid(), 7, kY, seed), SeedVerdict::kNearBorder);
+  EXPECT_EQ(selector.test(scene.grid(), kX, scene.height - 8, seed), SeedVerdict::kNearBorder);
+  EXPECT_EQ(selector.test(scene.grid(), 8, 8, seed), SeedVerdict::kAccepted);
+}
+
+TEST(SeedSelector, ToleratesDepthNoiseOnlyWhenItIsModelled) {
+  // A wall at 3 m with Kinect-like noise (sigma = c r^2 = 1.7 cm): with the noise model the
+  // seed tests see a plane; with the paper's fixed tolerances they see curvature everywhere.
+  const double c = 0.0019;
+  const test::RenderedGrid scene = test::render(camera(), {test::frontalPlane(3.0)}, c * 9.0, 7);
+  Params modelled;
+  modelled.depth_noise_coefficient = c;
+  const auto acceptedFraction = [&](const Params& params) {
+    const SeedSelector selector = selectorFor(scene, params);
+    int accepted = 0, tested = 0;
+    Seed seed;
+    for (int y = 30; y < scene.height - 30; y += 4) {
+      for (int x = 30; x < scene.width - 30; x += 4) {
+        ++tested;
+        accepted += selector.test(scene.grid(), x, y, seed) == SeedVerdict::kAccepted;
+      }
+    }
+    return static_cast<double>(accepted) / tested;
+  };
+  const double with_model = acceptedFraction(modelled);
+  const double without_model = acceptedFraction(exactParams());
+  EXPECT_GT(with_model, 0.5);
+  EXPECT_LT(without_model, 0.2);
+}
+
+TEST(SeedSelector, EstimatesTheAngularPitchOfThePixels) {
+  const test::RenderedGrid scene = test::render(camera(), test::roomCorner());
+  std::vector<float> scratch;
+  EXPECT_NEAR(SeedSelector::estimateAngularPitch(scene.grid(), scratch), 1.0 / camera().focal, 0.01 / camera().focal);
+  ScenePlane nothing = test::frontalPlane(1.0);
+  nothing.contains = [](const Eigen::Vector3d&) { return false; };
+  const test::RenderedGrid empty = test::render(camera(), {nothing});
+  EXPECT_FLOAT_EQ(SeedSelector::estimateAngularPitch(empty.grid(), scratch, 0.5f), 0.5f);
+}
+
+}  // namespace
+}  // namespace floodplane
