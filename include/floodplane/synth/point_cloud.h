@@ -1,0 +1,16 @@
+#pragma once
+// The PCL face of a rendered frame.
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include "floodplane/synth/rendered_frame.h"
+
+namespace floodplane::synth {
+
+/// The frame as an organized cloud (width x height) of measured points with their ground-truth
+/// plane ids in `label`. Points are in the camera frame, so sensor_origin_ is zero and
+/// sensor_orientation_ the identity; is_dense is false if any point is NaN.
+pcl::PointCloud<pcl::PointXYZL> toPointCloud(const RenderedFrame& frame);
+
+}  // namespace floodplane::synth

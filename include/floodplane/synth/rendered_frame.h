@@ -1,0 +1,47 @@
+#pragma once
+// What the renderer produces: measured points, ground-truth labels and the plane listing.
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "floodplane/synth/camera.h"
+#include "floodplane/synth/sensor_model.h"
+
+namespace floodplane::synth {
+
+/// One ground-truth plane of a scene, in the camera frame: n . P + d = 0 with `normal` of
+/// unit length pointing towards the camera (so d >= 0 is the camera's distance to the
+/// plane). Every flat surface of the scene has its own plane, even when two are coplanar.
+struct GroundTruthPlane {
+  std::uint32_t id = 0;  ///< the label its pixels carry; 1..K in the order of the scene file
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double d = 0.0;
+  std::string primitive;  ///< the primitive's name, or its description if it has none
+  std::string face;       ///< "" (rectangle, polygon), "+x" ... "-z" (box), "top"/"bottom"
+  /// False when the camera sees the surface's back (a box face turned away, a face resting
+  /// on the floor), so it cannot have pixels; true for two-sided rectangles and polygons
+  /// unless seen exactly edge-on.
+  bool faces_camera = false;
+  std::size_t pixel_count = 0;  ///< pixels carrying `id` in the rendered frame
+};
+
+/// An organized frame, row-major, width * height entries in `points` and `labels`.
+struct RenderedFrame {
+  std::string scene_name;
+  std::string scene_description;
+  SensorModel sensor = SensorModel::none;
+  std::uint64_t seed = 0;
+  CameraIntrinsics intrinsics;
+  /// The measured point in the camera frame (metres); NaN where the ray hits nothing or the
+  /// sensor returns nothing.
+  std::vector<Eigen::Vector3f> points;
+  /// The ground-truth plane id of the surface each ray hit; 0 where the surface is not
+  /// planar or the point is NaN, so a label above 0 always comes with a finite point.
+  std::vector<std::uint32_t> labels;
+  std::vector<GroundTruthPlane> planes;  ///< ordered by id, planes[i].id == i + 1
+};
+
+}  // namespace floodplane::synth

@@ -1,0 +1,23 @@
+#pragma once
+// Rendering a scene into an organized frame by casting one ray through every pixel centre.
+
+#include <cstdint>
+
+#include "floodplane/synth/rendered_frame.h"
+#include "floodplane/synth/scene.h"
+#include "floodplane/synth/sensor_model.h"
+
+namespace floodplane::synth {
+
+struct RenderSettings {
+  SensorModel sensor = SensorModel::none;
+  std::uint64_t seed = 1;  ///< the kinect model's noise; the same seed gives the same frame
+  KinectParams kinect;     ///< used when sensor == SensorModel::kinect
+};
+
+/// Renders `scene` through its camera (scene.intrinsics, scene.world_from_camera).
+/// Deterministic: the same scene and settings give an identical frame, bit for bit.
+/// Throws SceneError for invalid intrinsics or geometry (see RayCaster).
+RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings);
+
+}  // namespace floodplane::synth

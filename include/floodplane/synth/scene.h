@@ -1,0 +1,88 @@
+#pragma once
+// A scene as authored: a camera and a list of primitives, all in one world frame (metres).
+// data/scenes/README.md describes the JSON form; scene_file.h reads it.
+
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "floodplane/synth/camera.h"
+
+namespace floodplane::synth {
+
+/// A scene that cannot be read or rendered. The message names the scene's source (its file)
+/// and what is wrong, e.g. "scenes/x.json: primitives[2] (box \"crate\"): size must be
+/// positive".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A flat rectangle: corners at center +- edge_u / 2 +- edge_v / 2. The edges must be
+/// perpendicular. Seen from both sides. One ground-truth plane.
+struct Rectangle {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d edge_u = Eigen::Vector3d::Zero();  ///< full edge vector, not half
+  Eigen::Vector3d edge_v = Eigen::Vector3d::Zero();
+};
+
+/// A flat, simple (not self-intersecting) polygon, convex or not, given by its vertices in
+/// order. The vertices must lie on one plane within 0.1 mm. Seen from both sides.
+/// One ground-truth plane.
+struct Polygon {
+  std::vector<Eigen::Vector3d> vertices;
+};
+
+/// A solid box with any pose: `rotation` turns the box's axes into world axes and `size`
+/// holds its full extents along its own x, y and z. Six ground-truth planes, one per face, in
+/// the order +x, -x, +y, -y, +z, -z of the box's own axes.
+struct Box {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+};
+
+/// A solid sphere. Not planar: its pixels carry label 0.
+struct Sphere {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+};
+
+/// A solid, capped, finite cylinder from `base` along `axis` for `height`. The curved side is
+/// not planar (label 0); the two flat caps are ground-truth planes, top (at base + height *
+/// axis) first, then bottom.
+struct Cylinder {
+  Eigen::Vector3d base = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< any length; only the direction counts
+  double radius = 0.0;
+  double height = 0.0;
+};
+
+using Shape = std::variant<Rectangle, Polygon, Box, Sphere, Cylinder>;
+
+/// The name of a shape's type as written in scene files ("rectangle", "box", ...).
+const char* shapeTypeName(const Shape& shape);
+
+struct Primitive {
+  std::string name;  ///< for messages and the ground-truth listing; may be empty
+  Shape shape;
+};
+
+/// How messages refer to a primitive: `primitives[3] (box "crate")`, index counted from 0 as
+/// in the scene file's list; the name part is left out when `name` is empty.
+std::string describePrimitive(std::size_t index, std::string_view type, std::string_view name);
+
+struct Scene {
+  std::string name;         ///< e.g. the scene file's stem; names the outputs
+  std::string source;       ///< where the scene came from (a path), for error messages
+  std::string description;  ///< free text, copied to the ground-truth listing
+  CameraIntrinsics intrinsics;
+  Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
+  std::vector<Primitive> primitives;
+};
+
+}  // namespace floodplane::synth

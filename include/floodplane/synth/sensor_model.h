@@ -1,0 +1,73 @@
+#pragma once
+// Sensor models: what a depth camera measures where a ray hits a surface.
+//
+// `none`: the exact point.
+// `kinect`: a structured-light sensor (Kinect v1 / Asus Xtion), in this order per pixel:
+//   1. Axial noise. A Gaussian depth error along the ray: the whole point is scaled so its z
+//      changes by the sampled amount. The target spread is the axial model of Nguyen, Izadi
+//      and Lovell (2012), sigma_z(z) = 0.0012 + 0.0019 (z - 0.4)^2 m.
+//   2. Disparity quantization. The sensor measures disparity = f b / z in steps of 1/8 px
+//      (baseline b = 0.075 m, f = 525 px); the depth is rounded to the nearest step:
+//      z = f b / (round(8 f b / z) / 8). f is the sensor's own focal length, not the rendered
+//      image's, so rendering at another resolution keeps the sensor's depth steps.
+//   3. Range limits. No return closer than 0.45 m or beyond 8 m (measured depth).
+//   4. Dropouts. A fraction (0.5 %) of the remaining returns is lost at random.
+//
+// Why the Gaussian of step 1 is narrower than sigma_z: Nguyen et al. measured sigma_z on real
+// Kinect depth, which is already quantized, so sigma_z includes the rounding error of step 2.
+// Rounding to steps of depth size q = z^2 / (8 f b) adds a variance of about q^2 / 12, so
+// step 1 draws from a Gaussian with variance sigma_z^2 - q^2 / 12 and the measured depth ends
+// up with the spread sigma_z (q is 3.2 mm at 1 m and 29 mm at 3 m against sigma_z of 1.9 and
+// 14 mm; without this the measured spread would be 11 % and 14 % too large). The q^2 / 12 rule
+// is exact only for noise wider than the steps; here the noise is 0.4 to 0.5 steps wide, so
+// the measured spread still depends on where z falls between two steps and lies within about
+// 9 % of sigma_z at any depth (simulated from 0.6 m to 7 m).
+//
+// Random draws per pixel (PixelRandom): two uniforms for the Gaussian, then one for the
+// dropout, in that order.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "floodplane/synth/pixel_random.h"
+
+namespace floodplane::synth {
+
+enum class SensorModel { none, kinect };
+
+/// "none" or "kinect", as used in file names and on the command line.
+const char* sensorModelName(SensorModel model);
+
+/// The model called `name` ("none", "kinect"), or nothing.
+std::optional<SensorModel> sensorModelFromName(std::string_view name);
+
+struct KinectParams {
+  // Axial noise, sigma_z(z) = sigma_constant + sigma_quadratic * (z - sigma_offset)^2
+  // (Nguyen, Izadi and Lovell 2012, Eq. 2 with their fitted constants).
+  double sigma_constant = 0.0012;   ///< metres
+  double sigma_quadratic = 0.0019;  ///< metres per square metre
+  double sigma_offset = 0.4;        ///< metres
+  // Disparity quantization.
+  double baseline = 0.075;           ///< projector-camera baseline b, metres
+  double focal_length = 525.0;       ///< f of the disparity, pixels
+  double disparity_step = 1.0 / 8.0; ///< pixels; 0 turns quantization off
+  // Range and dropouts.
+  double min_range = 0.45;             ///< metres; nearer returns are lost
+  double max_range = 8.0;              ///< metres; farther returns are lost
+  double dropout_probability = 0.005;  ///< chance that any return is lost
+};
+
+/// sigma_z(z) of Nguyen et al., metres: the spread of the measured depth at depth z.
+double axialNoiseSigma(double z, const KinectParams& params);
+
+/// The depth nearest to z that the sensor can report (the disparity lattice); z itself if
+/// quantization is off.
+double quantizeDepth(double z, const KinectParams& params);
+
+/// The depth the Kinect model reports for a surface at exact depth `z` (metres), or nothing
+/// when the return is lost (out of range or dropped). Draws from `random` as listed above.
+std::optional<double> measureKinectDepth(double z, const KinectParams& params,
+                                         PixelRandom& random);
+
+}  // namespace floodplane::synth

@@ -1,0 +1,42 @@
+#include "floodplane/io/png_file.h"
+
+#include <png.h>
+
+#include <limits>
+#include <stdexcept>
+
+#include "floodplane/io/atomic_file.h"
+
+namespace floodplane::io {
+
+void writePng(const std::string& path, const RgbImage& image) {
+  constexpr std::size_t max_side = std::numeric_limits<png_uint_32>::max() / 3;
+  if (image.width == 0 || image.height == 0 || image.width > max_side ||
+      image.height > max_side) {
+    throw std::invalid_argument("writePng: image size " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + " is not writable");
+  }
+  if (image.pixels.size() != image.width * image.height * 3) {
+    throw std::invalid_argument("writePng: pixel buffer holds " +
+                                std::to_string(image.pixels.size()) + " bytes, expected " +
+                                std::to_string(image.width * image.height * 3));
+  }
+  writeFileAtomically(path, [&](const std::string& temporary) {
+    // libpng's simplified API reports errors through png_image::message instead of longjmp,
+    // which would skip C++ destructors.
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(image.width);
+    png.height = static_cast<png_uint_32>(image.height);
+    png.format = PNG_FORMAT_RGB;
+    const auto row_stride = static_cast<png_int_32>(image.width * 3);
+    if (png_image_write_to_file(&png, temporary.c_str(), 0, image.pixels.data(), row_stride,
+                                nullptr) == 0) {
+      const std::string reason = png.message;
+      png_image_free(&png);
+      throw std::runtime_error("cannot write PNG file '" + path + "': " + reason);
+    }
+  });
+}
+
+}  // namespace floodplane::io

@@ -1,0 +1,36 @@
+#include "floodplane/synth/ground_truth_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace floodplane::synth {
+
+std::string groundTruthJson(const RenderedFrame& frame) {
+  using nlohmann::ordered_json;  // keeps keys in the order written, for human readers
+  ordered_json document;
+  document["scene"] = frame.scene_name;
+  document["description"] = frame.scene_description;
+  document["sensor"] = sensorModelName(frame.sensor);
+  if (frame.sensor == SensorModel::kinect) {
+    document["seed"] = frame.seed;
+  }
+  document["camera"] = {{"width", frame.intrinsics.width}, {"height", frame.intrinsics.height},
+                        {"fx", frame.intrinsics.fx},       {"fy", frame.intrinsics.fy},
+                        {"cx", frame.intrinsics.cx},       {"cy", frame.intrinsics.cy}};
+  document["plane_equation"] =
+      "n . P + d = 0 in the camera frame (x right, y down, z forward, metres); "
+      "n has unit length and points towards the camera";
+  ordered_json planes = ordered_json::array();
+  for (const GroundTruthPlane& plane : frame.planes) {
+    planes.push_back({{"id", plane.id},
+                      {"primitive", plane.primitive},
+                      {"face", plane.face},
+                      {"normal", {plane.normal.x(), plane.normal.y(), plane.normal.z()}},
+                      {"d", plane.d},
+                      {"pixels", plane.pixel_count},
+                      {"faces_camera", plane.faces_camera}});
+  }
+  document["planes"] = std::move(planes);
+  return document.dump(2) + "\n";
+}
+
+}  // namespace floodplane::synth

@@ -1,0 +1,73 @@
+#include "floodplane/io/png_file.h"
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Reads an RGB PNG back with libpng's simplified API, independent of the writer's code path.
+floodplane::io::RgbImage readPng(const std::string& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (png_image_begin_read_from_file(&png, path.c_str()) == 0) {
+    throw std::runtime_error(png.message);
+  }
+  png.format = PNG_FORMAT_RGB;
+  floodplane::io::RgbImage image;
+  image.width = png.width;
+  image.height = png.height;
+  image.pixels.resize(PNG_IMAGE_SIZE(png));
+  if (png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr) == 0) {
+    throw std::runtime_error(png.message);
+  }
+  return image;
+}
+
+TEST(PngFile, RoundTripsEveryPixelThroughLibpng) {
+  floodplane::io::RgbImage image;
+  image.width = 7;  // odd width: rows are not a multiple of four bytes
+  image.height = 5;
+  for (std::size_t i = 0; i < image.width * image.height * 3; ++i) {
+    image.pixels.push_back(static_cast<std::uint8_t>((i * 37 + 11) % 256));
+  }
+  const fs::path path = fs::temp_directory_path() / "floodplane_png_round_trip.png";
+  floodplane::io::writePng(path.string(), image);
+  const auto read = readPng(path.string());
+  fs::remove(path);
+  EXPECT_EQ(read.width, image.width);
+  EXPECT_EQ(read.height, image.height);
+  EXPECT_EQ(read.pixels, image.pixels);
+}
+
+TEST(PngFile, RejectsAPixelBufferOfTheWrongSize) {
+  floodplane::io::RgbImage image;
+  image.width = 4;
+  image.height = 4;
+  image.pixels.assign(4 * 4 * 3 - 1, 0);
+  EXPECT_THROW(floodplane::io::writePng("/tmp/floodplane_never_written.png", image),
+               std::invalid_argument);
+  EXPECT_FALSE(fs::exists("/tmp/floodplane_never_written.png"));
+}
+
+TEST(PngFile, RejectsAnEmptyImage) {
+  EXPECT_THROW(floodplane::io::writePng("/tmp/floodplane_never_written.png", {}),
+               std::invalid_argument);
+}
+
+TEST(PngFile, ReportsAnUnwritableDirectoryAsARuntimeError) {
+  floodplane::io::RgbImage image;
+  image.width = 1;
+  image.height = 1;
+  image.pixels = {1, 2, 3};
+  EXPECT_THROW(floodplane::io::writePng("/nonexistent_directory/x.png", image),
+               std::runtime_error);
+}
+
+}  // namespace
