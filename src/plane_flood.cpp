@@ -15,7 +15,8 @@ class FloodVisitor {
  public:
   FloodVisitor(const PointGrid& grid, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
                std::vector<std::pair<std::size_t, std::size_t>>& frontier, std::vector<std::int32_t>& neighbour_mark,
-               std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty)
+               std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty,
+               double angular_threshold)
       : grid_(grid),
         label_(label),
         buffer_(buffer),
@@ -24,7 +25,8 @@ class FloodVisitor {
         neighbour_mark_(neighbour_mark),
         edges_(edges),
         next_refit_(static_cast<double>(first_refit)),
-        uncertainty_(seed_uncertainty) {}
+        uncertainty_(seed_uncertainty),
+        same_plane_cosine_(std::cos(static_cast<float>(angular_threshold))) {}
 
   // Eq. 1 with Eq. 4: `to` joins from its neighbour `from` when its point is a 3-D neighbour
   // of from's, lies within the plane tolerance and fits this plane better than its owner's.
@@ -45,7 +47,7 @@ class FloodVisitor {
       return false;
     }
     if (owner != 0) {
-      if (!buffer_.fitsBetter(to, distance, kTakeoverMargin * tolerance)) {  // Eq. 4
+      if (!buffer_.fitsBetter(to, distance, takeoverMargin(owner, tolerance))) {  // Eq. 4
         noteNeighbour(owner);
         return false;
       }
@@ -88,6 +90,18 @@ class FloodVisitor {
   }
 
   std::size_t takenOver() const { return taken_over_; }
+
+  // Eq. 4's hysteresis applies only between two estimates of one plane (normals within the
+  // merge angle), where it stops noise from trading pixels by coin flip. Between different
+  // planes the better fit wins outright, as in the paper: with a margin there, the band
+  // along a crease where both planes fit within the margin stays with whichever flood came
+  // first, and that one-pixel band can cut a third plane in two (a floor flooded across by a
+  // ramp's plane along their junction line).
+  float takeoverMargin(std::int32_t owner, float tolerance) const {
+    const Vec3& mine = segments_[label_].criterion.normal;
+    const Vec3& theirs = segments_[owner].criterion.normal;
+    return std::abs(mine.dot(theirs)) >= same_plane_cosine_ ? kTakeoverMargin * tolerance : 0.0f;
+  }
   std::size_t attempts() const { return attempts_; }
 
  private:
@@ -106,6 +120,7 @@ class FloodVisitor {
   std::vector<SegmentEdge>& edges_;
   double next_refit_;
   double uncertainty_;  // of the current normal [rad]
+  const float same_plane_cosine_;
   std::size_t taken_over_ = 0;
   std::size_t attempts_ = 0;
 };
@@ -135,7 +150,7 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
   FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
-                       std::max(static_cast<double>(seed.normal_uncertainty), 1e-4));
+                       std::max(static_cast<double>(seed.normal_uncertainty), 1e-4), params.angular_threshold);
   spanFloodFill(width, grid.height, seed_x, seed_y, visitor, shadows_);
 
   // Give the pixels rejected under an earlier plane estimate a second chance.

@@ -153,9 +153,14 @@ float SeedSelector::estimateAngularPitch(const PointGrid& grid, std::vector<floa
     }
   }
   if (scratch.empty()) return fallback;
-  auto middle = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
-  std::nth_element(scratch.begin(), middle, scratch.end());
-  return *middle;
+  // A pinhole's rays are furthest apart on its axis (1 / f) and closer by cos^2 of the
+  // off-axis angle towards the corners, so the median would understate 1 / f by about 10 %
+  // for a Kinect. Only pairs within about 0.1 rad of the axis come within 1 % of 1 / f, a
+  // few percent of the image, so the estimate is the 98th percentile: close to the axis and
+  // still clear of the odd pair whose points noise moved sideways.
+  auto rank = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() * 49 / 50);
+  std::nth_element(scratch.begin(), rank, scratch.end());
+  return *rank;
 }
 
 }  // namespace floodplane

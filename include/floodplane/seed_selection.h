@@ -64,8 +64,9 @@ class SeedSelector {
   /// Runs the tests of Eqs. 5-7 on pixel (x, y) and, if it passes, fills `seed` (Eq. 8).
   SeedVerdict test(const PointGrid& grid, int x, int y, Seed& seed) const;
 
-  /// The angle between neighbouring viewing rays, the median over a sample of neighbouring
-  /// finite points; `fallback` when the grid has no neighbouring finite points.
+  /// The angle between neighbouring viewing rays on the optical axis (1 / f for a pinhole),
+  /// the 98th percentile over a sample of neighbouring finite points; `fallback` when the
+  /// grid has no neighbouring finite points.
   static float estimateAngularPitch(const PointGrid& grid, std::vector<float>& scratch,
                                     float fallback = 1.0f / 525.0f);
 

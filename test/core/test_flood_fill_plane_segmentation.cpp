@@ -73,7 +73,9 @@ TYPED_TEST(FloodFillPlaneSegmentationTyped, FillsEveryOutputOfSegmentAndRefineCo
     EXPECT_EQ(regions[k].getCoefficients(), c);
     EXPECT_EQ(regions[k].getCount(), inliers[k].indices.size());
     EXPECT_EQ(label_indices[k + 1].indices, inliers[k].indices);
-    if (k > 0) EXPECT_GE(inliers[k - 1].indices.size(), inliers[k].indices.size());
+    if (k > 0) {
+      EXPECT_GE(inliers[k - 1].indices.size(), inliers[k].indices.size());
+    }
     for (int i : inliers[k].indices) ASSERT_EQ((*labels)[i].label, label);
     // The contour: ordered, closed, on the region's border.
     ASSERT_FALSE(boundaries[k].indices.empty());
@@ -108,7 +110,7 @@ TEST(FloodFillPlaneSegmentation, AgreesWithALeastSquaresFitOfItsInliers) {
   seg.segment(coefficients, inliers, centroids, covariances, labels, label_indices);
   ASSERT_EQ(coefficients.size(), 3u);
   for (std::size_t k = 0; k < coefficients.size(); ++k) {
-    Eigen::Matrix3f covariance;
+    Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
     Eigen::Vector4f centroid;
     pcl::computeMeanAndCovarianceMatrix(*cloud, inliers[k].indices, covariance, centroid);
     float eigenvalue;
@@ -118,7 +120,18 @@ TEST(FloodFillPlaneSegmentation, AgreesWithALeastSquaresFitOfItsInliers) {
     EXPECT_GT(std::abs(ours.dot(normal)), std::cos(1e-3f)) << "plane " << k;
     EXPECT_NEAR(std::abs(coefficients[k].values[3]), std::abs(normal.dot(centroid.head<3>())), 2e-3f);
     EXPECT_LT((centroids[k] - centroid).norm(), 1e-4f);
-    EXPECT_LT((covariances[k] - covariance).norm(), 1e-4f * covariance.norm());
+    // PCL accumulates in float, which is good to about 1e-3 here; the reference for the
+    // covariance is a two-pass computation in double.
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int i : inliers[k].indices) mean += (*cloud)[i].getVector3fMap().cast<double>();
+    mean /= static_cast<double>(inliers[k].indices.size());
+    Eigen::Matrix3d exact = Eigen::Matrix3d::Zero();
+    for (int i : inliers[k].indices) {
+      const Eigen::Vector3d d = (*cloud)[i].getVector3fMap().cast<double>() - mean;
+      exact += d * d.transpose();
+    }
+    exact /= static_cast<double>(inliers[k].indices.size());
+    EXPECT_LT((covariances[k].cast<double>() - exact).norm(), 1e-5 * exact.norm());
   }
 }
 
@@ -324,8 +337,9 @@ TEST(FloodFillPlaneSegmentation, SegmentsTheRealFrames) {
     pcl::PointCloud<pcl::Label>::Ptr labels;
     seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
     ASSERT_FALSE(regions.empty()) << entry.path();
-    // Every real frame shows a floor, a table or a wall covering a tenth of the image.
-    EXPECT_GT(inliers[0].indices.size(), cloud->size() / 10) << entry.path();
+    // Every real frame shows a floor, a table or a wall covering at least a twentieth of the
+    // image (the least: five_people, whose floor shows between the people on 8.7 %).
+    EXPECT_GT(inliers[0].indices.size(), cloud->size() / 20) << entry.path();
     for (const auto& region : regions) EXPECT_GE(region.getCount(), seg.getMinInliers());
     ++frames;
   }

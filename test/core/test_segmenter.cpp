@@ -85,7 +85,9 @@ TEST(Segmenter, NumbersPlanesBySizeAndCountsTheirPixels) {
   for (std::size_t k = 0; k < result.planes.size(); ++k) {
     EXPECT_EQ(result.planes[k].inlier_count, counts[k + 1]);
     EXPECT_EQ(result.planes[k].first_pixel, first[k + 1]);
-    if (k > 0) EXPECT_GE(result.planes[k - 1].inlier_count, result.planes[k].inlier_count);
+    if (k > 0) {
+      EXPECT_GE(result.planes[k - 1].inlier_count, result.planes[k].inlier_count);
+    }
   }
 }
 
@@ -212,7 +214,9 @@ TEST(Segmenter, RefinementOnlyAddsPixels) {
   for (std::size_t i = 0; i < refined.size(); ++i) {
     before += unrefined[i] != 0;
     after += refined[i] != 0;
-    if (unrefined[i] != 0) EXPECT_NE(refined[i], 0u) << "pixel " << i;
+    if (unrefined[i] != 0) {
+      EXPECT_NE(refined[i], 0u) << "pixel " << i;
+    }
   }
   EXPECT_GE(after, before);
 }
