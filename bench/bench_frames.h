@@ -1,0 +1,28 @@
+// The frames every benchmark runs on: the real 640x480 frames in ../shared/data/real (when
+// present) and the project's scenes rendered at any resolution.
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <string>
+#include <vector>
+
+namespace floodplane::bench {
+
+struct Frame {
+  std::string name;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+};
+
+/// The real frames, sorted by name; empty when the folder is absent.
+const std::vector<Frame>& realFrames();
+
+/// Scene `scene` (a file stem in data/scenes) rendered with the Kinect noise model at
+/// width x height (the intrinsics scaled with the image), cached.
+const Frame& renderedFrame(const std::string& scene, int width, int height);
+
+/// The stems of data/scenes/*.json, sorted.
+const std::vector<std::string>& sceneNames();
+
+}  // namespace floodplane::bench

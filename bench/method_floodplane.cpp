@@ -1,0 +1,87 @@
+// floodplane: FloodFillPlaneSegmentation::segmentAndRefine with the paper's defaults, one
+// segmenter reused across iterations as in a camera loop (its buffers are allocated once).
+#include <benchmark/benchmark.h>
+
+#include <sstream>
+
+#include "bench_frames.h"
+#include "floodplane/flood_fill_plane_segmentation.h"
+#include "methods.h"
+
+namespace floodplane::bench {
+
+namespace {
+
+using Segmentation = FloodFillPlaneSegmentation<pcl::PointXYZ>;
+
+void runFloodplane(benchmark::State& state, const Frame& frame, int subsampling, bool phases) {
+  Segmentation seg;
+  seg.setSubsampling(subsampling);
+  seg.setMeasurePhases(phases);
+  seg.setInputCloud(frame.cloud);
+  Segmentation::Regions regions;
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
+  pcl::PointCloud<pcl::Label>::Ptr labels(new pcl::PointCloud<pcl::Label>);
+  PhaseTimes sum;
+  for (auto _ : state) {
+    seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+    benchmark::DoNotOptimize(regions.data());
+    if (phases) {
+      const PhaseTimes& t = seg.getLastSegmentation().phases;
+      sum.seed_selection += t.seed_selection;
+      sum.flood_fill += t.flood_fill;
+      sum.relabelling += t.relabelling;
+      sum.merging += t.merging;
+      sum.region_output += t.region_output;
+    }
+  }
+  state.counters["planes"] = static_cast<double>(regions.size());
+  state.counters["Mpx/s"] = benchmark::Counter(static_cast<double>(frame.cloud->size()) * 1e-6,
+                                               benchmark::Counter::kIsIterationInvariantRate);
+  if (phases) {
+    const double n = static_cast<double>(state.iterations());
+    state.counters["seed_ms"] = sum.seed_selection / n;
+    state.counters["flood_ms"] = sum.flood_fill / n;
+    state.counters["relabel_ms"] = sum.relabelling / n;
+    state.counters["merge_ms"] = sum.merging / n;
+    state.counters["output_ms"] = sum.region_output / n;
+  }
+}
+
+void add(const std::string& name, const Frame& frame, int subsampling, bool phases = false) {
+  benchmark::RegisterBenchmark(name.c_str(), [&frame, subsampling, phases](benchmark::State& state) {
+    runFloodplane(state, frame, subsampling, phases);
+  })->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+
+std::string floodplaneConfiguration() {
+  const Params p;
+  std::ostringstream out;
+  out << "floodplane: segmentAndRefine, sigma_plane " << p.distance_threshold << " m, sigma_seed " << p.seed_size
+      << " m, theta " << p.angular_threshold << " rad, sigma_merge " << p.merge_distance << " m, min inliers "
+      << p.min_inliers << ", depth noise c " << p.depth_noise_coefficient << " /m";
+  return out.str();
+}
+
+void registerFloodplane() {
+  // Target 1 (issue 8): full resolution, pixel-accurate, real frames and scenes.
+  for (const Frame& frame : realFrames()) add("floodplane/s1/real:" + frame.name, frame, 1);
+  for (const std::string& scene : sceneNames()) add("floodplane/s1/scene:" + scene, renderedFrame(scene, 640, 480), 1);
+  // Target 2: sub-sampling 2 (and Table III's 4 and 8), labels at full resolution.
+  for (int s : {2, 4, 8}) {
+    for (const Frame& frame : realFrames()) add("floodplane/s" + std::to_string(s) + "/real:" + frame.name, frame, s);
+  }
+  for (const std::string& scene : sceneNames()) add("floodplane/s2/scene:" + scene, renderedFrame(scene, 640, 480), 2);
+  // Target 3: cost linear in the pixel count.
+  for (const auto& [w, h] : {std::pair{320, 240}, {640, 480}, {1280, 960}, {1920, 1080}}) {
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    add("floodplane/s1/size:" + size, renderedFrame("boxes_on_floor", w, h), 1);
+  }
+  // Fig. 5: time per phase (measuring adds a few clock reads per seed).
+  for (const Frame& frame : realFrames()) add("floodplane/phases/real:" + frame.name, frame, 1, true);
+}
+
+}  // namespace floodplane::bench
