@@ -5,6 +5,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,15 @@ const std::vector<Frame>& realFrames();
 /// Scene `scene` (a file stem in data/scenes) rendered with the Kinect noise model at
 /// width x height (the intrinsics scaled with the image), cached.
 const Frame& renderedFrame(const std::string& scene, int width, int height);
+
+/// A frame produced when a benchmark first needs it.
+using FrameSource = std::function<const Frame&()>;
+inline FrameSource real(const Frame& frame) {
+  return [&frame]() -> const Frame& { return frame; };
+}
+inline FrameSource rendered(const std::string& scene, int width, int height) {
+  return [=]() -> const Frame& { return renderedFrame(scene, width, height); };
+}
 
 /// The stems of data/scenes/*.json, sorted.
 const std::vector<std::string>& sceneNames();

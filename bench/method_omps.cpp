@@ -44,8 +44,8 @@ void runOmps(benchmark::State& state, const Frame& frame) {
   state.counters["planes"] = static_cast<double>(regions.size());
 }
 
-void add(const std::string& name, const Frame& frame) {
-  benchmark::RegisterBenchmark(name.c_str(), [&frame](benchmark::State& state) { runOmps(state, frame); })
+void add(const std::string& name, FrameSource frame) {
+  benchmark::RegisterBenchmark(name.c_str(), [frame](benchmark::State& state) { runOmps(state, frame()); })
       ->Unit(benchmark::kMillisecond);
 }
 
@@ -57,8 +57,8 @@ std::string ompsConfiguration() {
 }
 
 void registerOmps() {
-  for (const Frame& frame : realFrames()) add("omps/real:" + frame.name, frame);
-  for (const std::string& scene : sceneNames()) add("omps/scene:" + scene, renderedFrame(scene, 640, 480));
+  for (const Frame& frame : realFrames()) add("omps/real:" + frame.name, real(frame));
+  for (const std::string& scene : sceneNames()) add("omps/scene:" + scene, rendered(scene, 640, 480));
 }
 
 }  // namespace floodplane::bench

@@ -5,57 +5,87 @@
 namespace floodplane {
 
 std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int width, const PixelBox& box,
-                                                   std::int32_t label, std::int32_t& next_label) {
+                                                   std::int32_t label, std::int32_t& next_label,
+                                                   std::size_t smallest_piece) {
   std::vector<std::int32_t> created;
-  if (box.empty()) return created;
-  const int box_width = box.x_max - box.x_min + 1;
-  const int box_height = box.y_max - box.y_min + 1;
-  provisional_.assign(static_cast<std::size_t>(box_width) * static_cast<std::size_t>(box_height), -1);
+  runs_.clear();
   sets_.reset(0);
+  set_size_.clear();
+  released_ = 0;
+  if (box.empty()) return created;
 
-  // Pass 1: give each pixel the set of its left or upper neighbour, uniting the two when
-  // both carry the label.
-  for (int by = 0; by < box_height; ++by) {
-    const std::int32_t* row = labels + static_cast<std::size_t>(box.y_min + by) * width + box.x_min;
-    std::int32_t* sets_row = provisional_.data() + static_cast<std::size_t>(by) * box_width;
-    const std::int32_t* sets_above = by > 0 ? sets_row - box_width : nullptr;
-    for (int bx = 0; bx < box_width; ++bx) {
-      if (row[bx] != label) continue;
-      const std::int32_t left = bx > 0 ? sets_row[bx - 1] : -1;
-      const std::int32_t up = sets_above ? sets_above[bx] : -1;
-      if (left >= 0 && up >= 0) {
-        sets_row[bx] = left;
-        if (left != up) sets_.unite(left, up);
-      } else if (left >= 0) {
-        sets_row[bx] = left;
-      } else if (up >= 0) {
-        sets_row[bx] = up;
-      } else {
-        sets_row[bx] = sets_.add();
+  // Pass 1 over runs, not pixels: each row's maximal runs of `label`, united with the runs
+  // of the row above they overlap (4-connectivity: they share a column). A segment is a few
+  // long runs per row, so the union-find work is per run and the per-pixel work is one
+  // comparison.
+  std::size_t above_begin = 0, above_end = 0;  // the previous row's runs in runs_
+  for (int y = box.y_min; y <= box.y_max; ++y) {
+    const std::int32_t* row = labels + static_cast<std::size_t>(y) * width;
+    const std::size_t row_begin = runs_.size();
+    std::size_t above = above_begin;
+    int x = box.x_min;
+    while (x <= box.x_max) {
+      if (row[x] != label) {
+        ++x;
+        continue;
       }
+      Run run{y, x, x, -1};
+      while (run.x_end + 1 <= box.x_max && row[run.x_end + 1] == label) ++run.x_end;
+      x = run.x_end + 1;
+      // Runs above that end before this one starts cannot overlap it or any later run.
+      while (above < above_end && runs_[above].x_end < run.x_begin) ++above;
+      for (std::size_t a = above; a < above_end && runs_[a].x_begin <= run.x_end; ++a) {
+        run.set = run.set < 0 ? runs_[a].set : sets_.unite(run.set, runs_[a].set);
+      }
+      if (run.set < 0) {
+        run.set = sets_.add();
+        set_size_.push_back(0);
+      }
+      set_size_[static_cast<std::size_t>(run.set)] += static_cast<std::size_t>(run.x_end - run.x_begin + 1);
+      runs_.push_back(run);
     }
+    above_begin = row_begin;
+    above_end = runs_.size();
   }
 
-  // Pass 2: one label per root, in raster order of first appearance.
-  final_label_.assign(sets_.size(), -1);
-  bool first = true;
-  for (int by = 0; by < box_height; ++by) {
-    std::int32_t* row = labels + static_cast<std::size_t>(box.y_min + by) * width + box.x_min;
-    const std::int32_t* sets_row = provisional_.data() + static_cast<std::size_t>(by) * box_width;
-    for (int bx = 0; bx < box_width; ++bx) {
-      if (sets_row[bx] < 0) continue;
-      const std::int32_t root = sets_.find(sets_row[bx]);
-      if (final_label_[root] < 0) {
-        if (first) {
-          final_label_[root] = label;
-          first = false;
-        } else {
-          final_label_[root] = next_label++;
-          created.push_back(final_label_[root]);
-        }
-      }
-      row[bx] = final_label_[root];
+  // Sizes per root; a segment still in one piece (the common case) needs no second pass.
+  std::size_t roots = 0;
+  for (std::size_t set = 0; set < set_size_.size(); ++set) {
+    const std::int32_t root = sets_.find(static_cast<std::int32_t>(set));
+    if (root == static_cast<std::int32_t>(set)) {
+      ++roots;
+    } else {
+      set_size_[static_cast<std::size_t>(root)] += set_size_[set];
     }
+  }
+  if (roots == 0) return created;
+  if (roots == 1 && set_size_[static_cast<std::size_t>(sets_.find(0))] >= smallest_piece) {
+    for (Run& run : runs_) run.set = label;
+    return created;
+  }
+
+  // Pass 2 over the runs: one label per root, in raster order of first appearance; crumbs
+  // get 0. Afterwards each run's `set` holds the label its pixels received.
+  final_label_.assign(set_size_.size(), -1);
+  bool first = true;
+  for (Run& run : runs_) {
+    const std::int32_t root = sets_.find(run.set);
+    if (final_label_[root] < 0) {
+      if (set_size_[static_cast<std::size_t>(root)] < smallest_piece) {
+        final_label_[root] = 0;
+        released_ += set_size_[static_cast<std::size_t>(root)];
+      } else if (first) {
+        final_label_[root] = label;
+        first = false;
+      } else {
+        final_label_[root] = next_label++;
+        created.push_back(final_label_[root]);
+      }
+    }
+    run.set = final_label_[root];
+    if (run.set == label) continue;
+    std::int32_t* row = labels + static_cast<std::size_t>(run.y) * width;
+    for (int x = run.x_begin; x <= run.x_end; ++x) row[x] = run.set;
   }
   return created;
 }

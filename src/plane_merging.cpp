@@ -22,13 +22,12 @@ MergeCriterion::MergeCriterion(const Params& params)
 
 bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b,
                                const PlaneFit& fit_b, double& cost) const {
-  PlaneSums both = a;
-  both.merge(b);
-  const PlaneFit merged = both.fit();
-  if (!merged.valid) return false;
-  const double depth_sigma = noise_coefficient_ * merged.centroid.squaredNorm();
-
+  // The cheap tests on the parts' own planes come first: most neighbouring segments are
+  // different planes and fail them, and the merged fit below costs an eigen-decomposition.
   if (fit_a.valid && fit_b.valid) {
+    // The depth noise at the parts' combined centroid, from the sums without a fit.
+    const Eigen::Vector3d centroid = (a.centroid() * a.count + b.centroid() * b.count) / (a.count + b.count);
+    const double depth_sigma = noise_coefficient_ * centroid.squaredNorm();
     // Eq. 9, first term: the normals agree, up to what their own uncertainty explains.
     const double uncertainty = std::sqrt(normalVariance(a, fit_a) + normalVariance(b, fit_b));
     const double allowed = std::min(angle_ + 3.0 * uncertainty, 1.5);
@@ -39,6 +38,12 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
     if (std::abs(between.dot(fit_a.normal)) >= tolerance) return false;
     if (std::abs(between.dot(fit_b.normal)) >= tolerance) return false;
   }
+
+  PlaneSums both = a;
+  both.merge(b);
+  const PlaneFit merged = both.fit();
+  if (!merged.valid) return false;
+  const double depth_sigma = noise_coefficient_ * merged.centroid.squaredNorm();
 
   // Each part fits the merged plane.
   const double fit_tolerance = std::max(fit_tolerance_, 2.0 * depth_sigma);

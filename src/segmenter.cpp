@@ -56,8 +56,6 @@ struct Segmenter::Workspace {
   std::vector<Segment> segments;
   std::vector<SegmentEdge> edges;
   ComponentSplitter splitter;
-  std::vector<std::uint8_t> changed;  // per segment: relabelled, so its edges are recomputed
-  std::vector<std::int32_t> piece_slot;
   PlaneMerger merger;
   std::vector<PlaneSums> cluster_sums;
   RegionBuilder regions;
@@ -83,67 +81,63 @@ struct Segmenter::Workspace {
     return grid;
   }
 
-  // Sec. III-B, after the floods: split what Eq. 4 takeovers disconnected, recompute the
-  // pieces' sums and their neighbour edges.
-  void relabel(const PointGrid& grid) {
+  // Sec. III-B, after the floods: split what Eq. 4 takeovers disconnected. Only the pixels
+  // that leave a segment are visited after the split: the piece that keeps the label keeps
+  // its running sums minus what left, and its neighbour edges (an edge it inherits from a
+  // piece that split off joins it to a segment it touched through that piece, across the
+  // band the takeover cut, which the merge test still judges on the planes).
+  void relabel(const PointGrid& grid, int subsampling) {
+    // Crumbs below 16 full-resolution pixels' worth of samples are released (see
+    // ComponentSplitter); at least one sample, so nothing is released at s >= 4.
+    const std::size_t smallest_piece = static_cast<std::size_t>(std::max(1, 16 / (subsampling * subsampling)));
     const std::int32_t before = static_cast<std::int32_t>(segments.size());
     std::int32_t next_label = before;
-    changed.assign(segments.size(), 0);
     std::vector<std::int32_t>& labels = buffer.labels();
     for (std::int32_t s = 1; s < before; ++s) {
       if (!segments[s].lost_pixels || segments[s].sums.count <= 0.0) continue;
       const PixelBox box = segments[s].box;
       const std::int32_t first_new = next_label;
-      const std::vector<std::int32_t> created = splitter.split(labels.data(), grid.width, box, s, next_label);
-      if (created.empty()) continue;
-      // The pieces: slot 0 keeps label s, slot i > 0 is label first_new + i - 1.
-      const std::size_t pieces = created.size() + 1;
+      const std::vector<std::int32_t> created =
+          splitter.split(labels.data(), grid.width, box, s, next_label, smallest_piece);
+      if (created.empty() && splitter.releasedPixels() == 0) continue;
       const FloodCriterion criterion = segments[s].criterion;
       segments.resize(static_cast<std::size_t>(next_label));
-      changed.resize(segments.size(), 0);
-      piece_slot.assign(pieces, 0);
-      for (std::size_t slot = 0; slot < pieces; ++slot) {
-        const std::int32_t label = slot == 0 ? s : first_new + static_cast<std::int32_t>(slot) - 1;
+      for (std::int32_t label = first_new; label < next_label; ++label) {
         segments[label] = Segment();
         segments[label].criterion = criterion;
-        changed[label] = 1;
       }
-      for (int y = box.y_min; y <= box.y_max; ++y) {
-        for (int x = box.x_min; x <= box.x_max; ++x) {
-          const std::size_t i = static_cast<std::size_t>(y) * grid.width + x;
-          const std::int32_t label = labels[i];
-          if (label != s && (label < first_new || label >= next_label)) continue;
-          Segment& piece = segments[label];
-          piece.sums.add(Vec3::load(grid.point(i)));
-          piece.box.include(x, y);
+      for (const ComponentSplitter::Run& run : splitter.runs()) {
+        if (run.set == s) continue;
+        Segment* piece = run.set > 0 ? &segments[run.set] : nullptr;
+        for (int x = run.x_begin; x <= run.x_end; ++x) {
+          const Vec3 p = Vec3::load(grid.point(static_cast<std::size_t>(run.y) * grid.width + x));
+          segments[s].sums.remove(p);
+          if (piece) piece->sums.add(p);
+        }
+        if (piece) {
+          piece->box.include(run.x_begin, run.y);
+          piece->box.include(run.x_end, run.y);
+          addPieceEdges(grid, run);
         }
       }
     }
-    if (segments.size() == static_cast<std::size_t>(before)) return;
+  }
 
-    // Edges of relabelled segments are rebuilt from their pixels.
-    edges.erase(std::remove_if(edges.begin(), edges.end(),
-                               [&](const SegmentEdge& e) { return changed[e.first] || changed[e.second]; }),
-                edges.end());
-    for (std::size_t s = 1; s < segments.size(); ++s) {
-      if (!changed[s]) continue;
-      const PixelBox& box = segments[s].box;
-      const FloodCriterion& c = segments[s].criterion;
-      const std::int32_t label = static_cast<std::int32_t>(s);
-      for (int y = box.y_min; y <= box.y_max; ++y) {
-        for (int x = box.x_min; x <= box.x_max; ++x) {
-          const std::size_t i = static_cast<std::size_t>(y) * grid.width + x;
-          if (labels[i] != label) continue;
-          const Vec3 p = Vec3::load(grid.point(i));
-          const float tolerance_sq = c.euclideanToleranceSq(p.squaredNorm());
-          const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < grid.width ? i + 1 : i,
-                                             y > 0 ? i - grid.width : i, y + 1 < grid.height ? i + grid.width : i};
-          for (const std::size_t j : neighbours) {
-            const std::int32_t other = labels[j];
-            if (other == 0 || other == label) continue;
-            if (squaredEuclideanDistance(p, Vec3::load(grid.point(j))) < tolerance_sq) edges.emplace_back(label, other);
-          }
-        }
+  // The neighbour edges of a run of a new piece: its pixels' 4-neighbours with another label
+  // that are 3-D neighbours too (Eq. 3).
+  void addPieceEdges(const PointGrid& grid, const ComponentSplitter::Run& run) {
+    const std::vector<std::int32_t>& labels = buffer.labels();
+    const FloodCriterion& c = segments[run.set].criterion;
+    for (int x = run.x_begin; x <= run.x_end; ++x) {
+      const std::size_t i = static_cast<std::size_t>(run.y) * grid.width + x;
+      const Vec3 p = Vec3::load(grid.point(i));
+      const float tolerance_sq = c.euclideanToleranceSq(p.squaredNorm());
+      const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < grid.width ? i + 1 : i,
+                                         run.y > 0 ? i - grid.width : i, run.y + 1 < grid.height ? i + grid.width : i};
+      for (const std::size_t j : neighbours) {
+        const std::int32_t other = labels[j];
+        if (other == 0 || other == run.set) continue;
+        if (squaredEuclideanDistance(p, Vec3::load(grid.point(j))) < tolerance_sq) edges.emplace_back(run.set, other);
       }
     }
   }
@@ -208,7 +202,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
 
   {
     PhaseTimer timer(timed, result_.phases.relabelling);
-    ws.relabel(grid);
+    ws.relabel(grid, s);
     result_.stats.segments = ws.segments.size() - 1;
   }
 
