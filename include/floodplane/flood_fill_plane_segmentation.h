@@ -123,7 +123,7 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
                         std::vector<pcl::PointIndices>& label_indices,
                         std::vector<pcl::PointIndices>& boundary_indices);
 
-  /// The last result as the core produced it: labels and planes in the sensor frame, the
+  /// The last result as the core produced it: labels, and planes relative to the sensor origin (axes as the cloud's), the
   /// time per phase and statistics. Valid until the next call.
   const Segmentation& getLastSegmentation() const { return *last_; }
 
@@ -152,7 +152,7 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   Params params_;
   bool measure_phases_ = false;
   Segmenter segmenter_;
-  std::vector<float> sensor_frame_points_;  // the cloud in the sensor frame, when posed
+  std::vector<float> sensor_frame_points_;  // the cloud shifted to its sensor origin, when not at 0
   std::vector<CloudPlane, Eigen::aligned_allocator<CloudPlane>> planes_;
   std::vector<int> contour_;
   const Segmentation* last_ = &empty_;

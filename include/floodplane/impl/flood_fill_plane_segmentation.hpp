@@ -101,49 +101,45 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
     return false;
   }
 
-  // The core works in the sensor frame. Clouds straight from a camera are already in it
-  // and are read in place; a posed cloud is moved into it once.
+  // The core needs the sensor at the origin and nothing else of its pose: it uses ranges,
+  // distances and dot products only, which a rotation leaves unchanged, so any
+  // sensor_orientation_ is fine as it is. A cloud whose sensor is not at the origin is
+  // shifted once into a buffer; the usual camera cloud is read in place.
   const Eigen::Vector3f origin = input_->sensor_origin_.template head<3>();
-  const Eigen::Quaternionf orientation = input_->sensor_orientation_;
-  const bool in_sensor_frame = origin.isZero(0.0f) && orientation.w() == 1.0f && orientation.vec().isZero(0.0f);
-  const Eigen::Matrix3f rotation = orientation.normalized().toRotationMatrix();
-
   PointGrid grid;
   grid.width = static_cast<int>(input_->width);
   grid.height = static_cast<int>(input_->height);
-  if (in_sensor_frame) {
+  if (origin.isZero(0.0f)) {
     static_assert(sizeof(PointT) % sizeof(float) == 0, "PCL point types are made of 4-byte fields");
     grid.data = &(*input_)[0].x;
     grid.stride = sizeof(PointT) / sizeof(float);
   } else {
     sensor_frame_points_.resize(input_->size() * 3);
-    const Eigen::Matrix3f to_sensor = rotation.transpose();
-    for (std::size_t i = 0; i < input_->size(); ++i) {
-      const Eigen::Vector3f p = to_sensor * ((*input_)[i].getVector3fMap() - origin);
-      sensor_frame_points_[3 * i] = p.x();
-      sensor_frame_points_[3 * i + 1] = p.y();
-      sensor_frame_points_[3 * i + 2] = p.z();
+    float* out = sensor_frame_points_.data();
+    for (const PointT& p : input_->points) {
+      *out++ = p.x - origin.x();
+      *out++ = p.y - origin.y();
+      *out++ = p.z - origin.z();
     }
     grid.data = sensor_frame_points_.data();
     grid.stride = 3;
   }
-
   segmenter_.setParams(params_);
   Segmenter::Options options;
   options.refine = refine;
   options.measure_phases = measure_phases_;
   last_ = &segmenter_.segment(grid, options);
 
-  // The planes in the cloud's frame.
+  // The planes in the cloud's frame: only the shift to the sensor's origin is undone.
   planes_.resize(last_->planes.size());
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     const PlaneFit& fit = last_->planes[k].fit;
-    const Eigen::Vector3f normal = rotation * fit.normal.cast<float>();
-    const Eigen::Vector3f centroid = rotation * fit.centroid.cast<float>() + origin;
+    const Eigen::Vector3f normal = fit.normal.cast<float>();
+    const Eigen::Vector3f centroid = fit.centroid.cast<float>() + origin;
     CloudPlane& plane = planes_[k];
     plane.coefficients << normal, -normal.dot(centroid);
     plane.centroid << centroid, 1.0f;
-    plane.covariance = rotation * fit.covariance.cast<float>() * rotation.transpose();
+    plane.covariance = fit.covariance.cast<float>();
   }
   return true;
 }
