@@ -99,6 +99,12 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   // Each full-resolution pixel takes the best-fitting plane of the four samples around it.
   const int grid_width = segmented.width;
   const int grid_height = segmented.height;
+  // The samples' columns per pixel column, once per frame rather than two divisions a pixel.
+  sample_column_.resize(static_cast<std::size_t>(full.width) * 2);
+  for (int u = 0; u < full.width; ++u) {
+    sample_column_[2 * u] = u / subsampling;
+    sample_column_[2 * u + 1] = std::min(u / subsampling + 1, grid_width - 1);
+  }
   for (int v = 0; v < full.height; ++v) {
     const int gy0 = v / subsampling;
     const int gy1 = std::min(gy0 + 1, grid_height - 1);
@@ -106,8 +112,8 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
     const std::int32_t* row1 = segment + static_cast<std::size_t>(gy1) * grid_width;
     std::uint32_t* out_row = labels.data() + static_cast<std::size_t>(v) * full.width;
     for (int u = 0; u < full.width; ++u) {
-      const int gx0 = u / subsampling;
-      const int gx1 = std::min(gx0 + 1, grid_width - 1);
+      const int gx0 = sample_column_[2 * u];
+      const int gx1 = sample_column_[2 * u + 1];
       const std::uint32_t around[4] = {table[row0[gx0]], table[row0[gx1]], table[row1[gx0]], table[row1[gx1]]};
       std::uint32_t best = 0;
       if ((around[0] | around[1] | around[2] | around[3]) != 0) {
@@ -115,15 +121,22 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
         const Vec3 q = Vec3::load(full.point(index));
         const float range_sq = q.squaredNorm();
         // Every plane has the same tolerance at a given range.
-        float best_distance = candidates_[0].criterion.planeTolerance(range_sq);
-        for (int a = 0; a < 4; ++a) {
-          const std::uint32_t k = around[a];
-          if (k == 0 || k == best) continue;
-          const FloodCriterion& c = candidates_[k - 1].criterion;
-          const float distance = planeDistance(c.normal, c.offset, q);
-          if (distance < best_distance) {
-            best_distance = distance;
-            best = k;
+        const float tolerance = candidates_[0].criterion.planeTolerance(range_sq);
+        if (around[0] == around[1] && around[0] == around[2] && around[0] == around[3]) {
+          // Inside a region (most pixels): one plane to test.
+          const FloodCriterion& c = candidates_[around[0] - 1].criterion;
+          if (planeDistance(c.normal, c.offset, q) < tolerance) best = around[0];
+        } else {
+          float best_distance = tolerance;
+          for (int a = 0; a < 4; ++a) {
+            const std::uint32_t k = around[a];
+            if (k == 0 || k == best) continue;
+            const FloodCriterion& c = candidates_[k - 1].criterion;
+            const float distance = planeDistance(c.normal, c.offset, q);
+            if (distance < best_distance) {
+              best_distance = distance;
+              best = k;
+            }
           }
         }
         if (best != 0) {
