@@ -74,7 +74,25 @@ InputCloud loadInputCloud(const std::string& path) {
     const QuietPcl quiet;
     pcl::PCDReader reader;
     try {
+      // PCL 1.13's read() dereferences the first field without checking that the header
+      // had any (a text file crashes it), so the header is read and checked first.
+      pcl::PCLPointCloud2 header;
+      Eigen::Vector4f origin;
+      Eigen::Quaternionf orientation;
+      int version = 0;
+      int data_type = 0;
+      unsigned int data_index = 0;
+      if (reader.readHeader(path, header, origin, orientation, version, data_type, data_index) <
+              0 ||
+          header.fields.empty()) {
+        throw std::runtime_error(path + ": not a readable PCD file");
+      }
+      if (header.width * header.height == 0) {
+        throw std::runtime_error(path + ": has no points");
+      }
       status = reader.read(path, blob);
+    } catch (const std::runtime_error&) {
+      throw;
     } catch (const std::exception& e) {
       throw std::runtime_error(path + ": not a readable PCD file (" + e.what() + ")");
     }

@@ -35,7 +35,7 @@ constexpr double kTolerance = 0.8;  // Hoover's T, metrics.md's default
 
 struct Options {
   std::vector<std::string> inputs;
-  std::vector<std::string> methods = {"floodplane", "ransac", "omps"};
+  std::vector<std::string> methods;
   int repeat = 20;
   std::string csv_file;
   std::string json_file;
@@ -44,6 +44,17 @@ struct Options {
   bool phases = false;
   bool quiet = false;
 };
+
+std::vector<std::string> splitList(const std::string& list) {
+  std::vector<std::string> items;
+  std::istringstream stream(list);
+  for (std::string item; std::getline(stream, item, ',');) {
+    if (!item.empty()) {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -297,9 +308,20 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", FLOODPLANE_VERSION_STRING);
   // No existence check here: a missing file is reported with the others, and the batch goes on.
   app.add_option("inputs", options.inputs, "PCD files or directories of *.pcd")->required();
-  app.add_option("--methods", options.methods, "Methods to run, comma-separated")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"floodplane", "ransac", "omps"}))
+  // One comma-separated token, split here: a vector option would also swallow the INPUTs
+  // that follow it ("--methods omps scene.pcd").
+  std::string method_list = "floodplane,ransac,omps";
+  app.add_option("--methods", method_list,
+                 "Methods to run, comma-separated, from floodplane, ransac, omps")
+      ->check(
+          [](const std::string& list) -> std::string {
+            for (const std::string& name : splitList(list)) {
+              if (name != "floodplane" && name != "ransac" && name != "omps") {
+                return "unknown method '" + name + "' (use floodplane, ransac, omps)";
+              }
+            }
+            return splitList(list).empty() ? "no method given" : "";
+          })
       ->capture_default_str();
   app.add_option("--repeat", options.repeat, "Timed runs per method and file, after one warm-up")
       ->check(CLI::PositiveNumber)
@@ -315,6 +337,8 @@ int main(int argc, char** argv) {
                "Also report floodplane's time per phase (Fig. 5), from separate runs");
   app.add_flag("-q,--quiet", options.quiet,
                "Print no configuration and no progress: only the tables and errors");
+  // A bad command line prints the whole usage, not just the complaint.
+  app.failure_message(CLI::FailureMessage::help);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -327,7 +351,7 @@ int main(int argc, char** argv) {
   }
   // A method named twice would be timed twice and collide in the tables.
   std::vector<std::string> unique_methods;
-  for (const std::string& name : options.methods) {
+  for (const std::string& name : splitList(method_list)) {
     if (std::find(unique_methods.begin(), unique_methods.end(), name) == unique_methods.end()) {
       unique_methods.push_back(name);
     }
