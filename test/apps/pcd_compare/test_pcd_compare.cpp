@@ -6,6 +6,7 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
