@@ -1,0 +1,80 @@
+// floodplane itself, through its PCL drop-in class, as a user would call it.
+
+#include <chrono>
+#include <sstream>
+
+#include "floodplane/flood_fill_plane_segmentation.h"
+#include "method.h"
+
+namespace pcd_compare {
+
+namespace {
+
+class FloodplaneMethod : public Method {
+ public:
+  FloodplaneMethod(int subsampling, bool measure_phases) {
+    segmentation_.setSubsampling(subsampling);
+    segmentation_.setMeasurePhases(measure_phases);
+    measure_phases_ = measure_phases;
+  }
+
+  std::string name() const override {
+    const int factor = segmentation_.getSubsampling();
+    return factor == 1 ? "floodplane" : "floodplane/" + std::to_string(factor);
+  }
+
+  std::string parameters() const override {
+    const floodplane::Params& p = segmentation_.getParams();
+    std::ostringstream text;
+    text << "FloodFillPlaneSegmentation<PointXYZ>::segmentAndRefine, library defaults: "
+         << "distance threshold " << p.distance_threshold << " m, seed size " << p.seed_size
+         << " m, angular threshold " << p.angular_threshold << " rad, merge distance "
+         << p.merge_distance << " m, min inliers " << p.min_inliers << ", maximum curvature "
+         << p.maximum_curvature << ", depth noise coefficient " << p.depth_noise_coefficient
+         << " 1/m, sub-sampling " << p.subsampling
+         << (measure_phases_ ? ", phase timer on" : "");
+    return text.str();
+  }
+
+  MethodRun run(const Cloud::ConstPtr& cloud) override {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    segmentation_.setInputCloud(cloud);
+    segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels_, label_indices_,
+                                   boundaries_);
+    const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
+
+    MethodRun result;
+    result.total_ms = elapsed.count();
+    result.labels.resize(cloud->size(), 0);
+    // The label cloud is documented to number plane k as label k, 0 for no plane.
+    if (labels_ && labels_->size() == cloud->size()) {
+      for (std::size_t i = 0; i < labels_->size(); ++i) {
+        result.labels[i] = (*labels_)[i].label;
+      }
+    }
+    if (measure_phases_) {
+      result.phases = segmentation_.getLastSegmentation().phases;
+    }
+    return result;
+  }
+
+ private:
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation_;
+  bool measure_phases_ = false;
+  // Kept between runs, as an application segmenting a stream would.
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions_;
+  std::vector<pcl::ModelCoefficients> coefficients_;
+  std::vector<pcl::PointIndices> inliers_;
+  pcl::PointCloud<pcl::Label>::Ptr labels_;
+  std::vector<pcl::PointIndices> label_indices_;
+  std::vector<pcl::PointIndices> boundaries_;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> makeFloodplaneMethod(int subsampling, bool measure_phases) {
+  return std::make_unique<FloodplaneMethod>(subsampling, measure_phases);
+}
+
+}  // namespace pcd_compare

@@ -1,0 +1,74 @@
+#pragma once
+// Segmentation quality against ground truth, exactly as /work/shared/reference/metrics.md
+// defines it: per-plane IoU, mean and weighted IoU (the paper's Table I), and the Hoover et al.
+// 1996 classification (SegComp). Plain arrays, no PCL, no I/O.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace floodplane::eval {
+
+/// Settings of the comparison.
+struct MetricsOptions {
+  /// Ground-truth planes and predicted segments with fewer valid pixels than this are
+  /// ignored. 500 at 640x480; use defaultMinPoints() at other resolutions.
+  std::uint32_t min_points = 500;
+  /// Hoover's tolerance T, in (0.5, 1]. Above 0.5 a region can be the larger part of at
+  /// most one other region, which makes every classification below unambiguous.
+  double tolerance = 0.8;
+};
+
+/// round(500 * width * height / (640 * 480)): the minimum size scaled with the pixel count.
+std::uint32_t defaultMinPoints(std::size_t width, std::size_t height);
+
+/// How a kept ground-truth plane was classified by Hoover's metric.
+enum class HooverClass { correct, over_segmented, under_segmented, missed };
+
+/// One kept ground-truth plane.
+struct PlaneScore {
+  std::uint32_t label = 0;            ///< its ground-truth label
+  std::size_t pixels = 0;             ///< |g|, valid pixels only
+  double iou = 0.0;                   ///< max over kept predicted segments of |g n p| / |g u p|
+  std::uint32_t best_segment = 0;     ///< the predicted label reaching `iou`; 0 if none overlaps
+  HooverClass hoover = HooverClass::missed;
+};
+
+/// Hoover et al.'s counts. `over` counts over-segmented ground-truth planes and `under`
+/// under-segmenting predicted segments (one per instance, as in SegComp), `missed` the
+/// ground-truth planes and `noise` the predicted segments that are in no instance.
+struct HooverCounts {
+  std::size_t correct = 0;
+  std::size_t over = 0;
+  std::size_t under = 0;
+  std::size_t missed = 0;
+  std::size_t noise = 0;
+};
+
+struct SegmentationScores {
+  std::vector<PlaneScore> planes;        ///< kept ground-truth planes, by ascending label
+  std::size_t predicted_segments = 0;    ///< kept predicted segments
+  /// Averages of PlaneScore::iou, plain and weighted by |g|. NaN when no plane is kept:
+  /// there is nothing to average, and 0 would read as "found nothing".
+  double mean_iou = 0.0;
+  double weighted_iou = 0.0;
+  HooverCounts hoover;
+};
+
+/// Compares `predicted` with `ground_truth`, both row-major label grids of one size, label 0
+/// meaning "not on a plane". `valid[i] != 0` marks the pixels that count; pass a pixel as
+/// invalid when its ground-truth point is NaN. All sizes (|g|, |p|, overlaps) count valid
+/// pixels only.
+///
+/// Hoover classification order: correct detections first, then over-segmentations (ground-
+/// truth planes by ascending label), then under-segmentations (predicted segments by
+/// ascending label), each among regions not yet classified; what is left is missed / noise.
+///
+/// Throws std::invalid_argument if the three vectors differ in size or the tolerance is not
+/// in (0.5, 1].
+SegmentationScores evaluateSegmentation(const std::vector<std::uint32_t>& ground_truth,
+                                        const std::vector<std::uint32_t>& predicted,
+                                        const std::vector<std::uint8_t>& valid,
+                                        const MetricsOptions& options = MetricsOptions());
+
+}  // namespace floodplane::eval

@@ -1,0 +1,271 @@
+// pcd_compare end to end: the real binary on small rendered scenes, checking its exit codes,
+// its Markdown table, its JSON and CSV files, its images and its error reports.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTabletop = std::string(PCD_COMPARE_SCENE_DIR) + "/tabletop.kinect.pcd";
+const std::string kStaircase = std::string(PCD_COMPARE_SCENE_DIR) + "/staircase.none.pcd";
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+class PcdCompare : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("pcd_compare_test_" + std::string(info->name()) + "_" +
+                                        std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs pcd_compare with `arguments` (already quoted where needed).
+  Outcome run(const std::string& arguments) const {
+    const fs::path out = dir_ / "stdout.txt";
+    const fs::path err = dir_ / "stderr.txt";
+    const std::string command = quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" +
+                                quoted(out.string()) + " 2>" + quoted(err.string());
+    const int status = std::system(command.c_str());
+    Outcome outcome;
+    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.out = readFile(out);
+    outcome.err = readFile(err);
+    return outcome;
+  }
+
+  fs::path dir_;
+};
+
+// Number of Markdown rows `| <scene> | <method> |`.
+int rowCount(const std::string& markdown, const std::string& scene, const std::string& method) {
+  const std::string row = "| " + scene + " | " + method + " |";
+  int count = 0;
+  for (std::size_t at = markdown.find(row); at != std::string::npos;
+       at = markdown.find(row, at + 1)) {
+    ++count;
+  }
+  return count;
+}
+
+TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
+  const fs::path json_file = dir_ / "out.json";
+  const fs::path csv_file = dir_ / "out.csv";
+  const Outcome outcome = run("--repeat 2 --json " + quoted(json_file.string()) + " --csv " +
+                              quoted(csv_file.string()) + " " + quoted(kTabletop) + " " +
+                              quoted(kStaircase));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  for (const std::string method : {"floodplane", "ransac", "omps"}) {
+    EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", method), 1) << method;
+    EXPECT_EQ(rowCount(outcome.out, "staircase.none", method), 1) << method;
+    EXPECT_EQ(rowCount(outcome.out, "**mean** (2 scenes)", method), 1) << method;
+    // The configuration names every method with its parameters before the numbers.
+    const std::size_t config = outcome.out.find("**method " + method + "**");
+    ASSERT_NE(config, std::string::npos) << method;
+    EXPECT_LT(config, outcome.out.find("| scene |"));
+  }
+  EXPECT_NE(outcome.out.find("PCL"), std::string::npos);
+  // Progress per file on stderr when there are several.
+  EXPECT_NE(outcome.err.find("[2/2]"), std::string::npos);
+
+  const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+  ASSERT_EQ(json["scenes"].size(), 2u);
+  for (const auto& scene : json["scenes"]) {
+    EXPECT_TRUE(scene["ground_truth"].get<bool>());
+    ASSERT_EQ(scene["methods"].size(), 3u);
+    for (const auto& [method, result] : scene["methods"].items()) {
+      ASSERT_TRUE(result["mean_iou"].is_number()) << method;
+      const double mean_iou = result["mean_iou"].get<double>();
+      EXPECT_GE(mean_iou, 0.0) << method;
+      EXPECT_LE(mean_iou, 1.0) << method;
+      EXPECT_GT(result["median_ms"].get<double>(), 0.0) << method;
+      EXPECT_LE(result["min_ms"].get<double>(), result["median_ms"].get<double>()) << method;
+      // Every kept ground-truth plane is either matched or not: the Hoover classes of the
+      // planes add up to the number of planes.
+      const auto& hoover = result["hoover"];
+      std::size_t classified = 0;
+      for (const auto& plane : result["per_plane"]) {
+        classified += plane["hoover"] == "missed" ? 0 : 1;
+      }
+      EXPECT_EQ(classified + hoover["missed"].get<std::size_t>(),
+                result["ground_truth_planes"].get<std::size_t>())
+          << method;
+    }
+    EXPECT_DOUBLE_EQ(scene["methods"]["floodplane"]["ratio_to_floodplane"].get<double>(), 1.0);
+  }
+  for (const std::string method : {"floodplane", "ransac", "omps"}) {
+    const double mean_iou = json["means"][method]["mean_iou"].get<double>();
+    EXPECT_GE(mean_iou, 0.0);
+    EXPECT_LE(mean_iou, 1.0);
+  }
+
+  // CSV: a header and one line per scene and method.
+  std::istringstream csv(readFile(csv_file));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) {
+    lines.push_back(line);
+  }
+  ASSERT_EQ(lines.size(), 7u);
+  EXPECT_EQ(lines[0].rfind("scene,file,method,", 0), 0u);
+}
+
+TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
+  const Outcome outcome = run("--repeat 2 --quiet --methods omps,floodplane " + quoted(kStaircase));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps"), 1);
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "ransac"), 0);
+  // --quiet: the tables but no configuration.
+  EXPECT_EQ(outcome.out.find("## Configuration"), std::string::npos);
+}
+
+TEST_F(PcdCompare, MissingFileIsReportedByNameAndTheOtherFilesAreStillCompared) {
+  const std::string missing = (dir_ / "no_such_scene.pcd").string();
+  const Outcome outcome =
+      run("--repeat 2 --methods floodplane " + quoted(missing) + " " + quoted(kStaircase));
+  EXPECT_EQ(outcome.exit_code, 1);
+  EXPECT_NE(outcome.err.find(missing + ": no such file"), std::string::npos) << outcome.err;
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1) << outcome.out;
+}
+
+TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
+  const fs::path text = dir_ / "not_a_cloud.pcd";
+  std::ofstream(text) << "this is not a point cloud\n";
+  pcl::PointCloud<pcl::PointXYZ> unorganized;
+  for (int i = 0; i < 10; ++i) {
+    unorganized.push_back(pcl::PointXYZ(0.1f * static_cast<float>(i), 0.0f, 1.0f));
+  }
+  const fs::path flat = dir_ / "unorganized.pcd";
+  pcl::io::savePCDFileBinary(flat.string(), unorganized);
+  pcl::PointCloud<pcl::Label> labels_only(4, 4);
+  const fs::path no_xyz = dir_ / "labels_only.pcd";
+  pcl::io::savePCDFileBinary(no_xyz.string(), labels_only);
+
+  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(text.string()) + " " +
+                              quoted(flat.string()) + " " + quoted(no_xyz.string()) + " " +
+                              quoted(kStaircase));
+  EXPECT_EQ(outcome.exit_code, 1);
+  EXPECT_NE(outcome.err.find(text.string() + ": not a readable PCD file"), std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find(flat.string() + ": not an organized cloud"), std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find(no_xyz.string() + ": has no x, y, z fields"), std::string::npos)
+      << outcome.err;
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
+}
+
+TEST_F(PcdCompare, BadOptionsExitWithCodeTwo) {
+  EXPECT_EQ(run("--no-such-option " + quoted(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--methods floodplane,watershed " + quoted(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--repeat 0 " + quoted(kStaircase)).exit_code, 2);
+  const Outcome no_input = run("--repeat 2");
+  EXPECT_EQ(no_input.exit_code, 2);
+  EXPECT_NE(no_input.err.find("Usage"), std::string::npos) << no_input.err;
+}
+
+TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
+  const Outcome help = run("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--resolutions"), std::string::npos);
+  const Outcome version = run("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_FALSE(version.out.empty());
+}
+
+TEST_F(PcdCompare, CloudWithoutLabelsGivesRuntimeOnly) {
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  ASSERT_EQ(pcl::io::loadPCDFile(kStaircase, xyz), 0);
+  const fs::path file = dir_ / "unlabelled.pcd";
+  pcl::io::savePCDFileBinary(file.string(), xyz);
+  const fs::path json_file = dir_ / "out.json";
+  const Outcome outcome = run("--repeat 2 --methods floodplane,omps --json " +
+                              quoted(json_file.string()) + " " + quoted(file.string()));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_EQ(rowCount(outcome.out, "unlabelled", "floodplane"), 1);
+  EXPECT_EQ(outcome.out.find("mean IoU"), std::string::npos);
+  const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+  const auto& scene = json["scenes"][0];
+  EXPECT_FALSE(scene["ground_truth"].get<bool>());
+  EXPECT_FALSE(scene["methods"]["floodplane"].contains("mean_iou"));
+  EXPECT_GT(scene["methods"]["omps"]["parts_median_ms"]["normals"].get<double>(), 0.0);
+}
+
+TEST_F(PcdCompare, DirectoryInputComparesItsPcdFilesInSortedOrder) {
+  fs::copy_file(kTabletop, dir_ / "b_tabletop.pcd");
+  fs::copy_file(kStaircase, dir_ / "a_staircase.pcd");
+  std::ofstream(dir_ / "notes.txt") << "not a cloud, and not named .pcd\n";
+  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(dir_.string()));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::size_t first = outcome.out.find("| a_staircase | floodplane |");
+  const std::size_t second = outcome.out.find("| b_tabletop | floodplane |");
+  ASSERT_NE(first, std::string::npos);
+  ASSERT_NE(second, std::string::npos);
+  EXPECT_LT(first, second);
+}
+
+TEST_F(PcdCompare, PngShowsGroundTruthAndEachMethodSideBySide) {
+  const fs::path png_dir = dir_ / "images";
+  const Outcome outcome = run("--repeat 2 --quiet --methods floodplane,omps --png " +
+                              quoted(png_dir.string()) + " " + quoted(kStaircase));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::string png = readFile(png_dir / "staircase.none.png");
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  // IHDR width, big-endian at byte 16: three 320-pixel panels (ground truth, omps,
+  // floodplane) and two 4-pixel gaps.
+  const auto byte = [&png](std::size_t i) { return static_cast<unsigned char>(png[i]); };
+  const unsigned width = (byte(16) << 24) | (byte(17) << 16) | (byte(18) << 8) | byte(19);
+  EXPECT_EQ(width, 3u * 320u + 2u * 4u);
+}
+
+TEST_F(PcdCompare, ResolutionsAndPhasesAddTheirTables) {
+  const fs::path json_file = dir_ / "out.json";
+  const Outcome outcome = run("--repeat 2 --quiet --methods ransac --resolutions --phases --json " +
+                              quoted(json_file.string()) + " " + quoted(kStaircase));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("Table III"), std::string::npos);
+  EXPECT_NE(outcome.out.find("Fig. 5"), std::string::npos);
+  const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+  const auto& scene = json["scenes"][0];
+  for (const std::string factor : {"1", "2", "4", "8"}) {
+    ASSERT_TRUE(scene["resolutions"].contains(factor)) << factor;
+    const double iou = scene["resolutions"][factor]["mean_iou"].get<double>();
+    EXPECT_GE(iou, 0.0);
+    EXPECT_LE(iou, 1.0);
+  }
+  double share_sum = 0.0;
+  for (const auto& [phase, share] : scene["phases"]["share"].items()) {
+    EXPECT_GE(share.get<double>(), 0.0) << phase;
+    share_sum += share.get<double>();
+  }
+  EXPECT_NEAR(share_sum, 1.0, 1e-9);
+}
+
+}  // namespace

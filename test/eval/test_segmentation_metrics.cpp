@@ -1,0 +1,240 @@
+// Segmentation metrics on hand-drawn label grids whose answers can be counted by eye.
+// Grids are written one string per row: a digit is a label, '.' is label 0; in a mask, 'x'
+// marks a pixel whose ground-truth point is NaN.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "floodplane/eval/segmentation_metrics.h"
+
+namespace {
+
+using floodplane::eval::defaultMinPoints;
+using floodplane::eval::evaluateSegmentation;
+using floodplane::eval::HooverClass;
+using floodplane::eval::MetricsOptions;
+using floodplane::eval::SegmentationScores;
+
+std::vector<std::uint32_t> grid(const std::vector<std::string>& rows) {
+  std::vector<std::uint32_t> labels;
+  for (const std::string& row : rows) {
+    for (const char c : row) {
+      labels.push_back(c == '.' ? 0u : static_cast<std::uint32_t>(c - '0'));
+    }
+  }
+  return labels;
+}
+
+std::vector<std::uint8_t> mask(const std::vector<std::string>& rows) {
+  std::vector<std::uint8_t> valid;
+  for (const std::string& row : rows) {
+    for (const char c : row) {
+      valid.push_back(c == 'x' ? 0 : 1);
+    }
+  }
+  return valid;
+}
+
+std::vector<std::uint8_t> allValid(std::size_t size) { return std::vector<std::uint8_t>(size, 1); }
+
+// Small grids need a small size rule; 1 keeps every region.
+MetricsOptions keepAll() {
+  MetricsOptions options;
+  options.min_points = 1;
+  return options;
+}
+
+SegmentationScores score(const std::vector<std::string>& gt, const std::vector<std::string>& pred,
+                         const MetricsOptions& options = keepAll()) {
+  const auto g = grid(gt);
+  return evaluateSegmentation(g, grid(pred), allValid(g.size()), options);
+}
+
+void expectCounts(const SegmentationScores& s, std::size_t correct, std::size_t over,
+                  std::size_t under, std::size_t missed, std::size_t noise) {
+  EXPECT_EQ(s.hoover.correct, correct);
+  EXPECT_EQ(s.hoover.over, over);
+  EXPECT_EQ(s.hoover.under, under);
+  EXPECT_EQ(s.hoover.missed, missed);
+  EXPECT_EQ(s.hoover.noise, noise);
+}
+
+TEST(SegmentationMetrics, IdenticalSegmentationsUnderOtherLabelNumbersAreAllCorrect) {
+  const auto s = score({"1111122222", "1111122222"}, {"7777733333", "7777733333"});
+  expectCounts(s, 2, 0, 0, 0, 0);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 1.0);
+  EXPECT_DOUBLE_EQ(s.weighted_iou, 1.0);
+  ASSERT_EQ(s.planes.size(), 2u);
+  EXPECT_EQ(s.planes[0].best_segment, 7u);
+  EXPECT_EQ(s.planes[1].best_segment, 3u);
+  EXPECT_EQ(s.planes[0].hoover, HooverClass::correct);
+}
+
+TEST(SegmentationMetrics, SegmentCoveringEightyPercentBothWaysIsACorrectDetection) {
+  // g: 10 pixels; p: 9 of them plus 2 outside, |p| = 11. O = 9 >= 0.8 * 10 and >= 0.8 * 11.
+  const auto t = score({"1111111111..", "............"}, {".22222222222", "............"});
+  expectCounts(t, 1, 0, 0, 0, 0);
+  EXPECT_DOUBLE_EQ(t.mean_iou, 9.0 / 12.0);
+}
+
+TEST(SegmentationMetrics, SegmentCoveringTooLittleOfThePlaneIsMissedAndNoise) {
+  // O = 7 < 0.8 * 10: not correct; one segment alone cannot over-segment.
+  const auto s = score({"1111111111"}, {"2222222..."});
+  expectCounts(s, 0, 0, 0, 1, 1);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 0.7);
+  EXPECT_EQ(s.planes[0].hoover, HooverClass::missed);
+}
+
+TEST(SegmentationMetrics, SegmentSpillingTooFarBeyondThePlaneIsNotCorrect) {
+  // O = 10 = |g| but |p| = 14: 10 < 0.8 * 14 = 11.2.
+  const auto s = score({"1111111111...."}, {"22222222222222"});
+  expectCounts(s, 0, 0, 0, 1, 1);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 10.0 / 14.0);
+}
+
+TEST(SegmentationMetrics, PlaneSplitIntoTwoSegmentsIsOneOverSegmentation) {
+  const auto s = score({"1111111111"}, {"2222233333"});
+  expectCounts(s, 0, 1, 0, 0, 0);
+  EXPECT_EQ(s.planes[0].hoover, HooverClass::over_segmented);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 0.5);
+}
+
+TEST(SegmentationMetrics, SplitCoveringTooLittleOfThePlaneIsNoOverSegmentation) {
+  // Parts of 4 + 3 = 7 < 0.8 * 10.
+  const auto s = score({"1111111111"}, {"2222333..."});
+  expectCounts(s, 0, 0, 0, 1, 2);
+}
+
+TEST(SegmentationMetrics, TwoPlanesInOneSegmentAreOneUnderSegmentation) {
+  const auto s = score({"1111122222"}, {"3333333333"});
+  expectCounts(s, 0, 0, 1, 0, 0);
+  EXPECT_EQ(s.planes[0].hoover, HooverClass::under_segmented);
+  EXPECT_EQ(s.planes[1].hoover, HooverClass::under_segmented);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 0.5);
+}
+
+TEST(SegmentationMetrics, UnderSegmentationNeedsTheSegmentMostlyOnThePlanes) {
+  // Planes 3 + 3 = 6 pixels inside a 10-pixel segment: 6 < 0.8 * 10.
+  const auto s = score({"111222...."}, {"3333333333"});
+  expectCounts(s, 0, 0, 0, 2, 1);
+}
+
+TEST(SegmentationMetrics, PlaneWithNoSegmentIsMissedWithIouZero) {
+  const auto s = score({"1111122222"}, {"33333....."});
+  expectCounts(s, 1, 0, 0, 1, 0);
+  EXPECT_DOUBLE_EQ(s.planes[1].iou, 0.0);
+  EXPECT_EQ(s.planes[1].best_segment, 0u);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 0.5);
+}
+
+TEST(SegmentationMetrics, SegmentOffEveryPlaneIsNoise) {
+  const auto s = score({"11111....."}, {"22222.3333"});
+  expectCounts(s, 1, 0, 0, 0, 1);
+  EXPECT_EQ(s.predicted_segments, 2u);
+}
+
+TEST(SegmentationMetrics, CorrectDetectionsAreAssignedBeforeOverSegmentation) {
+  // Segments 2 (9 px) and 3 (1 px) would also over-segment plane 1; the correct pair wins
+  // and segment 3 is left as noise.
+  const auto s = score({"1111111111"}, {"2222222223"});
+  expectCounts(s, 1, 0, 0, 0, 1);
+}
+
+TEST(SegmentationMetrics, CorrectDetectionsAreAssignedBeforeUnderSegmentation) {
+  // Planes 1 (9 px) and 2 (1 px) would also be under-segmented by segment 3; the correct
+  // pair wins and plane 2 is missed.
+  const auto s = score({"1111111112"}, {"3333333333"});
+  expectCounts(s, 1, 0, 0, 1, 0);
+}
+
+TEST(SegmentationMetrics, PixelsWithoutGroundTruthPointAreIgnored) {
+  // The segment spills over 5 pixels that have no ground-truth point, and plane 2 exists
+  // only there: with the mask, plane 1 is matched exactly and plane 2 is not a plane.
+  const auto gt = grid({"111111111122222"});
+  const auto pred = grid({"444444444444444"});
+  const auto valid = mask({"..........xxxxx"});
+  const auto s = evaluateSegmentation(gt, pred, valid, keepAll());
+  expectCounts(s, 1, 0, 0, 0, 0);
+  EXPECT_EQ(s.planes.size(), 1u);
+  EXPECT_EQ(s.planes[0].pixels, 10u);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 1.0);
+
+  // Without the mask the same labels are an under-segmentation: planes of 10 and 5 pixels
+  // lie inside the 15-pixel segment and cover all of it.
+  const auto unmasked = evaluateSegmentation(gt, pred, allValid(gt.size()), keepAll());
+  expectCounts(unmasked, 0, 0, 1, 0, 0);
+}
+
+TEST(SegmentationMetrics, RegionsBelowTheMinimumSizeAreIgnored) {
+  MetricsOptions options;
+  options.min_points = 5;
+  // Plane 2 (3 px) is too small: not averaged, not missed. Segment 5 (4 px) is too small:
+  // not noise, and not the best match of plane 1 although its IoU (4/10) beats segment 6's.
+  const auto s = score({"1111111111222.."}, {"5555...666..666"}, options);
+  ASSERT_EQ(s.planes.size(), 1u);
+  EXPECT_EQ(s.planes[0].label, 1u);
+  EXPECT_EQ(s.predicted_segments, 1u);
+  EXPECT_EQ(s.planes[0].best_segment, 6u);
+  EXPECT_DOUBLE_EQ(s.mean_iou, 3.0 / 13.0);
+  expectCounts(s, 0, 0, 0, 1, 1);
+}
+
+TEST(SegmentationMetrics, MinimumSizeCountsOnlyValidPixels) {
+  MetricsOptions options;
+  options.min_points = 5;
+  // Plane 1 has 6 pixels, but 2 have no point: 4 < 5, so no plane is kept.
+  const auto gt = grid({"111111...."});
+  const auto s = evaluateSegmentation(gt, grid({"2222222222"}), mask({"xx........"}), options);
+  EXPECT_TRUE(s.planes.empty());
+  EXPECT_TRUE(std::isnan(s.mean_iou));
+  EXPECT_TRUE(std::isnan(s.weighted_iou));
+  expectCounts(s, 0, 0, 0, 0, 1);
+}
+
+TEST(SegmentationMetrics, WeightedIouWeighsPlanesByTheirSize) {
+  // Plane 1 (30 px) found exactly, plane 2 (10 px) not at all.
+  const auto s = score({"111111111111111111111111111111", "2222222222...................."},
+                       {"333333333333333333333333333333", ".............................."});
+  EXPECT_DOUBLE_EQ(s.mean_iou, 0.5);
+  EXPECT_DOUBLE_EQ(s.weighted_iou, 0.75);
+}
+
+TEST(SegmentationMetrics, IouTakesTheBestOfSeveralOverlappingSegments) {
+  // Segment 2: 3/10; segment 3: 6 / (10 + 8 - 6) = 0.5.
+  const auto s = score({"1111111111......"}, {"2223333336666.33"});
+  EXPECT_EQ(s.planes[0].best_segment, 3u);
+  EXPECT_DOUBLE_EQ(s.planes[0].iou, 0.5);
+}
+
+TEST(SegmentationMetrics, ToleranceOutsideHooversRangeIsRejected) {
+  const auto g = grid({"11"});
+  MetricsOptions options = keepAll();
+  options.tolerance = 0.5;
+  EXPECT_THROW(evaluateSegmentation(g, g, allValid(2), options), std::invalid_argument);
+  options.tolerance = 1.01;
+  EXPECT_THROW(evaluateSegmentation(g, g, allValid(2), options), std::invalid_argument);
+  options.tolerance = 1.0;
+  EXPECT_NO_THROW(evaluateSegmentation(g, g, allValid(2), options));
+}
+
+TEST(SegmentationMetrics, GridsOfDifferentSizesAreRejected) {
+  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"111"}), allValid(2)),
+               std::invalid_argument);
+  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"11"}), allValid(3)),
+               std::invalid_argument);
+}
+
+TEST(SegmentationMetrics, DefaultMinimumSizeScalesWithThePixelCount) {
+  EXPECT_EQ(defaultMinPoints(640, 480), 500u);
+  EXPECT_EQ(defaultMinPoints(320, 240), 125u);
+  EXPECT_EQ(defaultMinPoints(160, 120), 31u);  // 31.25
+  EXPECT_EQ(defaultMinPoints(80, 60), 8u);     // 7.8125
+  EXPECT_EQ(defaultMinPoints(1280, 960), 2000u);
+}
+
+}  // namespace
