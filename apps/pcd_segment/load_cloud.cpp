@@ -4,6 +4,7 @@
 #include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -11,8 +12,10 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 namespace pcd_segment {
 namespace {
@@ -58,6 +61,57 @@ void checkBodySize(const std::string& path, std::uintmax_t file_size, int data_t
   }
 }
 
+// PCL's readHeader allocates (and zero-fills) the whole point buffer the header announces
+// before reading a byte of data, so a corrupt WIDTH or POINTS line can ask for terabytes
+// (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the machine.
+// This reads the header's sizes itself and refuses a body that the file cannot hold; it only
+// rejects, and leaves every other judgement of the header to PCL.
+void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::uint64_t point_step = 0;
+  std::uint64_t points = 0;
+  std::vector<std::uint64_t> sizes;
+  std::vector<std::uint64_t> counts;
+  std::size_t field_count = 0;
+  // A header is a few hundred bytes; 64 KiB without DATA is not a header.
+  while (in.tellg() < 65536 && std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    std::uint64_t value = 0;
+    if (key == "FIELDS") {
+      std::string name;
+      while (words >> name) ++field_count;
+    } else if (key == "SIZE") {
+      while (words >> value) sizes.push_back(value);
+    } else if (key == "COUNT") {
+      while (words >> value) counts.push_back(value);
+    } else if (key == "POINTS") {
+      words >> points;
+    } else if (key == "DATA") {
+      std::string type;
+      words >> type;
+      if (sizes.size() != field_count || points == 0) return;  // PCL will say what is wrong
+      counts.resize(field_count, 1);
+      for (std::size_t i = 0; i < field_count; ++i) point_step += std::min<std::uint64_t>(sizes[i], 8) * counts[i];
+      const std::streamoff header_end = in.tellg();
+      if (header_end < 0) return;
+      const std::uint64_t body = file_size - static_cast<std::uint64_t>(header_end);
+      // ASCII needs at least two characters (digit and separator) per value; LZF packs at
+      // most about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
+      const std::uint64_t per_point_bound = type == "ascii" ? 2 * field_count : point_step;
+      const std::uint64_t factor = type == "binary_compressed" ? 100 : 1;
+      if (points > std::numeric_limits<std::uint64_t>::max() / 1024 ||
+          points * per_point_bound > body * factor) {
+        fail("corrupt or truncated PCD file: the header announces " + std::to_string(points) +
+             " points, the file's " + std::to_string(body) + " bytes of data cannot hold them");
+      }
+      return;
+    }
+  }
+}
+
 const pcl::PCLPointField* findField(const pcl::PCLPointCloud2& cloud, const std::string& name) {
   for (const auto& field : cloud.fields) {
     if (field.name == name) return &field;
@@ -84,6 +138,8 @@ LoadedCloud loadOrganizedCloud(const std::string& path) {
   const std::uintmax_t file_size = fs::file_size(path, error);
   if (error) fail("cannot read file: " + error.message());
   if (file_size == 0) fail("empty file, not a PCD file");
+
+  checkAnnouncedSize(path, file_size);
 
   pcl::PCDReader reader;
   pcl::PCLPointCloud2 cloud;

@@ -21,10 +21,10 @@
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "floodplane/io/atomic_file.h"
 #include "floodplane/io/label_palette.h"
-#include "floodplane/io/pcd_file.h"
 #include "floodplane/io/png_file.h"
 #include "floodplane/version.h"
 #include "inputs.h"
+#include "label_pcd.h"
 #include "load_cloud.h"
 #include "planes_json.h"
 #include "progress.h"
@@ -82,12 +82,10 @@ FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths&
     throw std::runtime_error("the segmentation returned no labels");
   }
 
-  const auto encoding =
-      options.ascii ? floodplane::io::PcdEncoding::ascii : floodplane::io::PcdEncoding::binary_compressed;
   if (cloud.has_color) {
-    floodplane::io::savePcd(paths.pcd, labelledCloud<pcl::PointXYZRGBL>(cloud.xyzrgb, *labels), encoding);
+    pcd_segment::writeLabelPcd(paths.pcd, labelledCloud<pcl::PointXYZRGBL>(cloud.xyzrgb, *labels), options.ascii);
   } else {
-    floodplane::io::savePcd(paths.pcd, labelledCloud<pcl::PointXYZL>(cloud.xyz, *labels), encoding);
+    pcd_segment::writeLabelPcd(paths.pcd, labelledCloud<pcl::PointXYZL>(cloud.xyz, *labels), options.ascii);
   }
   if (options.png) {
     std::vector<std::uint32_t> grid(labels->size());
