@@ -5,6 +5,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -138,6 +139,8 @@ LoadedCloud loadOrganizedCloud(const std::string& path) {
   const std::uintmax_t file_size = fs::file_size(path, error);
   if (error) fail("cannot read file: " + error.message());
   if (file_size == 0) fail("empty file, not a PCD file");
+  // PCL's reader says "cannot read header" for a file it cannot open; say why instead.
+  if (!std::ifstream(path, std::ios::binary)) fail(std::string("cannot open file: ") + std::strerror(errno));
 
   checkAnnouncedSize(path, file_size);
 

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <stdexcept>
@@ -225,7 +226,7 @@ int main(int argc, char** argv) {
       if (!options.quiet) {
         std::cout << fs::path(file.path).filename().string() << ": " << result.width << "x" << result.height
                   << ", " << result.planes << (result.planes == 1 ? " plane, " : " planes, ")
-                  << static_cast<long>(result.segmentation_ms + 0.5) << " ms -> " << paths.pcd << std::endl;
+                  << std::fixed << std::setprecision(1) << result.segmentation_ms << " ms -> " << paths.pcd << std::endl;
       }
     } catch (const std::exception& error) {
       progress.clear();

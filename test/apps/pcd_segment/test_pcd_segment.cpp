@@ -413,6 +413,22 @@ TEST_F(PcdSegment, DrawsNoProgressBarWhenStderrIsNotATerminal) {
   EXPECT_TRUE(result.err.empty()) << "progress output in a log: " << result.err;
 }
 
+TEST_F(PcdSegment, DrawsAProgressBarWhenStderrIsATerminal) {
+  // util-linux script(1) gives the program a pseudo-terminal and copies what it shows.
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) not installed";
+  std::string command = quote(PCD_SEGMENT_BINARY);
+  for (int i = 0; i < 4; ++i) command += " " + quote(writeScene("f" + std::to_string(i) + ".pcd"));
+  command += " -o " + quote(path("out").string());
+  const fs::path screen = path("screen.txt");
+  const std::string shell = "script -qec " + quote(command) + " /dev/null >" + quote(screen.string()) + " 2>&1";
+  ASSERT_EQ(std::system(("sh -c " + quote(shell)).c_str()), 0);
+  const std::string shown = readFile(screen);
+  EXPECT_TRUE(contains(shown, "] 0/4 files")) << shown;
+  EXPECT_TRUE(contains(shown, "] 3/4 files, about ")) << shown;
+  EXPECT_TRUE(contains(shown, " s left")) << shown;
+  EXPECT_TRUE(contains(shown, "f3.pcd: 160x120, 2 planes")) << shown;
+}
+
 TEST_F(PcdSegment, BatchGoesOnPastABadFileAndExitsWithOne) {
   const std::string first = writeScene("first.pcd");
   writeFile(path("bad.pcd"), "this is not a point cloud\n");
