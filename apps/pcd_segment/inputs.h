@@ -1,0 +1,43 @@
+#pragma once
+// Which files pcd_segment reads and where their outputs go. No PCL here: plain paths, so the
+// rules can be tested without running a segmentation.
+
+#include <string>
+#include <vector>
+
+namespace pcd_segment {
+
+/// One command-line input after expansion: a PCD file to read, or an input that could not be
+/// expanded (missing, or a directory without PCD files), kept so that it is reported in the
+/// order the user gave it.
+struct InputFile {
+  std::string path;
+  std::string error;  ///< empty for a file to read
+};
+
+/// Expands the command-line inputs: a file stays itself (whatever its extension: the reader
+/// decides whether it is a PCD file), a directory becomes its `*.pcd` files (not recursive),
+/// sorted by name so that batches run in a reproducible order.
+std::vector<InputFile> expandInputs(const std::vector<std::string>& arguments);
+
+/// The name outputs are derived from: the file name without its `.pcd` extension.
+std::string outputName(const std::string& input_path);
+
+/// The files written for one input.
+struct OutputPaths {
+  std::string pcd;
+  std::string png;
+  std::string json;
+};
+
+/// True when `output` names a PCD file rather than a directory (it ends in ".pcd").
+bool namesPcdFile(const std::string& output);
+
+/// The outputs for `input_path`. With `single_file` (one input and -o ending in .pcd) the PCD
+/// is `output` itself and the PNG and JSON sit next to it with the same stem (<stem>.png,
+/// <stem>.json); otherwise
+/// `output` is a directory receiving <name>.labels.pcd, <name>.labels.png, <name>.planes.json.
+OutputPaths outputPaths(const std::string& input_path, const std::string& output,
+                        bool single_file);
+
+}  // namespace pcd_segment

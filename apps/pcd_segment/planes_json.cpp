@@ -1,0 +1,89 @@
+#include "planes_json.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "floodplane/version.h"
+
+namespace pcd_segment {
+
+PixelBox pixelBox(const std::vector<int>& indices, std::size_t width) {
+  PixelBox box;
+  if (indices.empty()) return box;
+  box.min_column = box.min_row = std::numeric_limits<int>::max();
+  box.max_column = box.max_row = std::numeric_limits<int>::min();
+  for (const int index : indices) {
+    const int column = static_cast<int>(static_cast<std::size_t>(index) % width);
+    const int row = static_cast<int>(static_cast<std::size_t>(index) / width);
+    box.min_column = std::min(box.min_column, column);
+    box.max_column = std::max(box.max_column, column);
+    box.min_row = std::min(box.min_row, row);
+    box.max_row = std::max(box.max_row, row);
+  }
+  return box;
+}
+
+std::vector<PlaneRecord> planeRecords(
+    const std::vector<pcl::ModelCoefficients>& coefficients,
+    const std::vector<pcl::PlanarRegion<pcl::PointXYZ>,
+                      Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>& regions,
+    const std::vector<pcl::PointIndices>& inliers,
+    const std::vector<pcl::PointIndices>& boundaries, std::size_t width) {
+  const std::size_t count = coefficients.size();
+  if (regions.size() != count || inliers.size() != count || boundaries.size() != count) {
+    throw std::logic_error("planeRecords: the segmentation outputs disagree on the plane count");
+  }
+  std::vector<PlaneRecord> records(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    PlaneRecord& record = records[k];
+    record.id = static_cast<std::uint32_t>(k + 1);
+    const std::vector<float>& values = coefficients[k].values;
+    for (int i = 0; i < 3; ++i) record.normal[i] = values.at(i);
+    record.d = values.at(3);
+    const Eigen::Vector3f centroid = regions[k].getCentroid();
+    for (int i = 0; i < 3; ++i) record.centroid[i] = centroid[i];
+    record.inliers = inliers[k].indices.size();
+    record.boundary_box = pixelBox(boundaries[k].indices, width);
+  }
+  return records;
+}
+
+nlohmann::ordered_json reportJson(const Report& report) {
+  nlohmann::ordered_json planes = nlohmann::ordered_json::array();
+  for (const PlaneRecord& plane : report.planes) {
+    planes.push_back({
+        {"id", plane.id},
+        {"normal", {plane.normal[0], plane.normal[1], plane.normal[2]}},
+        {"d", plane.d},
+        {"centroid", {plane.centroid[0], plane.centroid[1], plane.centroid[2]}},
+        {"inliers", plane.inliers},
+        {"boundary_box",
+         {{"min_column", plane.boundary_box.min_column},
+          {"max_column", plane.boundary_box.max_column},
+          {"min_row", plane.boundary_box.min_row},
+          {"max_row", plane.boundary_box.max_row}}},
+    });
+  }
+  const floodplane::Params& p = report.params;
+  return {
+      {"input", report.input},
+      {"width", report.width},
+      {"height", report.height},
+      {"floodplane_version", FLOODPLANE_VERSION_STRING},
+      {"parameters",
+       {{"distance_threshold", p.distance_threshold},
+        {"seed_size", p.seed_size},
+        {"angular_threshold", p.angular_threshold},
+        {"merge_distance", p.merge_distance},
+        {"min_inliers", p.min_inliers},
+        {"subsampling", p.subsampling},
+        {"maximum_curvature", p.maximum_curvature},
+        {"depth_noise_coefficient", p.depth_noise_coefficient}}},
+      {"segmentation_ms", report.segmentation_ms},
+      {"plane_count", report.planes.size()},
+      {"planes", planes},
+  };
+}
+
+}  // namespace pcd_segment

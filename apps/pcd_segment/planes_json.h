@@ -1,0 +1,63 @@
+#pragma once
+// The <name>.planes.json report: the planes found, the parameters used and the time taken.
+
+#include <pcl/ModelCoefficients.h>
+#include <pcl/PointIndices.h>
+#include <pcl/point_types.h>
+#include <pcl/segmentation/planar_region.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "floodplane/params.h"
+
+namespace pcd_segment {
+
+/// Pixel bounding box, inclusive, of an image region: columns and rows of an organized cloud.
+struct PixelBox {
+  int min_column = 0;
+  int max_column = -1;
+  int min_row = 0;
+  int max_row = -1;
+};
+
+/// The box around the pixels `indices` (row-major indices into a grid `width` wide); an
+/// empty box (max < min) for no indices.
+PixelBox pixelBox(const std::vector<int>& indices, std::size_t width);
+
+/// What the report says about one plane.
+struct PlaneRecord {
+  std::uint32_t id = 0;   ///< its label: 1 for the largest plane
+  float normal[3] = {0, 0, 0};  ///< unit, towards the sensor
+  float d = 0;            ///< n . p + d = 0
+  float centroid[3] = {0, 0, 0};
+  std::size_t inliers = 0;
+  PixelBox boundary_box;  ///< of the plane's outer boundary, which encloses all its inliers
+};
+
+/// One record per plane from the outputs of FloodFillPlaneSegmentation::segmentAndRefine
+/// (all vectors indexed by plane k-1 for label k).
+std::vector<PlaneRecord> planeRecords(
+    const std::vector<pcl::ModelCoefficients>& coefficients,
+    const std::vector<pcl::PlanarRegion<pcl::PointXYZ>,
+                      Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>& regions,
+    const std::vector<pcl::PointIndices>& inliers,
+    const std::vector<pcl::PointIndices>& boundaries, std::size_t width);
+
+/// Everything a report holds about one segmented file.
+struct Report {
+  std::string input;  ///< the input file as given
+  std::size_t width = 0;
+  std::size_t height = 0;
+  floodplane::Params params;
+  double segmentation_ms = 0.0;  ///< segmentAndRefine alone, not reading or writing
+  std::vector<PlaneRecord> planes;
+};
+
+/// The report, keys in reading order (input, size, parameters, time, planes).
+nlohmann::ordered_json reportJson(const Report& report);
+
+}  // namespace pcd_segment

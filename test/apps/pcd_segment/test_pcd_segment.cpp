@@ -1,0 +1,700 @@
+// Runs the pcd_segment binary on clouds written at run time and checks what it writes and
+// says: its labels against the library's on the same cloud, its JSON against its PCD, and
+// one clear error line and exit code for every kind of bad input.
+
+#include <gtest/gtest.h>
+#include <pcl/console/print.h>
+#include <pcl/io/pcd_io.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "floodplane/flood_fill_plane_segmentation.h"
+#include "floodplane/params.h"
+#include "floodplane/version.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void writeFile(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string quote(const std::string& word) {
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::size_t lineCount(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// A 160x120 pinhole view (a Kinect's f = 525 scaled to the grid) of a wall at z = 2 m and a
+// floor at y = 0.5 m that meet at row 92: two planes of known extent, a few NaN holes.
+Cloud twoPlaneScene() {
+  constexpr int kWidth = 160;
+  constexpr int kHeight = 120;
+  constexpr double kFocal = 525.0 / 4.0;
+  Cloud cloud(kWidth, kHeight);
+  for (int v = 0; v < kHeight; ++v) {
+    for (int u = 0; u < kWidth; ++u) {
+      const double rx = (u - (kWidth - 1) / 2.0) / kFocal;
+      const double ry = (v - (kHeight - 1) / 2.0) / kFocal;
+      double t = 2.0;                           // the wall, z = 2
+      if (ry > 0.0) t = std::min(t, 0.5 / ry);  // the floor, y = 0.5, when nearer
+      pcl::PointXYZ& p = cloud.at(u, v);
+      p.x = static_cast<float>(t * rx);
+      p.y = static_cast<float>(t * ry);
+      p.z = static_cast<float>(t);
+    }
+  }
+  // Sensor-style holes: no return for a small block.
+  for (int v = 10; v < 14; ++v)
+    for (int u = 20; u < 24; ++u) cloud.at(u, v).x = cloud.at(u, v).y = cloud.at(u, v).z = std::numeric_limits<float>::quiet_NaN();
+  cloud.is_dense = false;
+  return cloud;
+}
+
+// What the library says about `cloud` with `params`: the reference for the app's labels.
+std::vector<std::uint32_t> libraryLabels(const Cloud& cloud, const floodplane::Params& params = {}) {
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation(params);
+  segmentation.setInputCloud(std::make_shared<Cloud>(cloud));
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
+  pcl::PointCloud<pcl::Label>::Ptr labels;
+  segmentation.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  std::vector<std::uint32_t> out;
+  for (const auto& l : *labels) out.push_back(l.label);
+  return out;
+}
+
+std::vector<std::uint32_t> labelsOf(const pcl::PointCloud<pcl::PointXYZL>& cloud) {
+  std::vector<std::uint32_t> out;
+  for (const auto& p : cloud) out.push_back(p.label);
+  return out;
+}
+
+bool sameXyz(const pcl::PointXYZ& a, const pcl::PointXYZL& b) {
+  if (!std::isfinite(a.x)) return !std::isfinite(b.x);
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+class PcdSegment : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    std::string pattern = (fs::temp_directory_path() / "pcd_segment_test.XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  // Runs pcd_segment with `arguments`; `prefix` is shell text put before the command
+  // (resource limits).
+  Result run(const std::vector<std::string>& arguments, const std::string& prefix = "") const {
+    std::string command = quote(PCD_SEGMENT_BINARY);
+    for (const std::string& argument : arguments) command += " " + quote(argument);
+    const fs::path out = dir_ / ".stdout";
+    const fs::path err = dir_ / ".stderr";
+    command = prefix + "exec " + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    const int status = std::system(("sh -c " + quote(command)).c_str());
+    Result result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = readFile(out);
+    result.err = readFile(err);
+    fs::remove(out);
+    fs::remove(err);
+    return result;
+  }
+
+  std::string writeScene(const std::string& name, const Cloud& cloud = twoPlaneScene()) const {
+    const std::string file = path(name).string();
+    EXPECT_EQ(pcl::io::savePCDFileBinary(file, cloud), 0);
+    return file;
+  }
+
+  // Checks the one-line error and exit code of a bad input, and that nothing was written.
+  void expectRejected(const std::string& input, const std::string& reason) const {
+    const Result result = run({input, "-o", path("out").string(), "--png", "--json"});
+    EXPECT_EQ(result.exit_code, 1) << result.err;
+    EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+    EXPECT_TRUE(contains(result.err, input)) << result.err;
+    EXPECT_TRUE(contains(result.err, reason)) << "expected '" << reason << "' in: " << result.err;
+    EXPECT_TRUE(result.out.empty()) << result.out;
+    EXPECT_TRUE(fs::is_empty(path("out"))) << "a rejected input must leave no output";
+  }
+
+  fs::path dir_;
+};
+
+// ---- the good path ------------------------------------------------------------------------
+
+TEST_F(PcdSegment, WritesTheLibrarysLabelsInTheInputsGrid) {
+  const Cloud scene = twoPlaneScene();
+  const std::string input = writeScene("scene.pcd", scene);
+  const Result result = run({input, "-o", path("result.pcd").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("result.pcd").string(), labelled), 0);
+  ASSERT_EQ(labelled.width, scene.width);
+  ASSERT_EQ(labelled.height, scene.height);
+  for (std::size_t i = 0; i < scene.size(); ++i) ASSERT_TRUE(sameXyz(scene[i], labelled[i])) << "point " << i;
+  const std::vector<std::uint32_t> expected = libraryLabels(scene);
+  EXPECT_EQ(labelsOf(labelled), expected);
+  // The scene has a wall and a floor; fewer would mean the comparison above proved little.
+  const std::uint32_t planes = *std::max_element(expected.begin(), expected.end());
+  EXPECT_EQ(planes, 2u);
+  EXPECT_TRUE(contains(result.out, "scene.pcd: 160x120, 2 planes, ")) << result.out;
+  EXPECT_EQ(lineCount(result.out), 1u);
+  // Binary compressed unless --ascii is given.
+  EXPECT_TRUE(contains(readFile(path("result.pcd")), "DATA binary_compressed\n"));
+}
+
+TEST_F(PcdSegment, KeepsTheSensorPoseAndSegmentsInIt) {
+  Cloud scene = twoPlaneScene();
+  scene.sensor_origin_ = Eigen::Vector4f(0.5f, -1.0f, 2.0f, 0.0f);
+  scene.sensor_orientation_ = Eigen::Quaternionf(Eigen::AngleAxisf(0.3f, Eigen::Vector3f(0, 1, 0)));
+  const std::string input = writeScene("posed.pcd", scene);
+  ASSERT_EQ(run({input, "-o", path("out").string()}).exit_code, 0);
+
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/posed.labels.pcd").string(), labelled), 0);
+  EXPECT_TRUE(labelled.sensor_origin_.isApprox(scene.sensor_origin_));
+  EXPECT_TRUE(labelled.sensor_orientation_.isApprox(scene.sensor_orientation_));
+  EXPECT_EQ(labelsOf(labelled), libraryLabels(scene));
+}
+
+TEST_F(PcdSegment, PassesEveryParameterToTheLibrary) {
+  const Cloud scene = twoPlaneScene();
+  const std::string input = writeScene("scene.pcd", scene);
+  floodplane::Params params;
+  params.distance_threshold = 0.02;
+  params.seed_size = 0.1;
+  params.angular_threshold = 0.2;
+  params.merge_distance = 0.05;
+  params.min_inliers = 5000;  // drops the floor (about 4300 points): the labels must change
+  params.subsampling = 2;
+  params.depth_noise_coefficient = 0.0;
+  const Result result = run({input, "-o", path("out").string(), "--json", "--distance-threshold", "0.02",
+                             "--seed-size", "0.1", "--angular-threshold", "0.2", "--merge-distance", "0.05",
+                             "--min-inliers", "5000", "--subsample", "2", "--depth-noise-coefficient", "0"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/scene.labels.pcd").string(), labelled), 0);
+  const std::vector<std::uint32_t> expected = libraryLabels(scene, params);
+  EXPECT_EQ(labelsOf(labelled), expected);
+  EXPECT_NE(expected, libraryLabels(scene)) << "these parameters should change the result";
+
+  const auto json = nlohmann::json::parse(readFile(path("out/scene.planes.json")));
+  const auto& used = json.at("parameters");
+  EXPECT_EQ(used.at("distance_threshold"), 0.02);
+  EXPECT_EQ(used.at("seed_size"), 0.1);
+  EXPECT_EQ(used.at("angular_threshold"), 0.2);
+  EXPECT_EQ(used.at("merge_distance"), 0.05);
+  EXPECT_EQ(used.at("min_inliers"), 5000);
+  EXPECT_EQ(used.at("subsampling"), 2);
+  EXPECT_EQ(used.at("depth_noise_coefficient"), 0.0);
+}
+
+TEST_F(PcdSegment, JsonAgreesWithThePcdAndPngSitsNextToIt) {
+  const std::string input = writeScene("scene.pcd", twoPlaneScene());
+  const Result result = run({input, "-o", path("res/labels.pcd").string(), "--png", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("res/labels.pcd").string(), labelled), 0);
+  std::map<std::uint32_t, std::size_t> count;
+  std::map<std::uint32_t, std::array<int, 4>> box;  // min column, max column, min row, max row
+  for (int v = 0; v < static_cast<int>(labelled.height); ++v) {
+    for (int u = 0; u < static_cast<int>(labelled.width); ++u) {
+      const std::uint32_t label = labelled.at(u, v).label;
+      if (label == 0) continue;
+      auto [it, fresh] = box.try_emplace(label, std::array<int, 4>{u, u, v, v});
+      auto& b = it->second;
+      b = {std::min(b[0], u), std::max(b[1], u), std::min(b[2], v), std::max(b[3], v)};
+      ++count[label];
+      (void)fresh;
+    }
+  }
+
+  // Single-file mode: <stem>.png and <stem>.json next to the PCD.
+  const auto json = nlohmann::json::parse(readFile(path("res/labels.json")));
+  ASSERT_EQ(json.at("planes").size(), count.size());
+  ASSERT_EQ(count.size(), 2u);
+  EXPECT_EQ(json.at("plane_count"), count.size());
+  EXPECT_EQ(json.at("width"), 160);
+  EXPECT_EQ(json.at("height"), 120);
+  EXPECT_GE(json.at("segmentation_ms").get<double>(), 0.0);
+  std::size_t previous_inliers = std::numeric_limits<std::size_t>::max();
+  for (const auto& plane : json.at("planes")) {
+    const std::uint32_t id = plane.at("id");
+    ASSERT_EQ(count.count(id), 1u) << "plane " << id << " has no labelled points";
+    EXPECT_EQ(plane.at("inliers").get<std::size_t>(), count[id]);
+    EXPECT_LE(count[id], previous_inliers) << "labels are numbered by size, largest first";
+    previous_inliers = count[id];
+    const auto& n = plane.at("normal");
+    EXPECT_NEAR(std::hypot(n[0].get<double>(), n[1].get<double>(), n[2].get<double>()), 1.0, 1e-5);
+    // The centroid lies on the plane it describes.
+    const auto& c = plane.at("centroid");
+    EXPECT_NEAR(n[0].get<double>() * c[0].get<double>() + n[1].get<double>() * c[1].get<double>() +
+                    n[2].get<double>() * c[2].get<double>() + plane.at("d").get<double>(),
+                0.0, 1e-4);
+    // Each plane here is one connected region, so its outer boundary spans all its pixels.
+    const auto& b = plane.at("boundary_box");
+    EXPECT_EQ(b.at("min_column"), box[id][0]);
+    EXPECT_EQ(b.at("max_column"), box[id][1]);
+    EXPECT_EQ(b.at("min_row"), box[id][2]);
+    EXPECT_EQ(b.at("max_row"), box[id][3]);
+  }
+  // The wall (z = 2, normal towards the camera) is the larger plane.
+  EXPECT_NEAR(json["planes"][0]["normal"][2].get<double>(), -1.0, 1e-3);
+  EXPECT_NEAR(json["planes"][0]["d"].get<double>(), 2.0, 1e-3);
+
+  const std::string png = readFile(path("res/labels.png"));
+  ASSERT_GE(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  // IHDR: big-endian width and height at bytes 16 and 20.
+  const auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(png[at])) << 24) | (std::uint32_t(std::uint8_t(png[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(png[at + 2])) << 8) | std::uint32_t(std::uint8_t(png[at + 3]));
+  };
+  EXPECT_EQ(be32(16), 160u);
+  EXPECT_EQ(be32(20), 120u);
+}
+
+TEST_F(PcdSegment, KeepsColourWhenTheInputHasIt) {
+  const Cloud scene = twoPlaneScene();
+  pcl::PointCloud<pcl::PointXYZRGB> coloured;
+  pcl::copyPointCloud(scene, coloured);
+  for (std::size_t i = 0; i < coloured.size(); ++i) {
+    coloured[i].r = static_cast<std::uint8_t>(i);
+    coloured[i].g = static_cast<std::uint8_t>(i / 7);
+    coloured[i].b = static_cast<std::uint8_t>(255 - i % 200);
+  }
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path("rgb.pcd").string(), coloured), 0);
+  const Result result = run({path("rgb.pcd").string(), "-o", path("out").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+
+  pcl::PCLPointCloud2 blob;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/rgb.labels.pcd").string(), blob), 0);
+  const bool has_colour = std::any_of(blob.fields.begin(), blob.fields.end(),
+                                      [](const auto& f) { return f.name == "rgb" || f.name == "rgba"; });
+  EXPECT_TRUE(has_colour);
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/rgb.labels.pcd").string(), labelled), 0);
+  ASSERT_EQ(labelled.size(), coloured.size());
+  std::vector<std::uint32_t> labels;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    ASSERT_EQ(labelled[i].r, coloured[i].r) << i;
+    ASSERT_EQ(labelled[i].g, coloured[i].g) << i;
+    ASSERT_EQ(labelled[i].b, coloured[i].b) << i;
+    labels.push_back(labelled[i].label);
+  }
+  EXPECT_EQ(labels, libraryLabels(scene));
+}
+
+TEST_F(PcdSegment, WritesNoColourFieldWhenTheInputHasNone) {
+  const std::string input = writeScene("plain.pcd");
+  ASSERT_EQ(run({input, "-o", path("out").string()}).exit_code, 0);
+  pcl::PCLPointCloud2 blob;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/plain.labels.pcd").string(), blob), 0);
+  std::string names;
+  for (const auto& field : blob.fields) names += field.name + " ";
+  EXPECT_EQ(names, "x y z label ");
+}
+
+TEST_F(PcdSegment, AcceptsCloudsWithOtherFields) {
+  // Normals, curvature and intensity besides x y z: only x y z matter.
+  const Cloud scene = twoPlaneScene();
+  pcl::PointCloud<pcl::PointXYZINormal> rich;
+  pcl::copyPointCloud(scene, rich);
+  for (auto& p : rich) p.intensity = 7.0f;
+  ASSERT_EQ(pcl::io::savePCDFileBinaryCompressed(path("rich.pcd").string(), rich), 0);
+  const Result result = run({path("rich.pcd").string(), "-o", path("out").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/rich.labels.pcd").string(), labelled), 0);
+  EXPECT_EQ(labelsOf(labelled), libraryLabels(scene));
+}
+
+TEST_F(PcdSegment, ReadsDoublePrecisionCoordinates) {
+  // Hand-written: PCL's point types have float coordinates. 4x3 grid, too small for planes.
+  std::string text = "VERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 3\n"
+                     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 12\nDATA ascii\n";
+  for (int i = 0; i < 12; ++i) text += std::to_string(0.25 * i) + " 0.5 1.5\n";
+  writeFile(path("double.pcd"), text);
+  const Result result = run({path("double.pcd").string(), "-o", path("out.pcd").string(), "--ascii"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out.pcd").string(), labelled), 0);
+  ASSERT_EQ(labelled.size(), 12u);
+  EXPECT_FLOAT_EQ(labelled[5].x, 1.25f);
+  EXPECT_FLOAT_EQ(labelled[5].z, 1.5f);
+}
+
+TEST_F(PcdSegment, AsciiOptionWritesTextThatReadsBackTheSame) {
+  const Cloud scene = twoPlaneScene();
+  const std::string input = writeScene("scene.pcd", scene);
+  const Result result = run({input, "-o", path("out").string(), "--ascii"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string text = readFile(path("out/scene.labels.pcd"));
+  EXPECT_TRUE(contains(text, "\nDATA ascii\n"));
+  EXPECT_TRUE(std::all_of(text.begin(), text.end(), [](char c) { return c == '\n' || (c >= 32 && c < 127); }))
+      << "ASCII output holds a non-printable byte";
+  EXPECT_EQ(lineCount(text), 11u + scene.size()) << "11 header lines and one line per point";
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/scene.labels.pcd").string(), labelled), 0);
+  EXPECT_EQ(labelled.width, scene.width);
+  EXPECT_EQ(labelled.height, scene.height);
+  for (std::size_t i = 0; i < scene.size(); ++i) ASSERT_TRUE(sameXyz(scene[i], labelled[i])) << "point " << i;
+  EXPECT_EQ(labelsOf(labelled), libraryLabels(scene));
+}
+
+TEST_F(PcdSegment, ProcessesADirectorysPcdFilesInSortedOrder) {
+  fs::create_directory(path("in"));
+  for (const char* name : {"c.pcd", "a.pcd", "b.pcd"}) writeScene(std::string("in/") + name);
+  writeFile(path("in/notes.txt"), "not a cloud");
+  const Result result = run({path("in").string(), "-o", path("out").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::size_t a = result.out.find("a.pcd:");
+  const std::size_t b = result.out.find("b.pcd:");
+  const std::size_t c = result.out.find("c.pcd:");
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  ASSERT_NE(c, std::string::npos);
+  EXPECT_LT(a, b);
+  EXPECT_LT(b, c);
+  EXPECT_EQ(lineCount(result.out), 3u);
+  for (const char* name : {"a", "b", "c"}) EXPECT_TRUE(fs::exists(path(std::string("out/") + name + ".labels.pcd")));
+  EXPECT_FALSE(fs::exists(path("out/notes.labels.pcd")));
+  // Four or more files would draw a progress bar on a terminal; stderr here is a file.
+  EXPECT_TRUE(result.err.empty());
+}
+
+TEST_F(PcdSegment, DrawsNoProgressBarWhenStderrIsNotATerminal) {
+  std::vector<std::string> arguments;
+  for (int i = 0; i < 5; ++i) arguments.push_back(writeScene("f" + std::to_string(i) + ".pcd"));
+  arguments.insert(arguments.end(), {"-o", path("out").string()});
+  const Result result = run(arguments);
+  ASSERT_EQ(result.exit_code, 0);
+  EXPECT_EQ(lineCount(result.out), 5u);
+  EXPECT_TRUE(result.err.empty()) << "progress output in a log: " << result.err;
+}
+
+TEST_F(PcdSegment, DrawsAProgressBarWhenStderrIsATerminal) {
+  // util-linux script(1) gives the program a pseudo-terminal and copies what it shows.
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) not installed";
+  std::string command = quote(PCD_SEGMENT_BINARY);
+  for (int i = 0; i < 4; ++i) command += " " + quote(writeScene("f" + std::to_string(i) + ".pcd"));
+  command += " -o " + quote(path("out").string());
+  const fs::path screen = path("screen.txt");
+  const std::string shell = "script -qec " + quote(command) + " /dev/null >" + quote(screen.string()) + " 2>&1";
+  ASSERT_EQ(std::system(("sh -c " + quote(shell)).c_str()), 0);
+  const std::string shown = readFile(screen);
+  EXPECT_TRUE(contains(shown, "] 0/4 files")) << shown;
+  EXPECT_TRUE(contains(shown, "] 3/4 files, about ")) << shown;
+  EXPECT_TRUE(contains(shown, " s left")) << shown;
+  EXPECT_TRUE(contains(shown, "f3.pcd: 160x120, 2 planes")) << shown;
+}
+
+TEST_F(PcdSegment, BatchGoesOnPastABadFileAndExitsWithOne) {
+  const std::string first = writeScene("first.pcd");
+  writeFile(path("bad.pcd"), "this is not a point cloud\n");
+  const std::string last = writeScene("last.pcd");
+  const Result result = run({first, path("bad.pcd").string(), last, "-o", path("out").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(fs::exists(path("out/first.labels.pcd")));
+  EXPECT_TRUE(fs::exists(path("out/last.labels.pcd")));
+  EXPECT_FALSE(fs::exists(path("out/bad.labels.pcd")));
+  EXPECT_EQ(lineCount(result.out), 2u);
+  EXPECT_TRUE(contains(result.err, path("bad.pcd").string() + ": not a PCD file")) << result.err;
+  EXPECT_TRUE(contains(result.err, "1 of 3 inputs failed")) << result.err;
+}
+
+TEST_F(PcdSegment, QuietPrintsNothingOnSuccess) {
+  const Result result = run({writeScene("scene.pcd"), "-o", path("out").string(), "--quiet"});
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_TRUE(result.out.empty()) << result.out;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+}
+
+TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
+  Cloud empty(40, 30);
+  for (auto& p : empty) p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
+  empty.is_dense = false;
+  const std::string input = writeScene("nan.pcd", empty);
+  const Result result = run({input, "-o", path("out").string(), "--png", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "nan.pcd: 40x30, 0 planes")) << result.out;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/nan.labels.pcd").string(), labelled), 0);
+  EXPECT_EQ(labelled.size(), 1200u);
+  for (const auto& p : labelled) EXPECT_EQ(p.label, 0u);
+  EXPECT_TRUE(fs::exists(path("out/nan.labels.png")));
+  const auto json = nlohmann::json::parse(readFile(path("out/nan.planes.json")));
+  EXPECT_EQ(json.at("plane_count"), 0);
+  EXPECT_TRUE(json.at("planes").empty());
+}
+
+// ---- bad input ----------------------------------------------------------------------------
+
+TEST_F(PcdSegment, RejectsAMissingFile) {
+  fs::create_directory(path("out"));
+  expectRejected(path("missing.pcd").string(), "no such file");
+}
+
+TEST_F(PcdSegment, RejectsADirectoryWithoutPcdFiles) {
+  fs::create_directory(path("out"));
+  fs::create_directory(path("empty"));
+  writeFile(path("empty/readme.txt"), "x");
+  expectRejected(path("empty").string(), "no .pcd files");
+}
+
+TEST_F(PcdSegment, RejectsAnEmptyFile) {
+  fs::create_directory(path("out"));
+  writeFile(path("empty.pcd"), "");
+  expectRejected(path("empty.pcd").string(), "empty file");
+}
+
+TEST_F(PcdSegment, RejectsAFileThatIsNotAPcd) {
+  fs::create_directory(path("out"));
+  std::string noise;
+  for (int i = 0; i < 4096; ++i) noise += static_cast<char>((i * 7919) % 256);
+  writeFile(path("noise.pcd"), noise);
+  expectRejected(path("noise.pcd").string(), "not a PCD file");
+}
+
+TEST_F(PcdSegment, RejectsATruncatedCompressedPcd) {
+  // PCL's reader trusts the compressed size in the file and reads past the end of a
+  // truncated one; the app must catch this before PCL sees the file.
+  fs::create_directory(path("out"));
+  ASSERT_EQ(pcl::io::savePCDFileBinaryCompressed(path("full.pcd").string(), twoPlaneScene()), 0);
+  const std::string full = readFile(path("full.pcd"));
+  for (const double fraction : {0.1, 0.5, 0.99}) {
+    const std::string name = "cut" + std::to_string(static_cast<int>(fraction * 100)) + ".pcd";
+    writeFile(path(name), full.substr(0, static_cast<std::size_t>(full.size() * fraction)));
+    SCOPED_TRACE(name);
+    expectRejected(path(name).string(), "truncated");
+  }
+}
+
+TEST_F(PcdSegment, RejectsATruncatedBinaryOrAsciiPcd) {
+  fs::create_directory(path("out"));
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path("binary.pcd").string(), twoPlaneScene()), 0);
+  const std::string binary = readFile(path("binary.pcd"));
+  writeFile(path("binary_cut.pcd"), binary.substr(0, binary.size() * 2 / 3));
+  expectRejected(path("binary_cut.pcd").string(), "truncated");
+
+  ASSERT_EQ(pcl::io::savePCDFileASCII(path("ascii.pcd").string(), twoPlaneScene()), 0);
+  const std::string ascii = readFile(path("ascii.pcd"));
+  writeFile(path("ascii_cut.pcd"), ascii.substr(0, ascii.size() * 2 / 3));
+  expectRejected(path("ascii_cut.pcd").string(), "truncated");
+}
+
+TEST_F(PcdSegment, RejectsCorruptCompressedData) {
+  fs::create_directory(path("out"));
+  ASSERT_EQ(pcl::io::savePCDFileBinaryCompressed(path("full.pcd").string(), twoPlaneScene()), 0);
+  const std::string full = readFile(path("full.pcd"));
+  const std::size_t data = full.find("DATA binary_compressed\n") + 23;
+  ASSERT_LT(data + 200, full.size());
+
+  // The uncompressed size field (second uint32 after the header) no longer matches the grid.
+  std::string wrong_size = full;
+  wrong_size[data + 4] = static_cast<char>(wrong_size[data + 4] + 1);
+  writeFile(path("wrong_size.pcd"), wrong_size);
+  expectRejected(path("wrong_size.pcd").string(), "corrupt");
+
+  // The LZF stream itself is garbage: back-references before the start of the output.
+  std::string garbage = full;
+  std::fill(garbage.begin() + static_cast<std::ptrdiff_t>(data + 8),
+            garbage.begin() + static_cast<std::ptrdiff_t>(data + 200), '\xff');
+  writeFile(path("garbage.pcd"), garbage);
+  expectRejected(path("garbage.pcd").string(), "corrupt");
+}
+
+TEST_F(PcdSegment, RejectsAHeaderThatAnnouncesMorePointsThanTheFileHolds) {
+  // PCL allocates what the header announces before reading: 20000 x 20000 points would be
+  // 4.8 GB of zeros. The app must refuse at once, not allocate.
+  fs::create_directory(path("out"));
+  for (const char* data : {"ascii", "binary", "binary_compressed"}) {
+    const std::string name = std::string("huge_") + data + ".pcd";
+    writeFile(path(name), std::string("VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 20000\n"
+                                      "HEIGHT 20000\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 400000000\nDATA ") +
+                              data + "\n" + std::string(1000, '\0'));
+    SCOPED_TRACE(name);
+    expectRejected(path(name).string(), "cannot hold");
+  }
+}
+
+TEST_F(PcdSegment, RejectsAnUnorganizedCloud) {
+  fs::create_directory(path("out"));
+  Cloud scene = twoPlaneScene();
+  scene.width = static_cast<std::uint32_t>(scene.size());
+  scene.height = 1;
+  writeScene("flat.pcd", scene);
+  expectRejected(path("flat.pcd").string(), "needs an organized cloud");
+}
+
+TEST_F(PcdSegment, RejectsACloudWithoutXyz) {
+  fs::create_directory(path("out"));
+  pcl::PointCloud<pcl::Normal> normals(16, 12);
+  for (auto& n : normals) n.normal_z = 1.0f;
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path("normals.pcd").string(), normals), 0);
+  expectRejected(path("normals.pcd").string(), "no x y z");
+}
+
+TEST_F(PcdSegment, RejectsBadOptionValuesWithUsageAndExitCodeTwo) {
+  const std::string input = writeScene("scene.pcd");
+  const std::vector<std::vector<std::string>> bad = {
+      {"--distance-threshold", "-0.01"}, {"--seed-size", "0"},        {"--angular-threshold", "2"},
+      {"--merge-distance", "nan"},       {"--subsample", "3"},        {"--min-inliers", "-4"},
+      {"--seed-size", "abc"},            {"--depth-noise-coefficient", "-1"}, {"--no-such-option"}};
+  for (const auto& option : bad) {
+    std::vector<std::string> arguments = {input, "-o", path("out").string()};
+    arguments.insert(arguments.end(), option.begin(), option.end());
+    SCOPED_TRACE(option[0]);
+    const Result result = run(arguments);
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_TRUE(contains(result.err, "error")) << result.err;
+    EXPECT_TRUE(contains(result.err, "Usage:")) << result.err;
+    EXPECT_FALSE(fs::exists(path("out"))) << "nothing is written after a usage error";
+  }
+  // The library's message names the setter that refused the value.
+  const Result subsample = run({input, "-o", path("out").string(), "--subsample", "3"});
+  EXPECT_TRUE(contains(subsample.err, "setSubsampling")) << subsample.err;
+}
+
+TEST_F(PcdSegment, RefusesASinglePcdOutputForSeveralInputs) {
+  const Result result = run({writeScene("a.pcd"), writeScene("b.pcd"), "-o", path("both.pcd").string()});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_TRUE(contains(result.err, "2 inputs")) << result.err;
+  EXPECT_FALSE(fs::exists(path("both.pcd")));
+}
+
+TEST_F(PcdSegment, HelpShowsTheLibraryDefaultsAndVersionPrintsTheVersion) {
+  const Result help = run({"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  const floodplane::Params defaults;
+  const auto shown = [](double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  };
+  for (const auto& [option, value] :
+       std::vector<std::pair<std::string, std::string>>{{"--distance-threshold", shown(defaults.distance_threshold)},
+                                                        {"--seed-size", shown(defaults.seed_size)},
+                                                        {"--angular-threshold", shown(defaults.angular_threshold)},
+                                                        {"--merge-distance", shown(defaults.merge_distance)},
+                                                        {"--min-inliers", std::to_string(defaults.min_inliers)},
+                                                        {"--subsample", std::to_string(defaults.subsampling)}}) {
+    EXPECT_TRUE(contains(help.out, option + " ")) << option;
+    EXPECT_TRUE(contains(help.out, "=" + value)) << option << " default " << value;
+  }
+  const Result version = run({"--version"});
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_TRUE(contains(version.out, FLOODPLANE_VERSION_STRING));
+}
+
+// ---- failed writes ------------------------------------------------------------------------
+
+TEST_F(PcdSegment, ReportsAnOutputDirectoryThatCannotBeCreated) {
+  // A regular file as the parent blocks the directory even for root, unlike permissions.
+  writeFile(path("file"), "x");
+  const Result result = run({writeScene("scene.pcd"), "-o", path("file/out").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+  EXPECT_TRUE(contains(result.err, "cannot create output directory")) << result.err;
+  EXPECT_EQ(readFile(path("file")), "x");
+}
+
+TEST_F(PcdSegment, LeavesAnExistingOutputWholeWhenAWriteFails) {
+  // A file size limit (RLIMIT_FSIZE, with SIGXFSZ ignored so writes fail with EFBIG) stops the
+  // write part-way, for root too. The previous output must survive unchanged, with no
+  // temporary left beside it.
+  const std::string input = writeScene("scene.pcd");
+  fs::create_directory(path("out"));
+  const std::string previous = "previous result\n";
+  for (const bool ascii : {false, true}) {
+    SCOPED_TRACE(ascii ? "ascii" : "binary compressed");
+    writeFile(path("out/scene.labels.pcd"), previous);
+    std::vector<std::string> arguments = {input, "-o", path("out").string()};
+    if (ascii) arguments.push_back("--ascii");
+    const Result result = run(arguments, "trap '' XFSZ; ulimit -f 1; ");
+    EXPECT_EQ(result.exit_code, 1) << result.out;
+    EXPECT_TRUE(contains(result.err, "scene.labels.pcd")) << result.err;
+    EXPECT_EQ(readFile(path("out/scene.labels.pcd")), previous);
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(path("out"))) {
+      ++files;
+      EXPECT_EQ(entry.path().filename(), "scene.labels.pcd");
+    }
+    EXPECT_EQ(files, 1u);
+  }
+  // Without the limit the same run succeeds: the failure above was the limit.
+  EXPECT_EQ(run({input, "-o", path("out").string()}).exit_code, 0);
+  EXPECT_NE(readFile(path("out/scene.labels.pcd")), previous);
+}
+
+// ---- a real frame -------------------------------------------------------------------------
+
+TEST_F(PcdSegment, SegmentsARealFrameAsTheLibraryDoes) {
+  const fs::path frame = fs::path(FLOODPLANE_REAL_DATA_DIR) / "table_scene_mug_stereo_textured.pcd";
+  if (!fs::exists(frame)) GTEST_SKIP() << "no real data at " << FLOODPLANE_REAL_DATA_DIR;
+  const Result result = run({frame.string(), "-o", path("out").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  Cloud cloud;
+  ASSERT_EQ(pcl::io::loadPCDFile(frame.string(), cloud), 0);
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/table_scene_mug_stereo_textured.labels.pcd").string(), labelled), 0);
+  ASSERT_EQ(labelled.width, 640u);
+  ASSERT_EQ(labelled.height, 480u);
+  std::vector<std::uint32_t> labels;
+  for (const auto& p : labelled) labels.push_back(p.label);
+  const std::vector<std::uint32_t> expected = libraryLabels(cloud);
+  EXPECT_EQ(labels, expected);
+  const auto json = nlohmann::json::parse(readFile(path("out/table_scene_mug_stereo_textured.planes.json")));
+  EXPECT_EQ(json.at("plane_count").get<std::uint32_t>(), *std::max_element(expected.begin(), expected.end()));
+  EXPECT_GE(json.at("plane_count").get<int>(), 1) << "the table top at least";
+  // The colour survives: the frame is not grey everywhere.
+  pcl::PointCloud<pcl::PointXYZRGBA> original;
+  ASSERT_EQ(pcl::io::loadPCDFile(frame.string(), original), 0);
+  for (std::size_t i = 0; i < original.size(); i += 997) {
+    ASSERT_EQ(labelled[i].r, original[i].r) << i;
+    ASSERT_EQ(labelled[i].g, original[i].g) << i;
+    ASSERT_EQ(labelled[i].b, original[i].b) << i;
+  }
+}
+
+}  // namespace
