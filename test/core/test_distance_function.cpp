@@ -1,0 +1,162 @@
+// Sec. III-B: the distance functions of the flood (Eqs. 2, 3) and the membership test of
+// Eq. 1 with range-dependent tolerances (depth noise, Eq. 8 spacing).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "floodplane/distance_function.h"
+
+namespace floodplane {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// --- Eq. 2 -------------------------------------------------------------------------------
+
+TEST(PlaneDistance, IsZeroForAPointOnThePlane) {
+  // z = 2 facing the camera: n = (0, 0, -1), d = 2.
+  EXPECT_FLOAT_EQ(planeDistance({0, 0, -1}, 2.f, {0.3f, -0.7f, 2.f}), 0.f);
+}
+
+TEST(PlaneDistance, IsTheAbsoluteOffsetOnBothSidesOfThePlane) {
+  const Vec3 n{0, 0, -1};
+  EXPECT_FLOAT_EQ(planeDistance(n, 2.f, {0, 0, 2.25f}), 0.25f);  // behind the plane
+  EXPECT_FLOAT_EQ(planeDistance(n, 2.f, {0, 0, 1.75f}), 0.25f);  // in front of it
+}
+
+TEST(PlaneDistance, MatchesTheSeedFormOfEquationTwo) {
+  // |(P_seed - P') . n| with d = -n . P_seed, on a tilted plane.
+  const float s = 1.0f / std::sqrt(2.0f);
+  const Vec3 n{0, s, -s};
+  const Vec3 seed{0.1f, 0.2f, 1.5f};
+  const float d = -n.dot(seed);
+  const Vec3 p{-0.4f, 0.9f, 1.1f};
+  const float expected = std::abs((seed - p).dot(n));  // |(-0.7 * s) + (0.4 * -s)| = 1.1 s
+  EXPECT_NEAR(expected, 1.1f * s, 1e-6f);
+  EXPECT_NEAR(planeDistance(n, d, p), expected, 1e-6f);
+}
+
+TEST(PlaneDistance, IsNaNForAHoleSoEveryAcceptanceTestFails) {
+  const float distance = planeDistance({0, 0, -1}, 2.f, {kNaN, kNaN, kNaN});
+  EXPECT_TRUE(std::isnan(distance));
+  EXPECT_FALSE(distance < 1e9f);
+  EXPECT_FALSE(distance < std::numeric_limits<float>::infinity());
+}
+
+// --- Eq. 3 -------------------------------------------------------------------------------
+
+TEST(SquaredEuclideanDistance, IsTheSumOfSquaredDifferences) {
+  EXPECT_FLOAT_EQ(squaredEuclideanDistance({1, 2, 3}, {4, 6, 3}), 25.f);  // 3-4-5
+  EXPECT_FLOAT_EQ(squaredEuclideanDistance({1, 2, 3}, {1, 2, 3}), 0.f);
+  EXPECT_FLOAT_EQ(squaredEuclideanDistance({0, 0, 0}, {0, 0, -0.5f}), 0.25f);
+}
+
+TEST(SquaredEuclideanDistance, IsSymmetric) {
+  const Vec3 a{0.1f, -0.2f, 1.3f}, b{-0.5f, 0.4f, 2.0f};
+  EXPECT_FLOAT_EQ(squaredEuclideanDistance(a, b), squaredEuclideanDistance(b, a));
+}
+
+TEST(SquaredEuclideanDistance, IsNaNWhenEitherPointIsAHole) {
+  EXPECT_FALSE(squaredEuclideanDistance({kNaN, 0, 0}, {0, 0, 1}) < 1e9f);
+  EXPECT_FALSE(squaredEuclideanDistance({0, 0, 1}, {0, kNaN, 0}) < 1e9f);
+}
+
+// --- DepthNoise ----------------------------------------------------------------------------
+
+TEST(DepthNoise, GrowsWithTheSquareOfTheRange) {
+  DepthNoise noise{0.002};
+  EXPECT_DOUBLE_EQ(noise.sigma(1.0), 0.002);
+  EXPECT_DOUBLE_EQ(noise.sigma(9.0), 0.018);  // r = 3 m
+}
+
+TEST(DepthNoise, ToleranceIsTheFixedValueUntilThreeSigmaExceedsIt) {
+  DepthNoise noise{0.002};
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 1.0), 0.01);    // 3 sigma = 0.006 < 0.01
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 4.0), 0.024);   // 3 sigma = 0.024 > 0.01
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 25.0), 0.15);   // r = 5 m
+}
+
+TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
+  DepthNoise noise;  // default: no range-dependent noise
+  EXPECT_DOUBLE_EQ(noise.sigma(100.0), 0.0);
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 0.25), 0.01);
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 100.0), 0.01);
+}
+
+// --- FloodCriterion ------------------------------------------------------------------------
+
+FloodCriterion criterion(float noise_coefficient) {
+  FloodCriterion c;
+  c.normal = {0, 0, -1};
+  c.offset = 2.f;
+  c.plane_threshold = 0.01f;
+  c.plane_noise_factor = 3.f * noise_coefficient;
+  c.setEuclidean(/*seed_spacing=*/0.01f, /*seed_range_sq=*/4.f, noise_coefficient);
+  return c;
+}
+
+TEST(FloodCriterion, PlaneToleranceIsTheMaximumOfSigmaPlaneAndThreeCRSquared) {
+  const FloodCriterion c = criterion(0.002f);  // 3 c = 0.006
+  EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.01f);    // 0.006 < 0.01
+  EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.024f);   // 0.006 * 4
+  EXPECT_FLOAT_EQ(c.planeTolerance(16.f), 0.096f);  // 0.006 * 16
+}
+
+TEST(FloodCriterion, PlaneToleranceIsConstantWithoutDepthNoise) {
+  const FloodCriterion c = criterion(0.f);
+  EXPECT_FLOAT_EQ(c.planeTolerance(0.25f), 0.01f);
+  EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.01f);
+  EXPECT_FLOAT_EQ(c.planeTolerance(64.f), 0.01f);
+}
+
+TEST(FloodCriterion, EuclideanToleranceIsTwiceTheSeedSpacingAtTheSeedRange) {
+  // No noise: K = 2 s0 / r0^2 = 2 * 0.01 / 4 = 0.005; sigma_e(r0) = K r0^2 = 0.02.
+  const FloodCriterion c = criterion(0.f);
+  EXPECT_FLOAT_EQ(c.euclidean_factor_sq, 0.005f * 0.005f);
+  EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(4.f)), 0.02f, 1e-7f);
+}
+
+TEST(FloodCriterion, EuclideanToleranceFollowsThePixelSpacingAsRangeSquared) {
+  // On a plane the spacing of neighbours grows with r^2: at 4 m it is four times that at
+  // 2 m, at 1 m a quarter.
+  const FloodCriterion c = criterion(0.f);
+  EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(16.f)), 0.08f, 1e-6f);
+  EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(1.f)), 0.005f, 1e-8f);
+}
+
+TEST(FloodCriterion, EuclideanToleranceAddsTheDepthNoiseOfBothPoints) {
+  // K = 2 s0 / r0^2 + 3 sqrt(2) c = 0.005 + 3 * 1.41421 * 0.002 = 0.0134853
+  const FloodCriterion c = criterion(0.002f);
+  const float k = 0.005f + 3.f * std::sqrt(2.f) * 0.002f;
+  EXPECT_NEAR(c.euclidean_factor_sq, k * k, 1e-9f);
+  EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(4.f)), 4.f * k, 1e-6f);  // 0.0539 at 2 m
+  EXPECT_GT(c.euclideanToleranceSq(4.f), criterion(0.f).euclideanToleranceSq(4.f));
+}
+
+TEST(FloodCriterion, ToleratesASeedAtTheSensorOrigin) {
+  // A zero seed range must not divide by zero: the spacing term is bounded, not infinite.
+  FloodCriterion c;
+  c.setEuclidean(0.01f, 0.f, 0.f);
+  EXPECT_TRUE(std::isfinite(c.euclidean_factor_sq));
+}
+
+TEST(FloodCriterion, AcceptsANeighbourOnThePlaneAndRejectsOneOffIt) {
+  const FloodCriterion c = criterion(0.f);
+  const Vec3 from{0.f, 0.f, 2.f};
+  const Vec3 on{0.015f, 0.f, 2.f};      // 1.5 cm away, on the plane
+  const Vec3 off{0.015f, 0.f, 2.02f};   // 2 cm behind the plane
+  const Vec3 far{0.05f, 0.f, 2.f};      // on the plane, but 5 cm away: beyond sigma_e = 2 cm
+  const auto accepts = [&](const Vec3& p) {
+    const float r2 = p.squaredNorm();
+    return planeDistance(c.normal, c.offset, p) < c.planeTolerance(r2) &&
+           squaredEuclideanDistance(from, p) < c.euclideanToleranceSq(r2);
+  };
+  EXPECT_TRUE(accepts(on));
+  EXPECT_FALSE(accepts(off));
+  EXPECT_FALSE(accepts(far));
+  EXPECT_FALSE(accepts({kNaN, kNaN, kNaN}));
+}
+
+}  // namespace
+}  // namespace floodplane
