@@ -1,4 +1,5 @@
 #include "floodplane/io/pcd_file.h"
+#include "temp_path.h"
 
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
@@ -62,7 +63,7 @@ class PcdFile : public ::testing::TestWithParam<floodplane::io::PcdEncoding> {};
 
 TEST_P(PcdFile, RoundTripsAnOrganizedCloudWithNaNs) {
   const auto cloud = smallOrganizedCloud();
-  const fs::path path = fs::temp_directory_path() / "floodplane_pcd_round_trip.pcd";
+  const fs::path path = floodplane::test::uniqueTempPath(".pcd");
   floodplane::io::savePcd(path.string(), cloud, GetParam());
   pcl::PointCloud<pcl::PointXYZL> read;
   ASSERT_EQ(pcl::io::loadPCDFile(path.string(), read), 0);
@@ -89,7 +90,7 @@ INSTANTIATE_TEST_SUITE_P(EveryEncoding, PcdFile,
                          [](const auto& param_info) { return encodingName(param_info.param); });
 
 TEST(PcdFileEncoding, IsBinaryCompressedByDefault) {
-  const fs::path path = fs::temp_directory_path() / "floodplane_pcd_default.pcd";
+  const fs::path path = floodplane::test::uniqueTempPath(".pcd");
   floodplane::io::savePcd(path.string(), smallOrganizedCloud());
   const std::string header = firstLines(path, 11);
   fs::remove(path);

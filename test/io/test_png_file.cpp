@@ -1,4 +1,5 @@
 #include "floodplane/io/png_file.h"
+#include "temp_path.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -37,7 +38,7 @@ TEST(PngFile, RoundTripsEveryPixelThroughLibpng) {
   for (std::size_t i = 0; i < image.width * image.height * 3; ++i) {
     image.pixels.push_back(static_cast<std::uint8_t>((i * 37 + 11) % 256));
   }
-  const fs::path path = fs::temp_directory_path() / "floodplane_png_round_trip.png";
+  const fs::path path = floodplane::test::uniqueTempPath(".png");
   floodplane::io::writePng(path.string(), image);
   const auto read = readPng(path.string());
   fs::remove(path);
