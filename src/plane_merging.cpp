@@ -31,7 +31,8 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
     // Eq. 9, first term: the normals agree, up to what their own uncertainty explains.
     const double uncertainty = std::sqrt(normalVariance(a, fit_a) + normalVariance(b, fit_b));
     const double allowed = std::min(angle_ + 3.0 * uncertainty, 1.5);
-    if (fit_a.normal.dot(fit_b.normal) < std::cos(allowed)) return false;
+    // Written as !(>=) so that a NaN anywhere rejects the merge rather than skipping the test.
+    if (!(fit_a.normal.dot(fit_b.normal) >= std::cos(allowed))) return false;
     // Eq. 9, second term, both ways.
     const double tolerance = std::max(merge_distance_, 3.0 * depth_sigma);
     const Eigen::Vector3d between = fit_a.centroid - fit_b.centroid;

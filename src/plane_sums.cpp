@@ -6,6 +6,9 @@
 #include <cmath>
 
 namespace floodplane {
+namespace {
+constexpr double kLineEigenvalueRatio = 1e-6;
+}  // namespace
 
 PlaneFit PlaneSums::fit() const {
   PlaneFit plane;
@@ -28,9 +31,17 @@ PlaneFit PlaneSums::fit() const {
   // eigenvalue of a plane's scatter is well separated from the other two.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(cov);
-  const Eigen::Vector3d eigenvalues = solver.eigenvalues();  // ascending
+  // Ascending. The true eigenvalues of a scatter matrix are >= 0; the closed-form solver
+  // returns round-off of either sign (-1e-15 for exactly planar points), and a negative
+  // one would make every sqrt of it downstream NaN, which silently fails comparisons.
+  const Eigen::Vector3d eigenvalues = solver.eigenvalues().cwiseMax(0.0);
   const double trace = eigenvalues.sum();
-  if (!(trace > 0.0) || !(eigenvalues(1) > 0.0)) return plane;  // a point or a line
+  // A point or a line: the middle eigenvalue is round-off next to the largest. The test must
+  // be relative: for collinear points computeDirect gives +-1.4e-9 where the largest is 0.5
+  // (its accuracy on a repeated eigenvalue is about sqrt(machine epsilon)), which `> 0`
+  // accepted. A patch of a real surface has a ratio of its width to length squared, 1e-2 or
+  // more; a one-pixel row of a plane is, correctly, a line.
+  if (!(trace > 0.0) || !(eigenvalues(1) > kLineEigenvalueRatio * eigenvalues(2))) return plane;
   plane.normal = solver.eigenvectors().col(0).normalized();
   if (plane.normal.dot(c) > 0.0) plane.normal = -plane.normal;  // face the sensor at 0
   plane.offset = -plane.normal.dot(c);

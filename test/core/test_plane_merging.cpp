@@ -12,7 +12,7 @@ namespace floodplane {
 namespace {
 
 // A checkerboard of +-0.1 mm off the plane: the residual of a real surface. Exactly planar
-// patches would trip the bug of DISABLED_RejectsTwoExactPlanesAtAnAngleAboveTheThreshold.
+// patches are tested on their own (RejectsTwoExactPlanesAtAnAngleAboveTheThreshold).
 constexpr float kRoughness = 1e-4f;
 float rough(int i, int j, float roughness) { return (i + j) % 2 == 0 ? roughness : -roughness; }
 
@@ -81,13 +81,13 @@ TEST(MergeCriterion, RejectsTwoPlanesAtAnAngleAboveTheThreshold) {
   EXPECT_TRUE(mergeable(criterion, smallPatch(-0.05f, 2.f, -0.04f), smallPatch(0.05f, 2.f, 0.04f)));
 }
 
-// BUG (disabled until fixed in include/floodplane/plane_sums.h): the same two patches without
-// roughness merge. For exactly planar points Eigen's closed-form solver can return a smallest
-// eigenvalue of -1.3e-15; normalUncertainty() then takes sqrt(negative) = NaN (its guard
-// `eigenvalues(1) >= 4 eigenvalues(0)` holds), MergeCriterion::mergeable's `allowed` angle
-// becomes NaN, and `dot < cos(NaN)` is false: the normal test of Eq. 9 is skipped. Noise-free
-// renders (pcd_synth --sensor none) are exactly this case.
-TEST(MergeCriterion, DISABLED_RejectsTwoExactPlanesAtAnAngleAboveTheThreshold) {
+// Regression: the same two patches without roughness merged. For exactly planar points
+// Eigen's closed-form solver can return a smallest eigenvalue of -1.3e-15; normalUncertainty()
+// then took sqrt(negative) = NaN, MergeCriterion::mergeable's `allowed` angle became NaN, and
+// `dot < cos(NaN)` was false: the normal test of Eq. 9 was skipped. Noise-free renders
+// (pcd_synth --sensor none) are exactly this case. Eigenvalues are now clamped at zero and
+// the angle test rejects on NaN.
+TEST(MergeCriterion, RejectsTwoExactPlanesAtAnAngleAboveTheThreshold) {
   const MergeCriterion criterion(exactParams());
   EXPECT_FALSE(mergeable(criterion, smallPatch(-0.05f, 2.f, -0.1f, 0.f), smallPatch(0.05f, 2.f, 0.1f, 0.f)));
 }

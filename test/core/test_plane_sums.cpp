@@ -195,12 +195,11 @@ TEST(PlaneSums, FitIsInvalidForFewerThanThreePoints) {
   EXPECT_FALSE(sums.fit().valid);
 }
 
-// BUG (disabled until fixed in src/plane_sums.cpp): five points on the z axis give a "valid"
-// fit with normal (-1, 0, 0). Eigen's closed-form solver (computeDirect) returns the
-// eigenvalues (-1.4e-9, 1.4e-9, 0.5) for the covariance diag(0, 0, 0.5), so the line test
-// `eigenvalues(1) > 0.0` passes on round-off. The test needs a threshold relative to the
-// largest eigenvalue (or the iterative solver).
-TEST(PlaneSums, DISABLED_FitIsInvalidForCollinearPoints) {
+// Regression: five points on the z axis gave a "valid" fit with normal (-1, 0, 0). Eigen's
+// closed-form solver (computeDirect) returns the eigenvalues (-1.4e-9, 1.4e-9, 0.5) for the
+// covariance diag(0, 0, 0.5), and the line test was `eigenvalues(1) > 0.0`; it is now
+// relative to the largest eigenvalue.
+TEST(PlaneSums, FitIsInvalidForCollinearPoints) {
   PlaneSums line;
   for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * i});
   const PlaneFit fit = line.fit();
@@ -269,12 +268,10 @@ TEST(NormalUncertainty, IsInfiniteForCollinearPoints) {
   EXPECT_TRUE(std::isinf(normalUncertainty(sums.fit(), sums.count)));
 }
 
-// BUG (disabled until fixed in include/floodplane/plane_sums.h): for the z-axis line above the
-// fit's smallest eigenvalue is negative (-1.4e-9), so `eigenvalues(1) >= 4 eigenvalues(0)`
-// holds and the result is sqrt(negative) = NaN, not infinity. In MergeCriterion::mergeable a
-// NaN uncertainty makes `allowed` NaN and the angle test `dot < cos(NaN)` false, so the
-// normal test of Eq. 9 is skipped for such a segment.
-TEST(NormalUncertainty, DISABLED_IsInfiniteNotNaNForPointsOnACoordinateAxis) {
+// Regression: for the z-axis line above the fit's smallest eigenvalue was negative (-1.4e-9),
+// so `eigenvalues(1) >= 4 eigenvalues(0)` held and the result was sqrt(negative) = NaN, not
+// infinity; in MergeCriterion::mergeable a NaN uncertainty skipped Eq. 9's normal test.
+TEST(NormalUncertainty, IsInfiniteNotNaNForPointsOnACoordinateAxis) {
   PlaneSums line;
   for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * i});
   const double sigma = normalUncertainty(line.fit(), line.count);
