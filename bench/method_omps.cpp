@@ -37,7 +37,13 @@ void runOmps(benchmark::State& state, const Frame& frame) {
     // "invalid" fill that only reaches new elements, so labels left from the previous call
     // at NaN pixels index past its run table and crash it: start from an empty cloud.
     labels->clear();
-    regions.clear();  // OMPS appends its regions to the vector it is given
+    // segment() appends to the coefficient and inlier vectors, and refine() indexes its
+    // per-label tables with the stale entries: every output starts empty.
+    regions.clear();
+    coefficients.clear();
+    inliers.clear();
+    label_indices.clear();
+    boundaries.clear();
     omps.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
     benchmark::DoNotOptimize(regions.data());
   }

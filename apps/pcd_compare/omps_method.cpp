@@ -57,6 +57,15 @@ class OmpsMethod : public Method {
     segmentation_.setInputNormals(normals);
     segmentation_.setInputCloud(cloud);
     auto labels = std::make_shared<pcl::PointCloud<pcl::Label>>();
+    // PCL 1.13's segment() appends to the coefficient and inlier vectors it is given, and
+    // refine() then indexes its per-label tables with the stale entries' labels: past their
+    // end on the next cloud (heap corruption, seen as "double free or corruption" several
+    // files into a batch). Every output starts empty.
+    regions_.clear();
+    coefficients_.clear();
+    inliers_.clear();
+    label_indices_.clear();
+    boundaries_.clear();
     segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels, label_indices_,
                                    boundaries_);
     const auto end = Clock::now();

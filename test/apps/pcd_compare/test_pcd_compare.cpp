@@ -199,6 +199,36 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
   EXPECT_FALSE(version.out.empty());
 }
 
+// Regression: PCL's OMPS appends to the coefficient and inlier vectors it is given, and the
+// app reused them across runs and files; several files into a batch PCL's refine() indexed
+// its per-label tables with stale labels and corrupted the heap ("double free or corruption"
+// on the rendered scene set). A batch must finish, and a scene's result must not depend on
+// the scenes before it.
+TEST_F(PcdCompare, OmpsOverAWholeSceneBatchFinishesAndEachSceneIsIndependent) {
+  const fs::path alone_json = dir_ / "alone.json";
+  const fs::path batch_json = dir_ / "batch.json";
+  const Outcome batch = run("--quiet --repeat 3 --methods omps --json " + quoted(batch_json.string()) +
+                            " " + quoted(FLOODPLANE_RENDERED_DIR));
+  ASSERT_EQ(batch.exit_code, 0) << batch.err;
+  const nlohmann::json scenes = nlohmann::json::parse(readFile(batch_json))["scenes"];
+  ASSERT_GE(scenes.size(), 10u);
+  const std::string last_scene = std::string(FLOODPLANE_RENDERED_DIR) + "/tabletop.none.pcd";
+  ASSERT_EQ(run("--quiet --repeat 3 --methods omps --json " + quoted(alone_json.string()) + " " +
+                quoted(last_scene)).exit_code, 0);
+  const nlohmann::json alone = nlohmann::json::parse(readFile(alone_json))["scenes"][0];
+  bool found = false;
+  for (const auto& scene : scenes) {
+    if (scene["name"] != alone["name"]) continue;
+    found = true;
+    const auto& a = alone["methods"]["omps"];
+    const auto& b = scene["methods"]["omps"];
+    EXPECT_EQ(b["planes"], a["planes"]);
+    EXPECT_EQ(b["mean_iou"], a["mean_iou"]);
+    EXPECT_EQ(b["per_plane"], a["per_plane"]);
+  }
+  EXPECT_TRUE(found) << alone["name"];
+}
+
 TEST_F(PcdCompare, CloudWithoutLabelsGivesRuntimeOnly) {
   pcl::PointCloud<pcl::PointXYZ> xyz;
   ASSERT_EQ(pcl::io::loadPCDFile(kStaircase, xyz), 0);
