@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
             << "; scenes: " << floodplane::bench::sceneNames().size() << " rendered with Kinect noise\n";
   floodplane::bench::registerFloodplane();
   floodplane::bench::registerOmps();
+  floodplane::bench::registerSoak();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -11,5 +11,7 @@ std::string ompsConfiguration();
 
 void registerFloodplane();
 void registerOmps();
+/// The soak run: 10 000 segmentations in one process, resident memory first and last.
+void registerSoak();
 
 }  // namespace floodplane::bench

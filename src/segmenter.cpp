@@ -22,6 +22,14 @@ namespace {
 // proportionally smaller stride.
 constexpr int kSeedStride = 4;
 
+// Beyond the paper: a second, finer seeding pass over the pixels the first one left
+// unclaimed, with a seed cube of sigma_seed / kFineSeedDivisor. sigma_seed = 6 cm keeps
+// seeds off edges and out of noise, but it also means no plane narrower than about 6 cm can
+// ever be seeded: table legs, shelf fronts, stair risers seen from above. After the first
+// pass every large plane is already claimed, so the small seeds only see what is left;
+// the noise-widened seed size (SeedSelector::seedSizeAt) still keeps them out of noise.
+constexpr double kFineSeedDivisor = 2.0;
+
 using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -52,6 +60,7 @@ struct Segmenter::Workspace {
   std::vector<float> pitch_scratch;
   DistanceBuffer buffer;
   SeedSelector selector;
+  SeedSelector fine_selector;  // the second pass's smaller seed cube
   PlaneFlood flood;
   std::vector<Segment> segments;
   std::vector<SegmentEdge> edges;
@@ -169,6 +178,9 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     pitch = SeedSelector::estimateAngularPitch(grid, ws.pitch_scratch, static_cast<float>(s) / 525.0f);
     full_pitch = pitch / static_cast<float>(s);
     ws.selector.configure(params_, pitch, grid.width, grid.height);
+    Params fine = params_;
+    fine.seed_size /= kFineSeedDivisor;
+    ws.fine_selector.configure(fine, pitch, grid.width, grid.height);
     ws.buffer.reset(grid.size());
     ws.segments.assign(1, Segment());  // label 0: no segment
     ws.edges.clear();
@@ -182,16 +194,18 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     const int stride = std::max(1, kSeedStride / s);
     const int offset = stride / 2;
     Seed seed;
-    for (int y = offset; y < grid.height; y += stride) {
-      for (int x = offset; x < grid.width; x += stride) {
-        if (ws.buffer.label(static_cast<std::size_t>(y) * grid.width + x) != 0) continue;
-        ++result_.stats.seed_candidates;
-        if (ws.selector.test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
-        ++result_.stats.seeds;
-        const std::int32_t label = static_cast<std::int32_t>(ws.segments.size());
-        ws.segments.emplace_back();
-        PhaseTimer timer(timed, flooding);
-        result_.stats.pixels_taken_over += ws.flood.grow(grid, seed, label, params_, ws.buffer, ws.segments, ws.edges);
+    for (const SeedSelector* selector : {&ws.selector, &ws.fine_selector}) {
+      for (int y = offset; y < grid.height; y += stride) {
+        for (int x = offset; x < grid.width; x += stride) {
+          if (ws.buffer.label(static_cast<std::size_t>(y) * grid.width + x) != 0) continue;
+          ++result_.stats.seed_candidates;
+          if (selector->test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
+          ++result_.stats.seeds;
+          const std::int32_t label = static_cast<std::int32_t>(ws.segments.size());
+          ws.segments.emplace_back();
+          PhaseTimer timer(timed, flooding);
+          result_.stats.pixels_taken_over += ws.flood.grow(grid, seed, label, params_, ws.buffer, ws.segments, ws.edges);
+        }
       }
     }
     if (timed) {
