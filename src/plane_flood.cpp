@@ -34,11 +34,12 @@ class FloodVisitor {
     ++attempts_;
     const std::int32_t owner = buffer_.label(to);
     if (owner == label_) return false;
+    const Vec3 p = Vec3::load(grid_.point(from));
     const Vec3 q = Vec3::load(grid_.point(to));
-    const float range_sq = q.squaredNorm();
+    const float range_sq = noiseRangeSq(p, q);
     const FloodCriterion& c = segments_[label_].criterion;
     // Eq. 3; written so that a hole (NaN) fails it.
-    if (!(squaredEuclideanDistance(Vec3::load(grid_.point(from)), q) < c.euclideanToleranceSq(range_sq))) return false;
+    if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
     const float distance = planeDistance(c.normal, c.offset, q);  // Eq. 2
     const float tolerance = c.planeTolerance(range_sq);
     if (!(distance < tolerance)) {

@@ -71,6 +71,10 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
     this->refine(full, out.labels);
     if (sortBySize(0)) renumber(out.labels);  // refinement may have changed the order by size
   }
+  // The plane tests above ran on the merged clusters; full-resolution labelling and
+  // refinement add pixels, which can tip a plane over the curvature limit or, rarely (an
+  // outlier far along a ray), make its fit degenerate. What is reported must pass them.
+  if (dropUnfitPlanes(params)) renumber(out.labels);
 
   out.planes.clear();
   for (const Candidate& candidate : candidates_) {
@@ -119,7 +123,10 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
       if ((around[0] | around[1] | around[2] | around[3]) != 0) {
         const std::size_t index = static_cast<std::size_t>(v) * full.width + u;
         const Vec3 q = Vec3::load(full.point(index));
-        const float range_sq = q.squaredNorm();
+        // The nearer of the pixel and the sample next to it sets the noise tolerance.
+        const float range_sq = noiseRangeSq(Vec3::load(segmented.point(static_cast<std::size_t>(gy0) * grid_width +
+                                                                         static_cast<std::size_t>(sample_column_[2 * u]))),
+                                            q);
         // Every plane has the same tolerance at a given range.
         const float tolerance = candidates_[0].criterion.planeTolerance(range_sq);
         if (around[0] == around[1] && around[0] == around[2] && around[0] == around[3]) {
@@ -172,6 +179,20 @@ bool RegionBuilder::sortBySize(std::uint32_t min_inliers) {
   return changed;
 }
 
+bool RegionBuilder::dropUnfitPlanes(const Params& params) {
+  remap_.assign(candidates_.size() + 1, 0);
+  kept_.clear();
+  for (std::size_t k = 0; k < candidates_.size(); ++k) {
+    const PlaneFit fit = candidates_[k].sums.fit();
+    if (!fit.valid || fit.curvature > params.maximum_curvature || !facesSensor(fit.normal, fit.centroid)) continue;
+    kept_.push_back(candidates_[k]);
+    remap_[k + 1] = static_cast<std::uint32_t>(kept_.size());
+  }
+  const bool dropped = kept_.size() != candidates_.size();
+  candidates_.swap(kept_);
+  return dropped;
+}
+
 void RegionBuilder::renumber(std::vector<std::uint32_t>& labels) {
   for (Candidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
   const std::size_t n = labels.size();
@@ -189,9 +210,10 @@ void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& la
   // Does pixel `to`, next to `from`, join plane k (Eqs. 1-3 with the plane's thresholds)?
   const auto fits = [&](std::uint32_t k, std::size_t from, std::size_t to, float& distance) {
     const FloodCriterion& c = candidates_[k - 1].criterion;
+    const Vec3 p = Vec3::load(full.point(from));
     const Vec3 q = Vec3::load(full.point(to));
-    const float range_sq = q.squaredNorm();
-    if (!(squaredEuclideanDistance(Vec3::load(full.point(from)), q) < c.euclideanToleranceSq(range_sq))) return false;
+    const float range_sq = noiseRangeSq(p, q);
+    if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
     distance = planeDistance(c.normal, c.offset, q);
     return distance < c.planeTolerance(range_sq);
   };

@@ -22,6 +22,17 @@ struct DepthNoise {
   }
 };
 
+/// The squared range at which to take the depth noise when pixel q is tested from its
+/// neighbour p: the nearer of the two. On one surface the two ranges are nearly equal, so
+/// this changes nothing there; but an outlier far along its ray (a multipath return 100 km
+/// out) must not widen its own tolerances by c r^2 until it fits every plane. A hole at p
+/// (NaN) leaves q's own range.
+inline float noiseRangeSq(const Vec3& p, const Vec3& q) {
+  const float p_sq = p.squaredNorm();
+  const float q_sq = q.squaredNorm();
+  return p_sq < q_sq ? p_sq : q_sq;
+}
+
 /// Eq. 2: f_plane(p_seed, p') = |(P_seed - P') . n_seed|, written with the plane's offset
 /// d = -n . P_seed so that the flood can replace (n, d) by a least-squares refit.
 inline float planeDistance(const Vec3& normal, float offset, const Vec3& point) {

@@ -49,6 +49,10 @@ class RegionBuilder {
   // Drops candidates under min_inliers and orders the rest by size; remap_ maps old numbers
   // to new. Returns whether any number changed.
   bool sortBySize(std::uint32_t min_inliers);
+  // Drops candidates whose final inliers no longer make an acceptable plane (invalid fit,
+  // curvature over the maximum, facing away), keeping the order; remap_ as sortBySize.
+  // Returns whether any was dropped.
+  bool dropUnfitPlanes(const Params& params);
   // Applies remap_ to a label image and finds each plane's first pixel again.
   void renumber(std::vector<std::uint32_t>& labels);
   void refine(const PointGrid& full, std::vector<std::uint32_t>& labels);

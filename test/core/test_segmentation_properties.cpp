@@ -770,7 +770,8 @@ TEST(SegmentationProperties, PointsAHundredKilometresAwayLeaveTheNearPlanesAlone
   expectTheNearPlanesAlone(scene, seg);
 }
 
-// BUG (library, depth noise model; the same with any subsampling): with the default
+// Regression (fixed by noiseRangeSq in distance_function.h: the nearer of two neighbours sets
+// the noise tolerance). Was: with the default
 // depth_noise_coefficient c = 0.0019, the flood's tolerances for a pixel are evaluated at that
 // pixel's own measured range r: plane distance < 3 c r^2 and neighbour distance < about
 // (3 sqrt(2) c + ...) r^2, i.e. 5.7e7 m and 8e7 m at r = 1e5 m. So a far outlier next to a
@@ -778,7 +779,7 @@ TEST(SegmentationProperties, PointsAHundredKilometresAwayLeaveTheNearPlanesAlone
 // Input: roomWithFarPoints() (room corner 320 x 240, 3 mm noise, 80 of 76800 pixels at 1e5 m),
 // default parameters. Observed: 0 planes (all three near planes lost; with c = 0 all three
 // are found, see the test above). Expected: the 3 planes, IoU > 0.9, no far pixel an inlier.
-TEST(SegmentationProperties, DISABLED_PointsAHundredKilometresAwayLeaveTheNearPlanesAlone) {
+TEST(SegmentationProperties, PointsAHundredKilometresAwayLeaveTheNearPlanesAlone) {
   const FarPointScene scene = roomWithFarPoints();
   Seg seg;
   expectTheNearPlanesAlone(scene, seg);
@@ -834,7 +835,7 @@ TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAloneWithFixedThres
   }
 }
 
-// BUG (library; the cause of the test above, minimal input): one outlier pixel takes over or
+// Regression (fixed as above), the minimal input. Was: one outlier pixel takes over or
 // removes a near plane under the default depth noise model.
 // Input: floorWithOnePixelAt(wall, floorPixelRay() * R), i.e. pixel (81, 101) pushed along
 // its own ray from 3.3 m to R; default parameters. Observed:
@@ -847,7 +848,7 @@ TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAloneWithFixedThres
 //     R = 1e5: (-0.061, 0.952, -0.300, 3.02).
 // Expected: the floor found as (0, -1, 0, 1) within 1 degree, the outlier in no plane (what
 // setDepthNoiseCoefficient(0) gives in every case, test above).
-TEST(SegmentationProperties, DISABLED_OneFarOutlierPixelLeavesTheFloorAlone) {
+TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAlone) {
   for (const bool wall : {true, false}) {
     for (const float range : {1e2f, 1e3f, 1e4f, 1e5f}) {
       SCOPED_TRACE(std::string(wall ? "floor and wall" : "floor") + ", outlier at " + std::to_string(range) + " m");
@@ -862,7 +863,7 @@ TEST(SegmentationProperties, DISABLED_OneFarOutlierPixelLeavesTheFloorAlone) {
   }
 }
 
-// BUG (library, region output): a plane whose final least-squares fit is degenerate is
+// Regression (fixed by RegionBuilder::dropUnfitPlanes). Was: a plane whose final fit is degenerate is
 // reported anyway, with PlaneFit's default normal (0, 0, 1), zero covariance eigenvalues and
 // d = -centroid.z. RegionBuilder::build checks `fit.valid` (and facesSensor, curvature) only
 // for the clusters of the segmented grid; the pixels added afterwards (full-resolution
@@ -875,7 +876,7 @@ TEST(SegmentationProperties, DISABLED_OneFarOutlierPixelLeavesTheFloorAlone) {
 //   of PlaneSums::fit (kLineEigenvalueRatio). Subsampling 1: 1 plane, the floor is lost.
 // Expected: never a plane with an invalid fit: the floor as (0, -1, 0, 1) (the far point is
 // on it), or at least every reported normal the inliers' least-squares normal, facing the sensor.
-TEST(SegmentationProperties, DISABLED_NeverReportsAPlaneWithADegenerateFit) {
+TEST(SegmentationProperties, NeverReportsAPlaneWithADegenerateFit) {
   for (const int subsampling : {1, 2}) {
     SCOPED_TRACE("subsampling " + std::to_string(subsampling));
     const Cloud::Ptr cloud = floorWithOnePixelAt(true, Eigen::Vector3f(0.0f, 1.0f, 1e5f));
@@ -889,7 +890,7 @@ TEST(SegmentationProperties, DISABLED_NeverReportsAPlaneWithADegenerateFit) {
   }
 }
 
-// BUG (library, region output): a reported plane can be more curved than
+// Regression (fixed by RegionBuilder::dropUnfitPlanes). Was: a reported plane could be more curved than
 // setMaximumCurvature allows ("Largest curvature ... of a reported plane"). The curvature is
 // tested on the cluster of the segmented grid; full-resolution labelling (sub-sampling > 1)
 // and refinement add pixels afterwards without a second test.
@@ -901,7 +902,7 @@ TEST(SegmentationProperties, DISABLED_NeverReportsAPlaneWithADegenerateFit) {
 // Also seen at subsampling 1 through refinement, on random clouds with junk points: a plane
 // of curvature 3.2e-5 before refinement and 1.19e-3 after it, for a maximum of 1e-3.
 // Expected: no reported plane with curvature above the maximum.
-TEST(SegmentationProperties, DISABLED_ReportedPlanesRespectTheMaximumCurvature) {
+TEST(SegmentationProperties, ReportedPlanesRespectTheMaximumCurvature) {
   const Cloud::Ptr cloud = floorWithOnePixelAt(false, 100.0f * floorPixelRay());
   Seg seg;
   seg.setSubsampling(2);
