@@ -819,13 +819,15 @@ int planeAlong(const Output& out, const Eigen::Vector3f& normal) {
   return -1;
 }
 
-TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAloneWithFixedThresholds) {
+// One pixel of the floor pushed along its ray to 1e2 ... 1e5 m: the floor (and the wall when
+// there is one) must still be found, the outlier in no plane.
+void expectOneFarOutlierLeavesTheFloorAlone(double depth_noise_coefficient) {
   for (const bool wall : {true, false}) {
     for (const float range : {1e2f, 1e3f, 1e4f, 1e5f}) {
       SCOPED_TRACE(std::string(wall ? "floor and wall" : "floor") + ", outlier at " + std::to_string(range) + " m");
       const Cloud::Ptr cloud = floorWithOnePixelAt(wall, range * floorPixelRay());
       Seg seg;
-      seg.setDepthNoiseCoefficient(0.0);
+      seg.setDepthNoiseCoefficient(depth_noise_coefficient);
       const Output out = segmentAndRefine(seg, cloud);
       ASSERT_TRUE(satisfiesInvariants(*cloud, out, seg.getParams()));
       EXPECT_EQ(out.planes(), wall ? 2u : 1u);
@@ -833,6 +835,10 @@ TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAloneWithFixedThres
       EXPECT_EQ((*out.labels)[kFloorPixel].label, 0u) << "the outlier is an inlier";
     }
   }
+}
+
+TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAloneWithFixedThresholds) {
+  expectOneFarOutlierLeavesTheFloorAlone(0.0);
 }
 
 // Regression (fixed as above), the minimal input. Was: one outlier pixel takes over or
@@ -849,18 +855,7 @@ TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAloneWithFixedThres
 // Expected: the floor found as (0, -1, 0, 1) within 1 degree, the outlier in no plane (what
 // setDepthNoiseCoefficient(0) gives in every case, test above).
 TEST(SegmentationProperties, OneFarOutlierPixelLeavesTheFloorAlone) {
-  for (const bool wall : {true, false}) {
-    for (const float range : {1e2f, 1e3f, 1e4f, 1e5f}) {
-      SCOPED_TRACE(std::string(wall ? "floor and wall" : "floor") + ", outlier at " + std::to_string(range) + " m");
-      const Cloud::Ptr cloud = floorWithOnePixelAt(wall, range * floorPixelRay());
-      Seg seg;
-      const Output out = segmentAndRefine(seg, cloud);
-      ASSERT_TRUE(satisfiesInvariants(*cloud, out, seg.getParams()));
-      EXPECT_EQ(out.planes(), wall ? 2u : 1u);
-      EXPECT_GE(planeAlong(out, Eigen::Vector3f(0, -1, 0)), 0) << "no floor";
-      EXPECT_EQ((*out.labels)[kFloorPixel].label, 0u) << "the outlier is an inlier";
-    }
-  }
+  expectOneFarOutlierLeavesTheFloorAlone(Params().depth_noise_coefficient);
 }
 
 // Regression (fixed by RegionBuilder::dropUnfitPlanes). Was: a plane whose final fit is degenerate is
