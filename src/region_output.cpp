@@ -29,6 +29,11 @@ FloodCriterion planeCriterion(const PlaneFit& fit, const Params& params, float a
   return c;
 }
 
+// What a reported plane must be: a valid fit, no more curved than allowed, facing the sensor.
+bool acceptablePlane(const PlaneFit& fit, const Params& params) {
+  return fit.valid && fit.curvature <= params.maximum_curvature && facesSensor(fit.normal, fit.centroid);
+}
+
 }  // namespace
 
 void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int subsampling,
@@ -43,7 +48,7 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
     // With s = 1 the counts are exact and refinement only adds pixels: drop small ones now.
     if (subsampling == 1 && sums.count < params.min_inliers) continue;
     const PlaneFit fit = sums.fit();
-    if (!fit.valid || fit.curvature > params.maximum_curvature || !facesSensor(fit.normal, fit.centroid)) continue;
+    if (!acceptablePlane(fit, params)) continue;
     Candidate candidate;
     candidate.criterion = planeCriterion(fit, params, angular_pitch);
     if (subsampling == 1) candidate.sums = sums;
@@ -57,24 +62,25 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
   out.width = full.width;
   out.height = full.height;
   out.labels.resize(full.size());
+  // The plane tests above ran on the merged clusters; full-resolution labelling and
+  // refinement add pixels, which can tip a plane over the curvature limit or, rarely (an
+  // outlier far along a ray), make its fit degenerate. The last sort of the candidates
+  // checks them again, so that what is reported passes. (With s = 1 and no refinement the
+  // labels add no pixel to the clusters, and there is nothing to check again.)
   if (subsampling == 1) {
     // Counts are known: number the planes by size before writing any label.
-    sortBySize(params.min_inliers);
+    sortBySize(params.min_inliers, nullptr);
     for (std::size_t s = 1; s < merged.segment_count; ++s) candidate_of_segment_[s] = remap_[candidate_of_segment_[s]];
     labelFullResolution(full, segmented, subsampling, merged, out.labels);
   } else {
     labelFullResolution(full, segmented, subsampling, merged, out.labels);
-    if (sortBySize(params.min_inliers)) renumber(out.labels);
+    if (sortBySize(params.min_inliers, refine ? nullptr : &params)) renumber(out.labels);
   }
-
   if (refine) {
     this->refine(full, out.labels);
-    if (sortBySize(0)) renumber(out.labels);  // refinement may have changed the order by size
+    // Refinement may also have changed the order by size.
+    if (sortBySize(0, &params)) renumber(out.labels);
   }
-  // The plane tests above ran on the merged clusters; full-resolution labelling and
-  // refinement add pixels, which can tip a plane over the curvature limit or, rarely (an
-  // outlier far along a ray), make its fit degenerate. What is reported must pass them.
-  if (dropUnfitPlanes(params)) renumber(out.labels);
 
   out.planes.clear();
   for (const Candidate& candidate : candidates_) {
@@ -112,7 +118,8 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   for (int v = 0; v < full.height; ++v) {
     const int gy0 = v / subsampling;
     const int gy1 = std::min(gy0 + 1, grid_height - 1);
-    const std::int32_t* row0 = segment + static_cast<std::size_t>(gy0) * grid_width;
+    const std::size_t sample_row = static_cast<std::size_t>(gy0) * grid_width;
+    const std::int32_t* row0 = segment + sample_row;
     const std::int32_t* row1 = segment + static_cast<std::size_t>(gy1) * grid_width;
     std::uint32_t* out_row = labels.data() + static_cast<std::size_t>(v) * full.width;
     for (int u = 0; u < full.width; ++u) {
@@ -124,9 +131,8 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
         const std::size_t index = static_cast<std::size_t>(v) * full.width + u;
         const Vec3 q = Vec3::load(full.point(index));
         // The nearer of the pixel and the sample next to it sets the noise tolerance.
-        const float range_sq = noiseRangeSq(Vec3::load(segmented.point(static_cast<std::size_t>(gy0) * grid_width +
-                                                                         static_cast<std::size_t>(sample_column_[2 * u]))),
-                                            q);
+        const Vec3 sample = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(sample_column_[2 * u])));
+        const float range_sq = noiseRangeSq(sample, q);
         // Every plane has the same tolerance at a given range.
         const float tolerance = candidates_[0].criterion.planeTolerance(range_sq);
         if (around[0] == around[1] && around[0] == around[2] && around[0] == around[3]) {
@@ -157,7 +163,7 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   }
 }
 
-bool RegionBuilder::sortBySize(std::uint32_t min_inliers) {
+bool RegionBuilder::sortBySize(std::uint32_t min_inliers, const Params* recheck) {
   order_.resize(candidates_.size());
   std::iota(order_.begin(), order_.end(), 0);
   std::stable_sort(order_.begin(), order_.end(),
@@ -167,7 +173,7 @@ bool RegionBuilder::sortBySize(std::uint32_t min_inliers) {
   bool changed = false;
   for (std::size_t rank = 0; rank < order_.size(); ++rank) {
     const Candidate& candidate = candidates_[order_[rank]];
-    if (candidate.sums.count < min_inliers) {
+    if (candidate.sums.count < min_inliers || (recheck && !acceptablePlane(candidate.sums.fit(), *recheck))) {
       changed = true;
       continue;
     }
@@ -177,20 +183,6 @@ bool RegionBuilder::sortBySize(std::uint32_t min_inliers) {
   }
   candidates_.swap(kept_);
   return changed;
-}
-
-bool RegionBuilder::dropUnfitPlanes(const Params& params) {
-  remap_.assign(candidates_.size() + 1, 0);
-  kept_.clear();
-  for (std::size_t k = 0; k < candidates_.size(); ++k) {
-    const PlaneFit fit = candidates_[k].sums.fit();
-    if (!fit.valid || fit.curvature > params.maximum_curvature || !facesSensor(fit.normal, fit.centroid)) continue;
-    kept_.push_back(candidates_[k]);
-    remap_[k + 1] = static_cast<std::uint32_t>(kept_.size());
-  }
-  const bool dropped = kept_.size() != candidates_.size();
-  candidates_.swap(kept_);
-  return dropped;
 }
 
 void RegionBuilder::renumber(std::vector<std::uint32_t>& labels) {

@@ -46,13 +46,11 @@ class RegionBuilder {
   };
   void labelFullResolution(const PointGrid& full, const PointGrid& segmented, int subsampling,
                            const MergedSegments& merged, std::vector<std::uint32_t>& labels);
-  // Drops candidates under min_inliers and orders the rest by size; remap_ maps old numbers
-  // to new. Returns whether any number changed.
-  bool sortBySize(std::uint32_t min_inliers);
-  // Drops candidates whose final inliers no longer make an acceptable plane (invalid fit,
-  // curvature over the maximum, facing away), keeping the order; remap_ as sortBySize.
-  // Returns whether any was dropped.
-  bool dropUnfitPlanes(const Params& params);
+  // Drops candidates under min_inliers and, when `recheck` is given, those whose inliers no
+  // longer make an acceptable plane under its parameters (invalid fit, curvature over the
+  // maximum, facing away); orders the rest by size. remap_ maps old numbers to new. Returns
+  // whether any number changed.
+  bool sortBySize(std::uint32_t min_inliers, const Params* recheck);
   // Applies remap_ to a label image and finds each plane's first pixel again.
   void renumber(std::vector<std::uint32_t>& labels);
   void refine(const PointGrid& full, std::vector<std::uint32_t>& labels);
