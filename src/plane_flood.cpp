@@ -24,20 +24,22 @@ class FloodVisitor {
         frontier_(frontier),
         neighbour_mark_(neighbour_mark),
         edges_(edges),
+        self_(segments[label]),
+        criterion_(segments[label].criterion),
         next_refit_(static_cast<double>(first_refit)),
         uncertainty_(seed_uncertainty),
         same_plane_cosine_(std::cos(static_cast<float>(angular_threshold))) {}
 
   // Eq. 1 with Eq. 4: `to` joins from its neighbour `from` when its point is a 3-D neighbour
   // of from's, lies within the plane tolerance and fits this plane better than its owner's.
-  bool join(std::size_t from, std::size_t to) {
+  FLOODPLANE_ALWAYS_INLINE bool join(std::size_t from, std::size_t to) {
     ++attempts_;
     const std::int32_t owner = buffer_.label(to);
     if (owner == label_) return false;
     const Vec3 p = Vec3::load(grid_.point(from));
     const Vec3 q = Vec3::load(grid_.point(to));
     const float range_sq = noiseRangeSq(p, q);
-    const FloodCriterion& c = segments_[label_].criterion;
+    const FloodCriterion& c = criterion_;
     // Eq. 3; written so that a hole (NaN) fails it.
     if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
     const float distance = planeDistance(c.normal, c.offset, q);  // Eq. 2
@@ -58,9 +60,8 @@ class FloodVisitor {
       ++taken_over_;
     }
     buffer_.claim(to, label_, distance);
-    Segment& self = segments_[label_];
-    self.sums.add(q);
-    if (self.sums.count >= next_refit_) {
+    self_.sums.add(q);
+    if (self_.sums.count >= next_refit_) {
       refit();
       next_refit_ *= 2.0;
     }
@@ -69,7 +70,7 @@ class FloodVisitor {
 
   // Called by the fill for every finished span: the segment's bounding box.
   void span(int y, int x_begin, int x_end) {
-    PixelBox& box = segments_[label_].box;
+    PixelBox& box = self_.box;
     box.include(x_begin, y);
     box.include(x_end, y);
   }
@@ -79,14 +80,14 @@ class FloodVisitor {
   // single image rows, whose points lie on a line (or, with depth noise, on the fan of that
   // row's viewing rays), and a plane through them has an arbitrary tilt about the line.
   bool refit() {
-    Segment& self = segments_[label_];
-    const PlaneFit fit = self.sums.fit();
-    const double uncertainty = normalUncertainty(fit, self.sums.count);
+    const PlaneFit fit = self_.sums.fit();
+    const double uncertainty = normalUncertainty(fit, self_.sums.count);
     if (!(uncertainty < uncertainty_) || !facesSensor(fit.normal, fit.centroid)) return false;
     uncertainty_ = uncertainty;
-    self.criterion.normal = {static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
-                             static_cast<float>(fit.normal.z())};
-    self.criterion.offset = static_cast<float>(fit.offset);
+    criterion_.normal = {static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
+                         static_cast<float>(fit.normal.z())};
+    criterion_.offset = static_cast<float>(fit.offset);
+    self_.criterion = criterion_;
     return true;
   }
 
@@ -99,7 +100,7 @@ class FloodVisitor {
   // first, and that one-pixel band can cut a third plane in two (a floor flooded across by a
   // ramp's plane along their junction line).
   float takeoverMargin(std::int32_t owner, float tolerance) const {
-    const Vec3& mine = segments_[label_].criterion.normal;
+    const Vec3& mine = criterion_.normal;
     const Vec3& theirs = segments_[owner].criterion.normal;
     return std::abs(mine.dot(theirs)) >= same_plane_cosine_ ? kTakeoverMargin * tolerance : 0.0f;
   }
@@ -119,6 +120,8 @@ class FloodVisitor {
   std::vector<std::pair<std::size_t, std::size_t>>& frontier_;
   std::vector<std::int32_t>& neighbour_mark_;
   std::vector<SegmentEdge>& edges_;
+  Segment& self_;             // segments_[label_]; the vector does not grow during a flood
+  FloodCriterion criterion_;  // self_.criterion, read on every join; refit() keeps both in step
   double next_refit_;
   double uncertainty_;  // of the current normal [rad]
   const float same_plane_cosine_;

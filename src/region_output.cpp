@@ -106,61 +106,82 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
     return;
   }
 
-  // Each full-resolution pixel takes the best-fitting plane of the four samples around it.
+  // Each full-resolution pixel takes the best-fitting plane of the four samples around it:
+  // those of the grid cell it lies in (its sample and the next ones right and down). All s
+  // pixels of a cell's row share the four, so they are looked up once a cell, and a cell
+  // whose samples have one plane (most cells) tests its pixels against that plane alone.
   const int grid_width = segmented.width;
   const int grid_height = segmented.height;
-  // The samples' columns per pixel column, once per frame rather than two divisions a pixel.
-  sample_column_.resize(static_cast<std::size_t>(full.width) * 2);
-  for (int u = 0; u < full.width; ++u) {
-    sample_column_[2 * u] = u / subsampling;
-    sample_column_[2 * u + 1] = std::min(u / subsampling + 1, grid_width - 1);
-  }
+  // The pixels of a row that go to one plane one after another are summed here and added to
+  // the plane's sums when the plane changes, not pixel by pixel into the plane's own sums.
+  PlaneSums run;
+  std::uint32_t run_plane = 0;
+  const auto take = [&](std::uint32_t k, std::size_t index, const Vec3& q) {
+    if (k != run_plane) {
+      if (run_plane != 0) candidates_[run_plane - 1].sums.merge(run);
+      run = PlaneSums();
+      run_plane = k;
+      // Runs come in raster order: the first run of a plane starts at its first pixel.
+      if (candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = index;
+    }
+    run.add(q);
+  };
+  // Every plane has the same tolerance at a given range.
+  const FloodCriterion* criteria = candidates_.empty() ? nullptr : &candidates_[0].criterion;
   for (int v = 0; v < full.height; ++v) {
     const int gy0 = v / subsampling;
     const int gy1 = std::min(gy0 + 1, grid_height - 1);
     const std::size_t sample_row = static_cast<std::size_t>(gy0) * grid_width;
     const std::int32_t* row0 = segment + sample_row;
     const std::int32_t* row1 = segment + static_cast<std::size_t>(gy1) * grid_width;
-    std::uint32_t* out_row = labels.data() + static_cast<std::size_t>(v) * full.width;
-    for (int u = 0; u < full.width; ++u) {
-      const int gx0 = sample_column_[2 * u];
-      const int gx1 = sample_column_[2 * u + 1];
-      const std::uint32_t around[4] = {table[row0[gx0]], table[row0[gx1]], table[row1[gx0]], table[row1[gx1]]};
-      std::uint32_t best = 0;
-      if ((around[0] | around[1] | around[2] | around[3]) != 0) {
-        const std::size_t index = static_cast<std::size_t>(v) * full.width + u;
+    const std::size_t row_start = static_cast<std::size_t>(v) * full.width;
+    std::uint32_t* out_row = labels.data() + row_start;
+    for (int gx = 0; gx < grid_width; ++gx) {
+      const int u_begin = gx * subsampling;
+      const int u_end = std::min(u_begin + subsampling, full.width);
+      const int gx1 = std::min(gx + 1, grid_width - 1);
+      const std::uint32_t around[4] = {table[row0[gx]], table[row0[gx1]], table[row1[gx]], table[row1[gx1]]};
+      if ((around[0] | around[1] | around[2] | around[3]) == 0) {
+        std::fill(out_row + u_begin, out_row + u_end, 0u);
+        continue;
+      }
+      // The nearer of the pixel and the cell's sample sets the noise tolerance.
+      const Vec3 sample = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(gx)));
+      if (around[0] == around[1] && around[0] == around[2] && around[0] == around[3]) {
+        // Inside a region: one plane to test.
+        const std::uint32_t k = around[0];
+        const FloodCriterion& c = candidates_[k - 1].criterion;
+        for (int u = u_begin; u < u_end; ++u) {
+          const std::size_t index = row_start + static_cast<std::size_t>(u);
+          const Vec3 q = Vec3::load(full.point(index));
+          const float tolerance = criteria->planeTolerance(noiseRangeSq(sample, q));
+          const bool fits = planeDistance(c.normal, c.offset, q) < tolerance;
+          if (fits) take(k, index, q);
+          out_row[u] = fits ? k : 0u;
+        }
+        continue;
+      }
+      for (int u = u_begin; u < u_end; ++u) {
+        const std::size_t index = row_start + static_cast<std::size_t>(u);
         const Vec3 q = Vec3::load(full.point(index));
-        // The nearer of the pixel and the sample next to it sets the noise tolerance.
-        const Vec3 sample = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(sample_column_[2 * u])));
-        const float range_sq = noiseRangeSq(sample, q);
-        // Every plane has the same tolerance at a given range.
-        const float tolerance = candidates_[0].criterion.planeTolerance(range_sq);
-        if (around[0] == around[1] && around[0] == around[2] && around[0] == around[3]) {
-          // Inside a region (most pixels): one plane to test.
-          const FloodCriterion& c = candidates_[around[0] - 1].criterion;
-          if (planeDistance(c.normal, c.offset, q) < tolerance) best = around[0];
-        } else {
-          float best_distance = tolerance;
-          for (int a = 0; a < 4; ++a) {
-            const std::uint32_t k = around[a];
-            if (k == 0 || k == best) continue;
-            const FloodCriterion& c = candidates_[k - 1].criterion;
-            const float distance = planeDistance(c.normal, c.offset, q);
-            if (distance < best_distance) {
-              best_distance = distance;
-              best = k;
-            }
+        float best_distance = criteria->planeTolerance(noiseRangeSq(sample, q));
+        std::uint32_t best = 0;
+        for (int a = 0; a < 4; ++a) {
+          const std::uint32_t k = around[a];
+          if (k == 0 || k == best) continue;
+          const FloodCriterion& c = candidates_[k - 1].criterion;
+          const float distance = planeDistance(c.normal, c.offset, q);
+          if (distance < best_distance) {
+            best_distance = distance;
+            best = k;
           }
         }
-        if (best != 0) {
-          Candidate& chosen = candidates_[best - 1];
-          chosen.sums.add(q);
-          if (chosen.first_pixel == kNoPixel) chosen.first_pixel = index;
-        }
+        if (best != 0) take(best, index, q);
+        out_row[u] = best;
       }
-      out_row[u] = best;
     }
   }
+  if (run_plane != 0) candidates_[run_plane - 1].sums.merge(run);
 }
 
 bool RegionBuilder::sortBySize(std::uint32_t min_inliers, const Params* recheck) {

@@ -55,7 +55,6 @@ class RegionBuilder {
   void renumber(std::vector<std::uint32_t>& labels);
   void refine(const PointGrid& full, std::vector<std::uint32_t>& labels);
 
-  std::vector<int> sample_column_;  // per full-resolution column: its two sample columns
   std::vector<Candidate> candidates_;
   std::vector<Candidate> kept_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k - 1]

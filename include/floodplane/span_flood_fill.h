@@ -3,6 +3,14 @@
 #include <cstddef>
 #include <vector>
 
+/// For a visitor's join(): it runs once or twice per pixel of every flood, from three places
+/// in the fill, and GCC does not inline a function of its size there by itself.
+#if defined(__GNUC__) || defined(__clang__)
+#define FLOODPLANE_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define FLOODPLANE_ALWAYS_INLINE inline
+#endif
+
 namespace floodplane {
 
 /// A run of pixels still to scan: row `y` over columns [x_begin, x_end], reached from row
