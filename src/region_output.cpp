@@ -112,20 +112,6 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   // whose samples have one plane (most cells) tests its pixels against that plane alone.
   const int grid_width = segmented.width;
   const int grid_height = segmented.height;
-  // The pixels of a row that go to one plane one after another are summed here and added to
-  // the plane's sums when the plane changes, not pixel by pixel into the plane's own sums.
-  PlaneSums run;
-  std::uint32_t run_plane = 0;
-  const auto take = [&](std::uint32_t k, std::size_t index, const Vec3& q) {
-    if (k != run_plane) {
-      if (run_plane != 0) candidates_[run_plane - 1].sums.merge(run);
-      run = PlaneSums();
-      run_plane = k;
-      // Runs come in raster order: the first run of a plane starts at its first pixel.
-      if (candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = index;
-    }
-    run.add(q);
-  };
   // Every plane has the same tolerance at a given range.
   const FloodCriterion* criteria = candidates_.empty() ? nullptr : &candidates_[0].criterion;
   for (int v = 0; v < full.height; ++v) {
@@ -152,18 +138,14 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
         const std::uint32_t k = around[0];
         const FloodCriterion& c = candidates_[k - 1].criterion;
         for (int u = u_begin; u < u_end; ++u) {
-          const std::size_t index = row_start + static_cast<std::size_t>(u);
-          const Vec3 q = Vec3::load(full.point(index));
+          const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
           const float tolerance = criteria->planeTolerance(noiseRangeSq(sample, q));
-          const bool fits = planeDistance(c.normal, c.offset, q) < tolerance;
-          if (fits) take(k, index, q);
-          out_row[u] = fits ? k : 0u;
+          out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
         }
         continue;
       }
       for (int u = u_begin; u < u_end; ++u) {
-        const std::size_t index = row_start + static_cast<std::size_t>(u);
-        const Vec3 q = Vec3::load(full.point(index));
+        const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
         float best_distance = criteria->planeTolerance(noiseRangeSq(sample, q));
         std::uint32_t best = 0;
         for (int a = 0; a < 4; ++a) {
@@ -176,12 +158,31 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
             best = k;
           }
         }
-        if (best != 0) take(best, index, q);
         out_row[u] = best;
       }
     }
+    // The sums in a second pass over the row, so that the labelling loops above stay short.
+    addRowToSums(full, row_start, out_row);
   }
-  if (run_plane != 0) candidates_[run_plane - 1].sums.merge(run);
+}
+
+void RegionBuilder::addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row) {
+  // Most of a row is long runs of one label; each run is summed in one tight loop.
+  const int width = full.width;
+  int u = 0;
+  while (u < width) {
+    const std::uint32_t k = row[u];
+    int end = u + 1;
+    while (end < width && row[end] == k) ++end;
+    if (k != 0) {
+      Candidate& candidate = candidates_[k - 1];
+      // Rows come in raster order: a plane's first run starts at its first pixel.
+      if (candidate.first_pixel == kNoPixel) candidate.first_pixel = row_start + static_cast<std::size_t>(u);
+      candidate.sums.addRun(full.point(row_start + static_cast<std::size_t>(u)), full.stride,
+                            static_cast<std::size_t>(end - u));
+    }
+    u = end;
+  }
 }
 
 bool RegionBuilder::sortBySize(std::uint32_t min_inliers, const Params* recheck) {

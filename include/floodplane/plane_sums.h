@@ -61,6 +61,21 @@ struct PlaneSums {
     sxx += x * x; sxy += x * y; sxz += x * z;
     syy += y * y; syz += y * z; szz += z * z;
   }
+  /// Adds n points, `stride` floats apart from `points` on. Local accumulators, so that a
+  /// run of pixels does not go through memory for every point.
+  void addRun(const float* points, std::size_t stride, std::size_t n) {
+    double ax = 0.0, ay = 0.0, az = 0.0, axx = 0.0, axy = 0.0, axz = 0.0, ayy = 0.0, ayz = 0.0, azz = 0.0;
+    for (std::size_t i = 0; i < n; ++i, points += stride) {
+      const double x = points[0], y = points[1], z = points[2];
+      ax += x; ay += y; az += z;
+      axx += x * x; axy += x * y; axz += x * z;
+      ayy += y * y; ayz += y * z; azz += z * z;
+    }
+    count += static_cast<double>(n);
+    sx += ax; sy += ay; sz += az;
+    sxx += axx; sxy += axy; sxz += axz;
+    syy += ayy; syz += ayz; szz += azz;
+  }
   void remove(const Vec3& p) {
     const double x = p.x, y = p.y, z = p.z;
     count -= 1.0;

@@ -46,6 +46,9 @@ class RegionBuilder {
   };
   void labelFullResolution(const PointGrid& full, const PointGrid& segmented, int subsampling,
                            const MergedSegments& merged, std::vector<std::uint32_t>& labels);
+  // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
+  // each plane's first pixel.
+  void addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row);
   // Drops candidates under min_inliers and, when `recheck` is given, those whose inliers no
   // longer make an acceptable plane under its parameters (invalid fit, curvature over the
   // maximum, facing away); orders the rest by size. remap_ maps old numbers to new. Returns
