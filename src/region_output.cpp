@@ -107,62 +107,68 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   }
 
   // Each full-resolution pixel takes the best-fitting plane of the four samples around it:
-  // those of the grid cell it lies in (its sample and the next ones right and down). All s
-  // pixels of a cell's row share the four, so they are looked up once a cell, and a cell
-  // whose samples have one plane (most cells) tests its pixels against that plane alone.
+  // those of the grid cell it lies in (its sample and the next ones right and down). What a
+  // cell holds is worked out once for the s image rows that cross it; a cell whose samples
+  // have one plane (most cells) tests its pixels against that plane alone.
   const int grid_width = segmented.width;
   const int grid_height = segmented.height;
   // Every plane has the same tolerance at a given range.
   const FloodCriterion* criteria = candidates_.empty() ? nullptr : &candidates_[0].criterion;
-  for (int v = 0; v < full.height; ++v) {
-    const int gy0 = v / subsampling;
-    const int gy1 = std::min(gy0 + 1, grid_height - 1);
-    const std::size_t sample_row = static_cast<std::size_t>(gy0) * grid_width;
+  cells_.resize(static_cast<std::size_t>(grid_width));
+  for (int gy = 0; gy < grid_height; ++gy) {
+    const std::size_t sample_row = static_cast<std::size_t>(gy) * grid_width;
     const std::int32_t* row0 = segment + sample_row;
-    const std::int32_t* row1 = segment + static_cast<std::size_t>(gy1) * grid_width;
-    const std::size_t row_start = static_cast<std::size_t>(v) * full.width;
-    std::uint32_t* out_row = labels.data() + row_start;
+    const std::int32_t* row1 = segment + static_cast<std::size_t>(std::min(gy + 1, grid_height - 1)) * grid_width;
     for (int gx = 0; gx < grid_width; ++gx) {
-      const int u_begin = gx * subsampling;
-      const int u_end = std::min(u_begin + subsampling, full.width);
       const int gx1 = std::min(gx + 1, grid_width - 1);
-      const std::uint32_t around[4] = {table[row0[gx]], table[row0[gx1]], table[row1[gx]], table[row1[gx1]]};
-      if ((around[0] | around[1] | around[2] | around[3]) == 0) {
-        std::fill(out_row + u_begin, out_row + u_end, 0u);
-        continue;
-      }
-      // The nearer of the pixel and the cell's sample sets the noise tolerance.
-      const Vec3 sample = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(gx)));
-      if (around[0] == around[1] && around[0] == around[2] && around[0] == around[3]) {
-        // Inside a region: one plane to test.
-        const std::uint32_t k = around[0];
-        const FloodCriterion& c = candidates_[k - 1].criterion;
-        for (int u = u_begin; u < u_end; ++u) {
-          const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-          const float tolerance = criteria->planeTolerance(noiseRangeSq(sample, q));
-          out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
-        }
-        continue;
-      }
-      for (int u = u_begin; u < u_end; ++u) {
-        const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-        float best_distance = criteria->planeTolerance(noiseRangeSq(sample, q));
-        std::uint32_t best = 0;
-        for (int a = 0; a < 4; ++a) {
-          const std::uint32_t k = around[a];
-          if (k == 0 || k == best) continue;
+      Cell& cell = cells_[static_cast<std::size_t>(gx)];
+      cell.around = {table[row0[gx]], table[row0[gx1]], table[row1[gx]], table[row1[gx1]]};
+      const auto& k = cell.around;
+      cell.plane = (k[0] | k[1] | k[2] | k[3]) == 0                    ? 0u
+                   : (k[0] == k[1] && k[0] == k[2] && k[0] == k[3]) ? k[0]
+                                                                       : kMixedCell;
+      // The nearer of a pixel and its cell's sample sets the noise tolerance.
+      cell.sample_range_sq = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(gx))).squaredNorm();
+    }
+    const int v_end = std::min((gy + 1) * subsampling, full.height);
+    for (int v = gy * subsampling; v < v_end; ++v) {
+      const std::size_t row_start = static_cast<std::size_t>(v) * full.width;
+      std::uint32_t* out_row = labels.data() + row_start;
+      for (int gx = 0; gx < grid_width; ++gx) {
+        const Cell& cell = cells_[static_cast<std::size_t>(gx)];
+        const int u_begin = gx * subsampling;
+        const int u_end = std::min(u_begin + subsampling, full.width);
+        if (cell.plane == 0) {
+          std::fill(out_row + u_begin, out_row + u_end, 0u);
+        } else if (cell.plane != kMixedCell) {
+          const std::uint32_t k = cell.plane;
           const FloodCriterion& c = candidates_[k - 1].criterion;
-          const float distance = planeDistance(c.normal, c.offset, q);
-          if (distance < best_distance) {
-            best_distance = distance;
-            best = k;
+          for (int u = u_begin; u < u_end; ++u) {
+            const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
+            const float tolerance = criteria->planeTolerance(nearerRangeSq(cell.sample_range_sq, q.squaredNorm()));
+            out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
+          }
+        } else {
+          for (int u = u_begin; u < u_end; ++u) {
+            const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
+            float best_distance = criteria->planeTolerance(nearerRangeSq(cell.sample_range_sq, q.squaredNorm()));
+            std::uint32_t best = 0;
+            for (const std::uint32_t k : cell.around) {
+              if (k == 0 || k == best) continue;
+              const FloodCriterion& c = candidates_[k - 1].criterion;
+              const float distance = planeDistance(c.normal, c.offset, q);
+              if (distance < best_distance) {
+                best_distance = distance;
+                best = k;
+              }
+            }
+            out_row[u] = best;
           }
         }
-        out_row[u] = best;
       }
+      // The sums in a second pass over the row, so that the labelling loops above stay short.
+      addRowToSums(full, row_start, out_row);
     }
-    // The sums in a second pass over the row, so that the labelling loops above stay short.
-    addRowToSums(full, row_start, out_row);
   }
 }
 

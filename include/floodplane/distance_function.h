@@ -27,11 +27,9 @@ struct DepthNoise {
 /// this changes nothing there; but an outlier far along its ray (a multipath return 100 km
 /// out) must not widen its own tolerances by c r^2 until it fits every plane. A hole at p
 /// (NaN) leaves q's own range.
-inline float noiseRangeSq(const Vec3& p, const Vec3& q) {
-  const float p_sq = p.squaredNorm();
-  const float q_sq = q.squaredNorm();
-  return p_sq < q_sq ? p_sq : q_sq;
-}
+inline float nearerRangeSq(float p_sq, float q_sq) { return p_sq < q_sq ? p_sq : q_sq; }
+/// The same from the two points.
+inline float noiseRangeSq(const Vec3& p, const Vec3& q) { return nearerRangeSq(p.squaredNorm(), q.squaredNorm()); }
 
 /// Eq. 2: f_plane(p_seed, p') = |(P_seed - P') . n_seed|, written with the plane's offset
 /// d = -n . P_seed so that the flood can replace (n, d) by a least-squares refit.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -58,6 +59,15 @@ class RegionBuilder {
   void renumber(std::vector<std::uint32_t>& labels);
   void refine(const PointGrid& full, std::vector<std::uint32_t>& labels);
 
+  // A cell of the segmented grid, between samples (gx, gy) and (gx + 1, gy + 1): the planes
+  // of its four samples, and whether they are none (0), one (that plane) or several.
+  static constexpr std::uint32_t kMixedCell = 0xffffffffu;
+  struct Cell {
+    std::array<std::uint32_t, 4> around;
+    std::uint32_t plane;
+    float sample_range_sq;  // of sample (gx, gy)
+  };
+  std::vector<Cell> cells_;  // one row of cells
   std::vector<Candidate> candidates_;
   std::vector<Candidate> kept_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k - 1]
