@@ -3,6 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#define FLOODPLANE_FLOOD_BLOCKS 1
+#else
+#define FLOODPLANE_FLOOD_BLOCKS 0
+#endif
+
 namespace floodplane {
 
 namespace {
@@ -10,16 +17,20 @@ namespace {
 // Eq. 4's hysteresis, as a fraction of the plane tolerance (see DistanceBuffer::fitsBetter).
 constexpr float kTakeoverMargin = 0.25f;
 
+// Pixels a flood tests at once along a row (one SSE register of floats).
+constexpr int kBlock = 4;
+
 // The membership test of one flood, as spanFloodFill's visitor.
 class FloodVisitor {
  public:
-  FloodVisitor(const PointGrid& grid, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
+  FloodVisitor(const PointArrays& points, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
                std::vector<std::pair<std::size_t, std::size_t>>& frontier, std::vector<std::int32_t>& neighbour_mark,
                std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty,
                double angular_threshold)
-      : grid_(grid),
+      : points_(points),
         label_(label),
         buffer_(buffer),
+        labels_(buffer.labels().data()),
         segments_(segments),
         frontier_(frontier),
         neighbour_mark_(neighbour_mark),
@@ -36,9 +47,9 @@ class FloodVisitor {
     ++attempts_;
     const std::int32_t owner = buffer_.label(to);
     if (owner == label_) return false;
-    const Vec3 p = Vec3::load(grid_.point(from));
-    const Vec3 q = Vec3::load(grid_.point(to));
-    const float range_sq = noiseRangeSq(p, q);
+    const Vec3 p = points_.point(from);
+    const Vec3 q = points_.point(to);
+    const float range_sq = nearerRangeSq(points_.range_sq[from], points_.range_sq[to]);  // noiseRangeSq
     const FloodCriterion& c = criterion_;
     // Eq. 3; written so that a hole (NaN) fails it.
     if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
@@ -66,6 +77,36 @@ class FloodVisitor {
       next_refit_ *= 2.0;
     }
     return true;
+  }
+
+  // The fill's run along a row (see spanFloodFill): inside a plane, where most pixels are,
+  // blocks of kBlock pixels at once while every pixel of a block is unclaimed and passes;
+  // pixel by pixel through join() elsewhere, and for kBlock pixels after a block fails, so
+  // that a border costs little more than before. Labels, distances and refits come out as
+  // with join() alone; only the order in which points are added to the sums differs.
+  FLOODPLANE_ALWAYS_INLINE int joinRun(std::size_t from, int step, int max) {
+    int joined = 0;
+    int pixel_by_pixel_until = 0;
+    std::size_t pixel = from;
+    while (joined < max) {
+#if FLOODPLANE_FLOOD_BLOCKS
+      // A block must not carry the count past the next refit, which join() makes at the
+      // exact pixel.
+      if (joined >= pixel_by_pixel_until && max - joined >= kBlock && self_.sums.count + kBlock < next_refit_) {
+        if (joinBlock(pixel, step)) {
+          pixel = step > 0 ? pixel + kBlock : pixel - kBlock;
+          joined += kBlock;
+          continue;
+        }
+        pixel_by_pixel_until = joined + kBlock;
+      }
+#endif
+      const std::size_t next = step > 0 ? pixel + 1 : pixel - 1;
+      if (!join(pixel, next)) break;
+      pixel = next;
+      ++joined;
+    }
+    return joined;
   }
 
   // Called by the fill for every finished span: the segment's bounding box.
@@ -107,15 +148,84 @@ class FloodVisitor {
   std::size_t attempts() const { return attempts_; }
 
  private:
+#if FLOODPLANE_FLOOD_BLOCKS
+  // join() for the kBlock pixels after `pixel` in direction `step`, each from its
+  // predecessor, in the one case that needs no decision per pixel: all unclaimed, all pass
+  // Eqs. 2 and 3. Then claims them all and returns true; otherwise changes nothing. Every
+  // float operation is the one join() does, in the same order, so a block passes exactly
+  // when join() would pass each of its pixels.
+  bool joinBlock(std::size_t pixel, int step) {
+    // Lane j tests pixel first + j from its neighbour first + j - step.
+    const std::size_t first = step > 0 ? pixel + 1 : pixel - kBlock;
+    const std::size_t from = step > 0 ? pixel : pixel - kBlock + 1;
+    const __m128i owners = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels_ + first));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_setzero_si128())) != 0xffff) return false;
+
+    const __m128 qx = _mm_loadu_ps(points_.x.data() + first);
+    const __m128 qy = _mm_loadu_ps(points_.y.data() + first);
+    const __m128 qz = _mm_loadu_ps(points_.z.data() + first);
+    const __m128 dx = _mm_sub_ps(_mm_loadu_ps(points_.x.data() + from), qx);
+    const __m128 dy = _mm_sub_ps(_mm_loadu_ps(points_.y.data() + from), qy);
+    const __m128 dz = _mm_sub_ps(_mm_loadu_ps(points_.z.data() + from), qz);
+    // noiseRangeSq: MINPS returns its first operand when it is the smaller, the second
+    // otherwise (NaN included), as p_sq < q_sq ? p_sq : q_sq does.
+    const __m128 range_sq =
+        _mm_min_ps(_mm_loadu_ps(points_.range_sq.data() + from), _mm_loadu_ps(points_.range_sq.data() + first));
+    const FloodCriterion& c = criterion_;
+    // Eq. 3: (x^2 + y^2) + z^2 < (K r^2) r^2. A NaN fails it, so no lane below has a NaN range.
+    const __m128 euclidean_sq = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+    const __m128 euclidean_tolerance_sq = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(c.euclidean_factor_sq), range_sq), range_sq);
+    // Eq. 2: |((n_x x + n_y y) + n_z z) + d| < max(sigma_plane, 3 c r^2).
+    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(c.normal.x), qx), _mm_mul_ps(_mm_set1_ps(c.normal.y), qy)),
+                                  _mm_mul_ps(_mm_set1_ps(c.normal.z), qz));
+    const __m128 distance = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(dot, _mm_set1_ps(c.offset)));
+    const __m128 tolerance =
+        _mm_max_ps(_mm_set1_ps(c.plane_threshold), _mm_mul_ps(_mm_set1_ps(c.plane_noise_factor), range_sq));
+    const __m128 pass =
+        _mm_and_ps(_mm_cmplt_ps(euclidean_sq, euclidean_tolerance_sq), _mm_cmplt_ps(distance, tolerance));
+    if (_mm_movemask_ps(pass) != 0xf) return false;
+
+    alignas(16) float distances[kBlock];
+    _mm_store_ps(distances, distance);
+    buffer_.claimRun(first, kBlock, label_, distances);
+    addBlockToSums(qx, qy, qz);
+    attempts_ += kBlock;
+    return true;
+  }
+
+  // PlaneSums::add for four points, two at a time in double precision.
+  void addBlockToSums(__m128 x, __m128 y, __m128 z) {
+    const __m128d x0 = _mm_cvtps_pd(x), x1 = _mm_cvtps_pd(_mm_movehl_ps(x, x));
+    const __m128d y0 = _mm_cvtps_pd(y), y1 = _mm_cvtps_pd(_mm_movehl_ps(y, y));
+    const __m128d z0 = _mm_cvtps_pd(z), z1 = _mm_cvtps_pd(_mm_movehl_ps(z, z));
+    const auto total = [](__m128d a, __m128d b) {
+      const __m128d sum = _mm_add_pd(a, b);
+      return _mm_cvtsd_f64(_mm_add_sd(sum, _mm_unpackhi_pd(sum, sum)));
+    };
+    PlaneSums& sums = self_.sums;
+    sums.count += kBlock;
+    sums.sx += total(x0, x1);
+    sums.sy += total(y0, y1);
+    sums.sz += total(z0, z1);
+    sums.sxx += total(_mm_mul_pd(x0, x0), _mm_mul_pd(x1, x1));
+    sums.sxy += total(_mm_mul_pd(x0, y0), _mm_mul_pd(x1, y1));
+    sums.sxz += total(_mm_mul_pd(x0, z0), _mm_mul_pd(x1, z1));
+    sums.syy += total(_mm_mul_pd(y0, y0), _mm_mul_pd(y1, y1));
+    sums.syz += total(_mm_mul_pd(y0, z0), _mm_mul_pd(y1, z1));
+    sums.szz += total(_mm_mul_pd(z0, z0), _mm_mul_pd(z1, z1));
+  }
+#endif
+
   void noteNeighbour(std::int32_t owner) {
     if (neighbour_mark_[owner] == label_) return;
     neighbour_mark_[owner] = label_;
     edges_.emplace_back(label_, owner);
   }
 
-  const PointGrid& grid_;
+  const PointArrays& points_;
   const std::int32_t label_;
   DistanceBuffer& buffer_;
+  const std::int32_t* labels_;  // buffer_'s, for the block test
   std::vector<Segment>& segments_;
   std::vector<std::pair<std::size_t, std::size_t>>& frontier_;
   std::vector<std::int32_t>& neighbour_mark_;
@@ -131,7 +241,7 @@ class FloodVisitor {
 
 }  // namespace
 
-std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
+std::size_t PlaneFlood::grow(const PointGrid& grid, const PointArrays& points, const Seed& seed, std::int32_t label, const Params& params,
                              DistanceBuffer& buffer, std::vector<Segment>& segments,
                              std::vector<SegmentEdge>& edges) {
   if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
@@ -153,7 +263,7 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
 
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
-  FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
+  FloodVisitor visitor(points, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
                        std::max(static_cast<double>(seed.normal_uncertainty), 1e-4), params.angular_threshold);
   spanFloodFill(width, grid.height, seed_x, seed_y, visitor, shadows_);
 

@@ -58,6 +58,7 @@ class PhaseTimer {
 struct Segmenter::Workspace {
   std::vector<float> subsampled;  // x y z of every s-th pixel when s > 1
   std::vector<float> pitch_scratch;
+  PointArrays points;  // of the grid to segment, for the flood
   DistanceBuffer buffer;
   SeedSelector selector;
   SeedSelector fine_selector;  // the second pass's smaller seed cube
@@ -181,6 +182,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     Params fine = params_;
     fine.seed_size /= kFineSeedDivisor;
     ws.fine_selector.configure(fine, pitch, grid.width, grid.height);
+    ws.points.assign(grid);
     ws.buffer.reset(grid.size());
     ws.segments.assign(1, Segment());  // label 0: no segment
     ws.edges.clear();
@@ -204,7 +206,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
           const std::int32_t label = static_cast<std::int32_t>(ws.segments.size());
           ws.segments.emplace_back();
           PhaseTimer timer(timed, flooding);
-          result_.stats.pixels_taken_over += ws.flood.grow(grid, seed, label, params_, ws.buffer, ws.segments, ws.edges);
+          result_.stats.pixels_taken_over += ws.flood.grow(grid, ws.points, seed, label, params_, ws.buffer, ws.segments, ws.edges);
         }
       }
     }

@@ -23,6 +23,20 @@ struct Shadow {
   int direction;  ///< +1: parent row is above, -1: parent row is below
 };
 
+/// joinRun as a loop over join, for visitors that decide one pixel at a time.
+template <class Visitor>
+int joinRunPixelByPixel(Visitor& visitor, std::size_t from, int step, int max) {
+  int joined = 0;
+  std::size_t pixel = from;
+  while (joined < max) {
+    const std::size_t next = step > 0 ? pixel + 1 : pixel - 1;
+    if (!visitor.join(pixel, next)) break;
+    pixel = next;
+    ++joined;
+  }
+  return joined;
+}
+
 /// Scanline ("span") flood fill of Sec. III-A. Grows a 4-connected region from a pixel that
 /// is already in it, a span at a time, so that each pixel is examined about once instead of
 /// four times as in the naive recursive fill.
@@ -32,6 +46,12 @@ struct Shadow {
 /// marks `to` when `to` joins, and returns false for a pixel already in the region. Each
 /// pixel of a span is decided by one comparison, with its left or right neighbour; the first
 /// pixel of a span found in a shadow, with its neighbour in the parent row.
+///
+/// Spans are grown by `visitor.joinRun(from, step, max)`: it joins the pixels from + step,
+/// from + 2 step, ... (step = +1 or -1: along the row) each from its predecessor, as
+/// join would, up to `max` of them, stops at the first that does not join and returns how
+/// many joined. A visitor that decides pixel by pixel gets it from joinRunPixelByPixel; one
+/// that can decide several pixels at once (SIMD) does so there.
 ///
 /// `visitor.span(y, x_begin, x_end)` is told of every span once it is complete.
 ///
@@ -44,10 +64,8 @@ void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visit
   };
   // Extends the span through (x, y) to the left and right, one comparison per pixel.
   const auto extendSpan = [&](int x, int y, int& left, int& right) {
-    left = x;
-    while (left > 0 && visitor.join(index(left, y), index(left - 1, y))) --left;
-    right = x;
-    while (right < width - 1 && visitor.join(index(right, y), index(right + 1, y))) ++right;
+    left = x - visitor.joinRun(index(x, y), -1, x);
+    right = x + visitor.joinRun(index(x, y), +1, width - 1 - x);
     visitor.span(y, left, right);
   };
   const auto push = [&](int y, int x_begin, int x_end, int direction) {

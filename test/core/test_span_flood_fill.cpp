@@ -40,6 +40,7 @@ struct CountingVisitor {
     in_region[to] = true;
     return true;
   }
+  int joinRun(std::size_t from, int step, int max) { return joinRunPixelByPixel(*this, from, step, max); }
   void span(int, int, int) { ++spans; }
 };
 
