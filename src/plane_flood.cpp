@@ -5,6 +5,7 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #define FLOODPLANE_FLOOD_BLOCKS 1
 #else
 #define FLOODPLANE_FLOOD_BLOCKS 0
@@ -23,11 +24,12 @@ constexpr int kBlock = 4;
 // The membership test of one flood, as spanFloodFill's visitor.
 class FloodVisitor {
  public:
-  FloodVisitor(const PointArrays& points, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
+  FloodVisitor(const PointGrid& grid, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
                std::vector<std::pair<std::size_t, std::size_t>>& frontier, std::vector<std::int32_t>& neighbour_mark,
                std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty,
                double angular_threshold)
-      : points_(points),
+      : grid_(grid),
+        blocks_(FLOODPLANE_FLOOD_BLOCKS && grid.stride >= 4),
         label_(label),
         buffer_(buffer),
         labels_(buffer.labels().data()),
@@ -47,9 +49,9 @@ class FloodVisitor {
     ++attempts_;
     const std::int32_t owner = buffer_.label(to);
     if (owner == label_) return false;
-    const Vec3 p = points_.point(from);
-    const Vec3 q = points_.point(to);
-    const float range_sq = nearerRangeSq(points_.range_sq[from], points_.range_sq[to]);  // noiseRangeSq
+    const Vec3 p = Vec3::load(grid_.point(from));
+    const Vec3 q = Vec3::load(grid_.point(to));
+    const float range_sq = noiseRangeSq(p, q);
     const FloodCriterion& c = criterion_;
     // Eq. 3; written so that a hole (NaN) fails it.
     if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
@@ -92,7 +94,8 @@ class FloodVisitor {
 #if FLOODPLANE_FLOOD_BLOCKS
       // A block must not carry the count past the next refit, which join() makes at the
       // exact pixel.
-      if (joined >= pixel_by_pixel_until && max - joined >= kBlock && self_.sums.count + kBlock < next_refit_) {
+      if (blocks_ && joined >= pixel_by_pixel_until && max - joined >= kBlock &&
+          self_.sums.count + kBlock < next_refit_) {
         if (joinBlock(pixel, step)) {
           pixel = step > 0 ? pixel + kBlock : pixel - kBlock;
           joined += kBlock;
@@ -155,22 +158,29 @@ class FloodVisitor {
   // float operation is the one join() does, in the same order, so a block passes exactly
   // when join() would pass each of its pixels.
   bool joinBlock(std::size_t pixel, int step) {
-    // Lane j tests pixel first + j from its neighbour first + j - step.
+    // Lane j tests pixel first + j from its neighbour first + j - step: the five points from
+    // `low` on, as x, y, z across lanes (the fourth float of a point is readable: stride >= 4).
     const std::size_t first = step > 0 ? pixel + 1 : pixel - kBlock;
-    const std::size_t from = step > 0 ? pixel : pixel - kBlock + 1;
+    const std::size_t low = step > 0 ? pixel : pixel - kBlock;
     const __m128i owners = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels_ + first));
     if (_mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_setzero_si128())) != 0xffff) return false;
 
-    const __m128 qx = _mm_loadu_ps(points_.x.data() + first);
-    const __m128 qy = _mm_loadu_ps(points_.y.data() + first);
-    const __m128 qz = _mm_loadu_ps(points_.z.data() + first);
-    const __m128 dx = _mm_sub_ps(_mm_loadu_ps(points_.x.data() + from), qx);
-    const __m128 dy = _mm_sub_ps(_mm_loadu_ps(points_.y.data() + from), qy);
-    const __m128 dz = _mm_sub_ps(_mm_loadu_ps(points_.z.data() + from), qz);
+    const __m128 p0 = _mm_loadu_ps(grid_.point(low));
+    const __m128 p1 = _mm_loadu_ps(grid_.point(low + 1));
+    const __m128 p2 = _mm_loadu_ps(grid_.point(low + 2));
+    const __m128 p3 = _mm_loadu_ps(grid_.point(low + 3));
+    const __m128 p4 = _mm_loadu_ps(grid_.point(low + 4));
+    Lanes lower = Lanes::transpose(p0, p1, p2, p3);  // points low .. low + 3
+    Lanes upper = Lanes::transpose(p1, p2, p3, p4);  // points low + 1 .. low + 4
+    const Lanes& q = step > 0 ? upper : lower;
+    const Lanes& p = step > 0 ? lower : upper;
+    const __m128 qx = q.x, qy = q.y, qz = q.z;
+    const __m128 dx = _mm_sub_ps(p.x, qx);
+    const __m128 dy = _mm_sub_ps(p.y, qy);
+    const __m128 dz = _mm_sub_ps(p.z, qz);
     // noiseRangeSq: MINPS returns its first operand when it is the smaller, the second
     // otherwise (NaN included), as p_sq < q_sq ? p_sq : q_sq does.
-    const __m128 range_sq =
-        _mm_min_ps(_mm_loadu_ps(points_.range_sq.data() + from), _mm_loadu_ps(points_.range_sq.data() + first));
+    const __m128 range_sq = _mm_min_ps(p.squaredNorm(), q.squaredNorm());
     const FloodCriterion& c = criterion_;
     // Eq. 3: (x^2 + y^2) + z^2 < (K r^2) r^2. A NaN fails it, so no lane below has a NaN range.
     const __m128 euclidean_sq = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
@@ -192,6 +202,19 @@ class FloodVisitor {
     attempts_ += kBlock;
     return true;
   }
+
+  // x, y and z of four points, one point per lane.
+  struct Lanes {
+    __m128 x, y, z;
+    static Lanes transpose(__m128 a, __m128 b, __m128 c, __m128 d) {
+      _MM_TRANSPOSE4_PS(a, b, c, d);
+      return {a, b, c};
+    }
+    // Vec3::squaredNorm: (x x + y y) + z z.
+    __m128 squaredNorm() const {
+      return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
+    }
+  };
 
   // PlaneSums::add for four points, two at a time in double precision.
   void addBlockToSums(__m128 x, __m128 y, __m128 z) {
@@ -222,7 +245,8 @@ class FloodVisitor {
     edges_.emplace_back(label_, owner);
   }
 
-  const PointArrays& points_;
+  const PointGrid& grid_;
+  const bool blocks_;  // four pixels at a time: needs SSE2 and four readable floats a point
   const std::int32_t label_;
   DistanceBuffer& buffer_;
   const std::int32_t* labels_;  // buffer_'s, for the block test
@@ -241,7 +265,7 @@ class FloodVisitor {
 
 }  // namespace
 
-std::size_t PlaneFlood::grow(const PointGrid& grid, const PointArrays& points, const Seed& seed, std::int32_t label, const Params& params,
+std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
                              DistanceBuffer& buffer, std::vector<Segment>& segments,
                              std::vector<SegmentEdge>& edges) {
   if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
@@ -263,7 +287,7 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const PointArrays& points, c
 
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
-  FloodVisitor visitor(points, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
+  FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
                        std::max(static_cast<double>(seed.normal_uncertainty), 1e-4), params.angular_threshold);
   spanFloodFill(width, grid.height, seed_x, seed_y, visitor, shadows_);
 

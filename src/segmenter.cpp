@@ -56,9 +56,8 @@ class PhaseTimer {
 }  // namespace
 
 struct Segmenter::Workspace {
-  std::vector<float> subsampled;  // x y z of every s-th pixel when s > 1
+  std::vector<float> subsampled;  // x y z 0 of every s-th pixel when s > 1
   std::vector<float> pitch_scratch;
-  PointArrays points;  // of the grid to segment, for the flood
   DistanceBuffer buffer;
   SeedSelector selector;
   SeedSelector fine_selector;  // the second pass's smaller seed cube
@@ -76,8 +75,8 @@ struct Segmenter::Workspace {
     PointGrid grid;
     grid.width = (full.width + s - 1) / s;
     grid.height = (full.height + s - 1) / s;
-    grid.stride = 3;
-    subsampled.resize(grid.size() * 3);
+    grid.stride = 4;  // as PCL's points: the flood reads four floats a point
+    subsampled.resize(grid.size() * 4);
     float* out = subsampled.data();
     for (int y = 0; y < full.height; y += s) {
       for (int x = 0; x < full.width; x += s) {
@@ -85,6 +84,7 @@ struct Segmenter::Workspace {
         *out++ = p[0];
         *out++ = p[1];
         *out++ = p[2];
+        *out++ = 0.f;
       }
     }
     grid.data = subsampled.data();
@@ -182,7 +182,6 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     Params fine = params_;
     fine.seed_size /= kFineSeedDivisor;
     ws.fine_selector.configure(fine, pitch, grid.width, grid.height);
-    ws.points.assign(grid);
     ws.buffer.reset(grid.size());
     ws.segments.assign(1, Segment());  // label 0: no segment
     ws.edges.clear();
@@ -206,7 +205,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
           const std::int32_t label = static_cast<std::int32_t>(ws.segments.size());
           ws.segments.emplace_back();
           PhaseTimer timer(timed, flooding);
-          result_.stats.pixels_taken_over += ws.flood.grow(grid, ws.points, seed, label, params_, ws.buffer, ws.segments, ws.edges);
+          result_.stats.pixels_taken_over += ws.flood.grow(grid, seed, label, params_, ws.buffer, ws.segments, ws.edges);
         }
       }
     }

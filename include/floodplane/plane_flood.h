@@ -46,11 +46,10 @@ class PlaneFlood {
   /// Forgets the neighbour marks of the previous frame.
   void beginFrame() { neighbour_mark_.clear(); }
 
-  /// Floods segment `label` (already present in `segments`) from `seed`. `points` holds the
-  /// grid's points (PointArrays::assign).
+  /// Floods segment `label` (already present in `segments`) from `seed`.
   /// Appends the segment's neighbour pairs to `edges`; returns the pixels it took from other
   /// segments under Eq. 4.
-  std::size_t grow(const PointGrid& grid, const PointArrays& points, const Seed& seed, std::int32_t label, const Params& params,
+  std::size_t grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
                    DistanceBuffer& buffer, std::vector<Segment>& segments, std::vector<SegmentEdge>& edges);
 
   /// Pixels examined (join attempts) by the last grow, for tests and statistics.

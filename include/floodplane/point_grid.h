@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <vector>
 
 namespace floodplane {
 
@@ -37,32 +36,6 @@ struct Vec3 {
   Vec3 cross(const Vec3& o) const { return {y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
   float squaredNorm() const { return dot(*this); }
   float norm() const { return std::sqrt(squaredNorm()); }
-};
-
-/// The grid's coordinates as separate arrays (structure of arrays), with each point's
-/// squared range: the layout in which the flood tests four neighbouring pixels at once, and
-/// reads a point's range instead of computing it for each of the up to four floods and
-/// neighbours that test it. Rebuilt per frame into the same storage.
-struct PointArrays {
-  std::vector<float> x, y, z;
-  std::vector<float> range_sq;  ///< x^2 + y^2 + z^2, as Vec3::squaredNorm computes it
-
-  void assign(const PointGrid& grid) {
-    const std::size_t n = grid.size();
-    x.resize(n);
-    y.resize(n);
-    z.resize(n);
-    range_sq.resize(n);
-    const float* p = grid.data;
-    for (std::size_t i = 0; i < n; ++i, p += grid.stride) {
-      const Vec3 v = Vec3::load(p);
-      x[i] = v.x;
-      y[i] = v.y;
-      z[i] = v.z;
-      range_sq[i] = v.squaredNorm();
-    }
-  }
-  Vec3 point(std::size_t i) const { return {x[i], y[i], z[i]}; }
 };
 
 }  // namespace floodplane
