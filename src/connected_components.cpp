@@ -2,6 +2,8 @@
 
 #include <cstddef>
 
+#include "floodplane/row_search.h"
+
 namespace floodplane {
 
 std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int width, const PixelBox& box,
@@ -24,13 +26,10 @@ std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int wid
     const std::size_t row_begin = runs_.size();
     std::size_t above = above_begin;
     int x = box.x_min;
-    while (x <= box.x_max) {
-      if (row[x] != label) {
-        ++x;
-        continue;
-      }
-      Run run{y, x, x, -1};
-      while (run.x_end + 1 <= box.x_max && row[run.x_end + 1] == label) ++run.x_end;
+    while (true) {
+      x = findInRow(row, x, box.x_max, label, true);
+      if (x > box.x_max) break;
+      Run run{y, x, findInRow(row, x, box.x_max, label, false) - 1, -1};
       x = run.x_end + 1;
       // Runs above that end before this one starts cannot overlap it or any later run.
       while (above < above_end && runs_[above].x_end < run.x_begin) ++above;

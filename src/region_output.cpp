@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "floodplane/row_search.h"
+
 namespace floodplane {
 
 namespace {
@@ -248,11 +250,13 @@ void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& la
   // Seeds of the growth: unlabelled pixels next to a plane they fit, the best plane first.
   queue_.clear();
   for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
+    const std::uint32_t* row = labels.data() + static_cast<std::size_t>(y) * width;
+    for (int x = findInRow(row, 0, width - 1, 0u, true); x < width; x = findInRow(row, x + 1, width - 1, 0u, true)) {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;
-      if (labels[i] != 0) continue;
       const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < width ? i + 1 : i,
                                          y > 0 ? i - width : i, y + 1 < height ? i + width : i};
+      // Most unlabelled pixels (holes, clutter) have no labelled neighbour at all.
+      if ((labels[neighbours[0]] | labels[neighbours[1]] | labels[neighbours[2]] | labels[neighbours[3]]) == 0) continue;
       std::uint32_t best = 0;
       float best_distance = std::numeric_limits<float>::infinity();
       for (const std::size_t j : neighbours) {

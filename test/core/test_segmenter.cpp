@@ -157,6 +157,40 @@ TEST(Segmenter, IsDeterministic) {
   EXPECT_EQ(second.segment(scene.grid()).labels, once);
 }
 
+// The flood decides four pixels at a time where a point has four readable floats (PCL's
+// layout), pixel by pixel where it has three (these test grids). Both must segment alike:
+// only the order in which points are summed differs.
+TEST(Segmenter, DecidingFourPixelsAtATimeChangesNothing) {
+  Pinhole wide = camera();
+  wide.width = 160;
+  wide.height = 120;
+  wide.focal = 131.25;
+  for (const double noise : {0.0, 0.01}) {
+    const RenderedGrid scene = test::render(wide, test::roomCorner(), noise, 7);
+    std::vector<float> padded;
+    for (std::size_t i = 0; i < scene.xyz.size(); i += 3) padded.insert(padded.end(), {scene.xyz[i], scene.xyz[i + 1], scene.xyz[i + 2], 1.f});
+    PointGrid four = scene.grid();
+    four.data = padded.data();
+    four.stride = 4;
+    for (const int subsampling : {1, 2}) {
+      Params params;
+      params.min_inliers = 100;
+      params.subsampling = subsampling;
+      Segmenter by_pixel(params), by_block(params);
+      const Segmentation& expected = by_pixel.segment(scene.grid());
+      const Segmentation& actual = by_block.segment(four);
+      EXPECT_EQ(actual.labels, expected.labels) << "noise " << noise << ", s = " << subsampling;
+      ASSERT_EQ(actual.planes.size(), expected.planes.size());
+      ASSERT_GE(actual.planes.size(), 3u);
+      for (std::size_t k = 0; k < actual.planes.size(); ++k) {
+        EXPECT_EQ(actual.planes[k].inlier_count, expected.planes[k].inlier_count);
+        EXPECT_NEAR(actual.planes[k].fit.offset, expected.planes[k].fit.offset, 1e-9);
+        EXPECT_GT(actual.planes[k].fit.normal.dot(expected.planes[k].fit.normal), 1.0 - 1e-12);
+      }
+    }
+  }
+}
+
 TEST(Segmenter, ReusesItsBuffersAcrossFrameSizes) {
   const RenderedGrid big = test::render(camera(), test::roomCorner());
   Pinhole small_camera = camera();

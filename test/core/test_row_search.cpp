@@ -1,0 +1,66 @@
+// findInRow: the label scans' four-at-a-time search must find what a pixel-by-pixel loop
+// finds, wherever in a block the answer lies and however the row ends.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "floodplane/row_search.h"
+
+namespace floodplane {
+namespace {
+
+int pixelByPixel(const std::vector<std::int32_t>& row, int x, int x_end, std::int32_t label, bool equal) {
+  while (x <= x_end && (row[static_cast<std::size_t>(x)] == label) != equal) ++x;
+  return x;
+}
+
+TEST(RowSearch, FindsTheFirstMatchAtEveryOffsetOfABlock) {
+  for (int at = 0; at < 13; ++at) {
+    std::vector<std::int32_t> row(13, 7);
+    row[static_cast<std::size_t>(at)] = 3;
+    EXPECT_EQ(findInRow(row.data(), 0, 12, 3, true), at);
+    EXPECT_EQ(findInRow(row.data(), 0, 12, 7, false), at);
+  }
+}
+
+TEST(RowSearch, ReturnsOnePastTheEndWhenNothingIsFound) {
+  const std::vector<std::int32_t> row(11, 5);
+  EXPECT_EQ(findInRow(row.data(), 0, 10, 4, true), 11);
+  EXPECT_EQ(findInRow(row.data(), 0, 10, 5, false), 11);
+  EXPECT_EQ(findInRow(row.data(), 3, 6, 4, true), 7);  // a range inside the row
+  EXPECT_EQ(findInRow(row.data(), 6, 5, 5, true), 6);  // an empty range
+}
+
+TEST(RowSearch, NeverLooksPastTheRangeEnd) {
+  // The matches lie just after x_end: they must not be found.
+  const std::vector<std::int32_t> row = {1, 1, 1, 1, 1, 1, 2, 2, 2, 2};
+  EXPECT_EQ(findInRow(row.data(), 0, 5, 2, true), 6);
+  EXPECT_EQ(findInRow(row.data(), 1, 4, 1, false), 5);
+}
+
+TEST(RowSearch, AgreesWithAPixelByPixelScanOnRandomRows) {
+  std::mt19937 random(42);
+  std::uniform_int_distribution<int> label(0, 2);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<std::int32_t> row(1 + trial % 37);
+    for (std::int32_t& l : row) l = label(random) == 0 ? 0 : 1;  // runs of both
+    const int width = static_cast<int>(row.size());
+    const int x = trial % width;
+    const int x_end = width - 1 - (trial / 7) % (width - x);
+    for (const bool equal : {true, false}) {
+      ASSERT_EQ(findInRow(row.data(), x, x_end, 1, equal), pixelByPixel(row, x, x_end, 1, equal))
+          << "trial " << trial << " equal " << equal;
+    }
+  }
+}
+
+TEST(RowSearch, WorksForUnsignedLabels) {
+  const std::vector<std::uint32_t> row = {4, 4, 4, 4, 4, 0, 4};
+  EXPECT_EQ(findInRow(row.data(), 0, 6, 0u, true), 5);
+  EXPECT_EQ(findInRow(row.data(), 5, 6, 0u, false), 6);
+}
+
+}  // namespace
+}  // namespace floodplane
