@@ -3,13 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#include <xmmintrin.h>
-#define FLOODPLANE_FLOOD_BLOCKS 1
-#else
-#define FLOODPLANE_FLOOD_BLOCKS 0
-#endif
+#include "floodplane/point_lanes.h"
 
 namespace floodplane {
 
@@ -29,7 +23,7 @@ class FloodVisitor {
                std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty,
                double angular_threshold)
       : grid_(grid),
-        blocks_(FLOODPLANE_FLOOD_BLOCKS && grid.stride >= 4),
+        blocks_(fourPixelsAtATime(grid)),
         label_(label),
         buffer_(buffer),
         labels_(buffer.labels().data()),
@@ -91,7 +85,7 @@ class FloodVisitor {
     int pixel_by_pixel_until = 0;
     std::size_t pixel = from;
     while (joined < max) {
-#if FLOODPLANE_FLOOD_BLOCKS
+#if FLOODPLANE_POINT_LANES
       // A block must not carry the count past the next refit, which join() makes at the
       // exact pixel.
       if (blocks_ && joined >= pixel_by_pixel_until && max - joined >= kBlock &&
@@ -151,7 +145,7 @@ class FloodVisitor {
   std::size_t attempts() const { return attempts_; }
 
  private:
-#if FLOODPLANE_FLOOD_BLOCKS
+#if FLOODPLANE_POINT_LANES
   // join() for the kBlock pixels after `pixel` in direction `step`, each from its
   // predecessor, in the one case that needs no decision per pixel: all unclaimed, all pass
   // Eqs. 2 and 3. Then claims them all and returns true; otherwise changes nothing. Every
@@ -170,73 +164,32 @@ class FloodVisitor {
     const __m128 p2 = _mm_loadu_ps(grid_.point(low + 2));
     const __m128 p3 = _mm_loadu_ps(grid_.point(low + 3));
     const __m128 p4 = _mm_loadu_ps(grid_.point(low + 4));
-    Lanes lower = Lanes::transpose(p0, p1, p2, p3);  // points low .. low + 3
-    Lanes upper = Lanes::transpose(p1, p2, p3, p4);  // points low + 1 .. low + 4
-    const Lanes& q = step > 0 ? upper : lower;
-    const Lanes& p = step > 0 ? lower : upper;
-    const __m128 qx = q.x, qy = q.y, qz = q.z;
-    const __m128 dx = _mm_sub_ps(p.x, qx);
-    const __m128 dy = _mm_sub_ps(p.y, qy);
-    const __m128 dz = _mm_sub_ps(p.z, qz);
-    // noiseRangeSq: MINPS returns its first operand when it is the smaller, the second
-    // otherwise (NaN included), as p_sq < q_sq ? p_sq : q_sq does.
-    const __m128 range_sq = _mm_min_ps(p.squaredNorm(), q.squaredNorm());
+    const PointLanes lower = PointLanes::transpose(p0, p1, p2, p3);  // points low .. low + 3
+    const PointLanes upper = PointLanes::transpose(p1, p2, p3, p4);  // points low + 1 .. low + 4
+    const PointLanes& q = step > 0 ? upper : lower;
+    const PointLanes& p = step > 0 ? lower : upper;
+    const __m128 range_sq = nearerRangeSq(p.squaredNorm(), q.squaredNorm());  // noiseRangeSq
     const FloodCriterion& c = criterion_;
-    // Eq. 3: (x^2 + y^2) + z^2 < (K r^2) r^2. A NaN fails it, so no lane below has a NaN range.
+    // Eq. 3: |p - q|^2 < (K r^2) r^2. A NaN fails it, so no lane below has a NaN range.
+    const __m128 dx = _mm_sub_ps(p.x, q.x);
+    const __m128 dy = _mm_sub_ps(p.y, q.y);
+    const __m128 dz = _mm_sub_ps(p.z, q.z);
     const __m128 euclidean_sq = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
     const __m128 euclidean_tolerance_sq = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(c.euclidean_factor_sq), range_sq), range_sq);
-    // Eq. 2: |((n_x x + n_y y) + n_z z) + d| < max(sigma_plane, 3 c r^2).
-    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(c.normal.x), qx), _mm_mul_ps(_mm_set1_ps(c.normal.y), qy)),
-                                  _mm_mul_ps(_mm_set1_ps(c.normal.z), qz));
-    const __m128 distance = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(dot, _mm_set1_ps(c.offset)));
-    const __m128 tolerance =
-        _mm_max_ps(_mm_set1_ps(c.plane_threshold), _mm_mul_ps(_mm_set1_ps(c.plane_noise_factor), range_sq));
-    const __m128 pass =
-        _mm_and_ps(_mm_cmplt_ps(euclidean_sq, euclidean_tolerance_sq), _mm_cmplt_ps(distance, tolerance));
+    // Eq. 2.
+    const __m128 distance = q.planeDistance(c.normal, c.offset);
+    const __m128 pass = _mm_and_ps(_mm_cmplt_ps(euclidean_sq, euclidean_tolerance_sq),
+                                   _mm_cmplt_ps(distance, planeTolerance(c, range_sq)));
     if (_mm_movemask_ps(pass) != 0xf) return false;
 
     alignas(16) float distances[kBlock];
     _mm_store_ps(distances, distance);
     buffer_.claimRun(first, kBlock, label_, distances);
-    addBlockToSums(qx, qy, qz);
+    addToSums(self_.sums, q);
     attempts_ += kBlock;
     return true;
   }
 
-  // x, y and z of four points, one point per lane.
-  struct Lanes {
-    __m128 x, y, z;
-    static Lanes transpose(__m128 a, __m128 b, __m128 c, __m128 d) {
-      _MM_TRANSPOSE4_PS(a, b, c, d);
-      return {a, b, c};
-    }
-    // Vec3::squaredNorm: (x x + y y) + z z.
-    __m128 squaredNorm() const {
-      return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
-    }
-  };
-
-  // PlaneSums::add for four points, two at a time in double precision.
-  void addBlockToSums(__m128 x, __m128 y, __m128 z) {
-    const __m128d x0 = _mm_cvtps_pd(x), x1 = _mm_cvtps_pd(_mm_movehl_ps(x, x));
-    const __m128d y0 = _mm_cvtps_pd(y), y1 = _mm_cvtps_pd(_mm_movehl_ps(y, y));
-    const __m128d z0 = _mm_cvtps_pd(z), z1 = _mm_cvtps_pd(_mm_movehl_ps(z, z));
-    const auto total = [](__m128d a, __m128d b) {
-      const __m128d sum = _mm_add_pd(a, b);
-      return _mm_cvtsd_f64(_mm_add_sd(sum, _mm_unpackhi_pd(sum, sum)));
-    };
-    PlaneSums& sums = self_.sums;
-    sums.count += kBlock;
-    sums.sx += total(x0, x1);
-    sums.sy += total(y0, y1);
-    sums.sz += total(z0, z1);
-    sums.sxx += total(_mm_mul_pd(x0, x0), _mm_mul_pd(x1, x1));
-    sums.sxy += total(_mm_mul_pd(x0, y0), _mm_mul_pd(x1, y1));
-    sums.sxz += total(_mm_mul_pd(x0, z0), _mm_mul_pd(x1, z1));
-    sums.syy += total(_mm_mul_pd(y0, y0), _mm_mul_pd(y1, y1));
-    sums.syz += total(_mm_mul_pd(y0, z0), _mm_mul_pd(y1, z1));
-    sums.szz += total(_mm_mul_pd(z0, z0), _mm_mul_pd(z1, z1));
-  }
 #endif
 
   void noteNeighbour(std::int32_t owner) {
@@ -246,7 +199,7 @@ class FloodVisitor {
   }
 
   const PointGrid& grid_;
-  const bool blocks_;  // four pixels at a time: needs SSE2 and four readable floats a point
+  const bool blocks_;  // fourPixelsAtATime(grid_)
   const std::int32_t label_;
   DistanceBuffer& buffer_;
   const std::int32_t* labels_;  // buffer_'s, for the block test

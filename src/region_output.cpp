@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 
+#include "floodplane/point_lanes.h"
 #include "floodplane/row_search.h"
 
 namespace floodplane {
@@ -132,24 +133,30 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
       // The nearer of a pixel and its cell's sample sets the noise tolerance.
       cell.sample_range_sq = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(gx))).squaredNorm();
     }
+    // Per pixel column, the squared range of its cell's sample, for the four-pixel loop.
+    column_range_sq_.resize(static_cast<std::size_t>(grid_width) * subsampling);
+    for (int gx = 0; gx < grid_width; ++gx)
+      std::fill_n(column_range_sq_.begin() + static_cast<std::ptrdiff_t>(gx) * subsampling, subsampling,
+                  cells_[static_cast<std::size_t>(gx)].sample_range_sq);
+
     const int v_end = std::min((gy + 1) * subsampling, full.height);
     for (int v = gy * subsampling; v < v_end; ++v) {
       const std::size_t row_start = static_cast<std::size_t>(v) * full.width;
       std::uint32_t* out_row = labels.data() + row_start;
-      for (int gx = 0; gx < grid_width; ++gx) {
+      // Cell by cell; consecutive cells with no plane, or inside one plane, as one run.
+      int gx = 0;
+      while (gx < grid_width) {
         const Cell& cell = cells_[static_cast<std::size_t>(gx)];
+        int gx_end = gx + 1;
+        if (cell.plane != kMixedCell) {
+          while (gx_end < grid_width && cells_[static_cast<std::size_t>(gx_end)].plane == cell.plane) ++gx_end;
+        }
         const int u_begin = gx * subsampling;
-        const int u_end = std::min(u_begin + subsampling, full.width);
+        const int u_end = std::min(gx_end * subsampling, full.width);
         if (cell.plane == 0) {
           std::fill(out_row + u_begin, out_row + u_end, 0u);
         } else if (cell.plane != kMixedCell) {
-          const std::uint32_t k = cell.plane;
-          const FloodCriterion& c = candidates_[k - 1].criterion;
-          for (int u = u_begin; u < u_end; ++u) {
-            const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-            const float tolerance = criteria->planeTolerance(nearerRangeSq(cell.sample_range_sq, q.squaredNorm()));
-            out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
-          }
+          labelRun(full, row_start, u_begin, u_end, cell.plane, out_row);
         } else {
           for (int u = u_begin; u < u_end; ++u) {
             const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
@@ -167,10 +174,36 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
             out_row[u] = best;
           }
         }
+        gx = gx_end;
       }
       // The sums in a second pass over the row, so that the labelling loops above stay short.
       addRowToSums(full, row_start, out_row);
     }
+  }
+}
+
+void RegionBuilder::labelRun(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::uint32_t k,
+                             std::uint32_t* out_row) const {
+  const FloodCriterion& c = candidates_[k - 1].criterion;
+  const float* sample_range_sq = column_range_sq_.data();
+  int u = u_begin;
+#if FLOODPLANE_POINT_LANES
+  if (fourPixelsAtATime(full)) {
+    const __m128i plane = _mm_set1_epi32(static_cast<std::int32_t>(k));
+    for (; u + 4 <= u_end; u += 4) {
+      const PointLanes q = PointLanes::load(full, row_start + static_cast<std::size_t>(u));
+      const __m128 range_sq = nearerRangeSq(_mm_loadu_ps(sample_range_sq + u), q.squaredNorm());
+      // A NaN range (a hole) gives a NaN tolerance here where the scalar code has sigma_plane,
+      // but the hole's own distance is NaN and fails either.
+      const __m128 fits = _mm_cmplt_ps(q.planeDistance(c.normal, c.offset), planeTolerance(c, range_sq));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(out_row + u), _mm_and_si128(_mm_castps_si128(fits), plane));
+    }
+  }
+#endif
+  for (; u < u_end; ++u) {
+    const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
+    const float tolerance = c.planeTolerance(nearerRangeSq(sample_range_sq[u], q.squaredNorm()));
+    out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
   }
 }
 
@@ -186,8 +219,7 @@ void RegionBuilder::addRowToSums(const PointGrid& full, std::size_t row_start, c
       Candidate& candidate = candidates_[k - 1];
       // Rows come in raster order: a plane's first run starts at its first pixel.
       if (candidate.first_pixel == kNoPixel) candidate.first_pixel = row_start + static_cast<std::size_t>(u);
-      candidate.sums.addRun(full.point(row_start + static_cast<std::size_t>(u)), full.stride,
-                            static_cast<std::size_t>(end - u));
+      addRunToSums(candidate.sums, full, row_start + static_cast<std::size_t>(u), static_cast<std::size_t>(end - u));
     }
     u = end;
   }

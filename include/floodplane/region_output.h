@@ -47,6 +47,10 @@ class RegionBuilder {
   };
   void labelFullResolution(const PointGrid& full, const PointGrid& segmented, int subsampling,
                            const MergedSegments& merged, std::vector<std::uint32_t>& labels);
+  // Labels pixels [u_begin, u_end) of a full-resolution row whose cells all have plane k
+  // alone: k where the pixel fits k, else 0.
+  void labelRun(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::uint32_t k,
+                std::uint32_t* out_row) const;
   // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
   // each plane's first pixel.
   void addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row);
@@ -68,6 +72,7 @@ class RegionBuilder {
     float sample_range_sq;  // of sample (gx, gy)
   };
   std::vector<Cell> cells_;  // one row of cells
+  std::vector<float> column_range_sq_;  // per pixel column: its cell's sample_range_sq
   std::vector<Candidate> candidates_;
   std::vector<Candidate> kept_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k - 1]
