@@ -138,26 +138,30 @@ class FloodVisitor {
   // first, and that one-pixel band can cut a third plane in two (a floor flooded across by a
   // ramp's plane along their junction line).
   float takeoverMargin(std::int32_t owner, float tolerance) const {
-    const Vec3& mine = criterion_.normal;
-    const Vec3& theirs = segments_[owner].criterion.normal;
-    return std::abs(mine.dot(theirs)) >= same_plane_cosine_ ? kTakeoverMargin * tolerance : 0.0f;
+    return samePlane(owner) ? kTakeoverMargin * tolerance : 0.0f;
+  }
+  bool samePlane(std::int32_t owner) const {
+    return std::abs(criterion_.normal.dot(segments_[owner].criterion.normal)) >= same_plane_cosine_;
   }
   std::size_t attempts() const { return attempts_; }
 
  private:
 #if FLOODPLANE_POINT_LANES
   // join() for the kBlock pixels after `pixel` in direction `step`, each from its
-  // predecessor, in the one case that needs no decision per pixel: all unclaimed, all pass
-  // Eqs. 2 and 3. Then claims them all and returns true; otherwise changes nothing. Every
-  // float operation is the one join() does, in the same order, so a block passes exactly
-  // when join() would pass each of its pixels.
+  // predecessor, in the two cases where every pixel joins the same way: all unclaimed and
+  // passing Eqs. 2 and 3, or all owned by one other segment and passing Eqs. 2, 3 and 4
+  // (taken over). Then claims them all and returns true; otherwise changes nothing, and
+  // join() decides pixel by pixel. Every float operation is the one join() does, in the same
+  // order, so a block passes exactly when join() would pass each of its pixels.
   bool joinBlock(std::size_t pixel, int step) {
     // Lane j tests pixel first + j from its neighbour first + j - step: the five points from
     // `low` on, as x, y, z across lanes (the fourth float of a point is readable: stride >= 4).
     const std::size_t first = step > 0 ? pixel + 1 : pixel - kBlock;
     const std::size_t low = step > 0 ? pixel : pixel - kBlock;
+    // One owner for all four, not this flood: none (0), or a segment to take them from.
+    const std::int32_t owner = labels_[first];
     const __m128i owners = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels_ + first));
-    if (_mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_setzero_si128())) != 0xffff) return false;
+    if (owner == label_ || _mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_set1_epi32(owner))) != 0xffff) return false;
 
     const __m128 p0 = _mm_loadu_ps(grid_.point(low));
     const __m128 p1 = _mm_loadu_ps(grid_.point(low + 1));
@@ -178,13 +182,28 @@ class FloodVisitor {
     const __m128 euclidean_tolerance_sq = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(c.euclidean_factor_sq), range_sq), range_sq);
     // Eq. 2.
     const __m128 distance = q.planeDistance(c.normal, c.offset);
-    const __m128 pass = _mm_and_ps(_mm_cmplt_ps(euclidean_sq, euclidean_tolerance_sq),
-                                   _mm_cmplt_ps(distance, planeTolerance(c, range_sq)));
+    const __m128 tolerance = planeTolerance(c, range_sq);
+    __m128 pass = _mm_and_ps(_mm_cmplt_ps(euclidean_sq, euclidean_tolerance_sq), _mm_cmplt_ps(distance, tolerance));
+    if (owner != 0) {
+      // Eq. 4 (DistanceBuffer::fitsBetter): distance + margin < D, the margin as takeoverMargin.
+      const float margin_factor = samePlane(owner) ? kTakeoverMargin : 0.0f;
+      const __m128 margin = _mm_mul_ps(_mm_set1_ps(margin_factor), tolerance);
+      const __m128 owned_at = _mm_loadu_ps(buffer_.distances().data() + first);
+      pass = _mm_and_ps(pass, _mm_cmplt_ps(_mm_add_ps(distance, margin), owned_at));
+    }
     if (_mm_movemask_ps(pass) != 0xf) return false;
 
     alignas(16) float distances[kBlock];
     _mm_store_ps(distances, distance);
     buffer_.claimRun(first, kBlock, label_, distances);
+    if (owner != 0) {
+      PlaneSums lost;
+      addToSums(lost, q);
+      Segment& loser = segments_[owner];
+      loser.sums.subtract(lost);
+      loser.lost_pixels = true;
+      taken_over_ += kBlock;
+    }
     addToSums(self_.sums, q);
     attempts_ += kBlock;
     return true;

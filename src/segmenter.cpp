@@ -8,6 +8,7 @@
 #include "floodplane/distance_buffer.h"
 #include "floodplane/plane_flood.h"
 #include "floodplane/plane_merging.h"
+#include "floodplane/point_lanes.h"
 #include "floodplane/region_output.h"
 #include "floodplane/seed_selection.h"
 
@@ -119,12 +120,12 @@ struct Segmenter::Workspace {
       for (const ComponentSplitter::Run& run : splitter.runs()) {
         if (run.set == s) continue;
         Segment* piece = run.set > 0 ? &segments[run.set] : nullptr;
-        for (int x = run.x_begin; x <= run.x_end; ++x) {
-          const Vec3 p = Vec3::load(grid.point(static_cast<std::size_t>(run.y) * grid.width + x));
-          segments[s].sums.remove(p);
-          if (piece) piece->sums.add(p);
-        }
+        PlaneSums moved;
+        addRunToSums(moved, grid, static_cast<std::size_t>(run.y) * grid.width + static_cast<std::size_t>(run.x_begin),
+                     static_cast<std::size_t>(run.x_end - run.x_begin + 1));
+        segments[s].sums.subtract(moved);
         if (piece) {
+          piece->sums.merge(moved);
           piece->box.include(run.x_begin, run.y);
           piece->box.include(run.x_end, run.y);
           addPieceEdges(grid, run);
@@ -138,16 +139,27 @@ struct Segmenter::Workspace {
   void addPieceEdges(const PointGrid& grid, const ComponentSplitter::Run& run) {
     const std::vector<std::int32_t>& labels = buffer.labels();
     const FloodCriterion& c = segments[run.set].criterion;
-    for (int x = run.x_begin; x <= run.x_end; ++x) {
-      const std::size_t i = static_cast<std::size_t>(run.y) * grid.width + x;
+    std::int32_t last_other = 0;
+    const auto consider = [&](std::size_t i, std::size_t j) {
+      const std::int32_t other = labels[j];
+      // Along a run the neighbour is mostly the same segment pixel after pixel: one edge.
+      if (other == 0 || other == run.set || other == last_other) return;
       const Vec3 p = Vec3::load(grid.point(i));
-      const float tolerance_sq = c.euclideanToleranceSq(p.squaredNorm());
-      const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < grid.width ? i + 1 : i,
-                                         run.y > 0 ? i - grid.width : i, run.y + 1 < grid.height ? i + grid.width : i};
-      for (const std::size_t j : neighbours) {
-        const std::int32_t other = labels[j];
-        if (other == 0 || other == run.set) continue;
-        if (squaredEuclideanDistance(p, Vec3::load(grid.point(j))) < tolerance_sq) edges.emplace_back(run.set, other);
+      if (squaredEuclideanDistance(p, Vec3::load(grid.point(j))) < c.euclideanToleranceSq(p.squaredNorm())) {
+        edges.emplace_back(run.set, other);
+        last_other = other;
+      }
+    };
+    const std::size_t row = static_cast<std::size_t>(run.y) * grid.width;
+    // Inside the run the left and right neighbours are the run itself: only its ends count.
+    if (run.x_begin > 0) consider(row + run.x_begin, row + run.x_begin - 1);
+    if (run.x_end + 1 < grid.width) consider(row + run.x_end, row + run.x_end + 1);
+    for (const int dy : {-1, 1}) {
+      if (run.y + dy < 0 || run.y + dy >= grid.height) continue;
+      const std::ptrdiff_t offset = dy * static_cast<std::ptrdiff_t>(grid.width);
+      for (int x = run.x_begin; x <= run.x_end; ++x) {
+        const std::size_t i = row + static_cast<std::size_t>(x);
+        consider(i, static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + offset));
       }
     }
   }

@@ -40,12 +40,13 @@ class DistanceBuffer {
     return previous;
   }
 
-  /// Gives the n pixels from `first` on, all unclaimed, to `segment` at the given distances.
+  /// Gives the n pixels from `first` on to `segment` at the given distances.
   void claimRun(std::size_t first, std::size_t n, std::int32_t segment, const float* plane_distances) {
     std::fill_n(labels_.begin() + static_cast<std::ptrdiff_t>(first), n, segment);
     std::copy_n(plane_distances, n, distances_.begin() + static_cast<std::ptrdiff_t>(first));
   }
 
+  const std::vector<float>& distances() const { return distances_; }
   std::vector<std::int32_t>& labels() { return labels_; }
   const std::vector<std::int32_t>& labels() const { return labels_; }
 

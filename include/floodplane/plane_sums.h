@@ -83,6 +83,12 @@ struct PlaneSums {
     sxx -= x * x; sxy -= x * y; sxz -= x * z;
     syy -= y * y; syz -= y * z; szz -= z * z;
   }
+  void subtract(const PlaneSums& o) {
+    count -= o.count;
+    sx -= o.sx; sy -= o.sy; sz -= o.sz;
+    sxx -= o.sxx; sxy -= o.sxy; sxz -= o.sxz;
+    syy -= o.syy; syz -= o.syz; szz -= o.szz;
+  }
   void merge(const PlaneSums& o) {
     count += o.count;
     sx += o.sx; sy += o.sy; sz += o.sz;
