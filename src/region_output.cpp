@@ -70,6 +70,7 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
   // outlier far along a ray), make its fit degenerate. The last sort of the candidates
   // checks them again, so that what is reported passes. (With s = 1 and no refinement the
   // labels add no pixel to the clusters, and there is nothing to check again.)
+  bool renumbered = false;  // labels still to be renumbered by remap_
   if (subsampling == 1) {
     // Counts are known: number the planes by size before writing any label.
     sortBySize(params.min_inliers, nullptr);
@@ -77,12 +78,14 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
     labelFullResolution(full, segmented, subsampling, merged, out.labels);
   } else {
     labelFullResolution(full, segmented, subsampling, merged, out.labels);
-    if (sortBySize(params.min_inliers, refine ? nullptr : &params)) renumber(out.labels);
+    renumbered = sortBySize(params.min_inliers, refine ? nullptr : &params);
   }
   if (refine) {
-    this->refine(full, out.labels);
+    this->refine(full, out.labels, renumbered);  // renumbers on its way
     // Refinement may also have changed the order by size.
     if (sortBySize(0, &params)) renumber(out.labels);
+  } else if (renumbered) {
+    renumber(out.labels);
   }
 
   out.planes.clear();
@@ -257,10 +260,27 @@ void RegionBuilder::renumber(std::vector<std::uint32_t>& labels) {
   }
 }
 
-void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& labels) {
-  if (candidates_.empty()) return;
+void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& labels, bool renumber_first) {
+  if (candidates_.empty()) {
+    if (renumber_first) renumber(labels);
+    return;
+  }
   const int width = full.width;
   const int height = full.height;
+  // renumber() one row ahead of the scan below (which reads the rows above and below the
+  // pixel it looks at): one pass over the label image instead of two.
+  const auto renumberRow = [&](int y) {
+    const std::size_t row_start = static_cast<std::size_t>(y) * width;
+    for (std::size_t i = row_start; i < row_start + static_cast<std::size_t>(width); ++i) {
+      const std::uint32_t k = remap_[labels[i]];
+      labels[i] = k;
+      if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
+    }
+  };
+  if (renumber_first) {
+    for (Candidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
+    renumberRow(0);
+  }
   // Does pixel `to`, next to `from`, join plane k (Eqs. 1-3 with the plane's thresholds)?
   const auto fits = [&](std::uint32_t k, std::size_t from, std::size_t to, float& distance) {
     const FloodCriterion& c = candidates_[k - 1].criterion;
@@ -282,6 +302,7 @@ void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& la
   // Seeds of the growth: unlabelled pixels next to a plane they fit, the best plane first.
   queue_.clear();
   for (int y = 0; y < height; ++y) {
+    if (renumber_first && y + 1 < height) renumberRow(y + 1);
     const std::uint32_t* row = labels.data() + static_cast<std::size_t>(y) * width;
     for (int x = findInRow(row, 0, width - 1, 0u, true); x < width; x = findInRow(row, x + 1, width - 1, 0u, true)) {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;

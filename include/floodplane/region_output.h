@@ -61,7 +61,9 @@ class RegionBuilder {
   bool sortBySize(std::uint32_t min_inliers, const Params* recheck);
   // Applies remap_ to a label image and finds each plane's first pixel again.
   void renumber(std::vector<std::uint32_t>& labels);
-  void refine(const PointGrid& full, std::vector<std::uint32_t>& labels);
+  // Grows the planes into unlabelled pixels; with `renumber_first`, applies renumber() to
+  // the labels first (in the same pass).
+  void refine(const PointGrid& full, std::vector<std::uint32_t>& labels, bool renumber_first);
 
   // A cell of the segmented grid, between samples (gx, gy) and (gx + 1, gy + 1): the planes
   // of its four samples, and whether they are none (0), one (that plane) or several.

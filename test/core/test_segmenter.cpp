@@ -71,22 +71,37 @@ TEST(Segmenter, FindsTheThreePlanesOfARoomCorner) {
   }
 }
 
+// With and without noise, sub-sampling and refinement: the stages that count pixels, sort
+// and renumber planes and note their first pixels must agree with the label image.
 TEST(Segmenter, NumbersPlanesBySizeAndCountsTheirPixels) {
-  const RenderedGrid scene = test::render(camera(), test::roomCorner());
-  Segmenter segmenter(exactParams());
-  const Segmentation& result = segmenter.segment(scene.grid());
-  std::vector<std::size_t> counts(result.planes.size() + 1, 0);
-  std::vector<std::size_t> first(result.planes.size() + 1, std::numeric_limits<std::size_t>::max());
-  for (std::size_t i = 0; i < result.labels.size(); ++i) {
-    ASSERT_LE(result.labels[i], result.planes.size());
-    ++counts[result.labels[i]];
-    first[result.labels[i]] = std::min(first[result.labels[i]], i);
-  }
-  for (std::size_t k = 0; k < result.planes.size(); ++k) {
-    EXPECT_EQ(result.planes[k].inlier_count, counts[k + 1]);
-    EXPECT_EQ(result.planes[k].first_pixel, first[k + 1]);
-    if (k > 0) {
-      EXPECT_GE(result.planes[k - 1].inlier_count, result.planes[k].inlier_count);
+  for (const double noise : {0.0, 0.01}) {
+    const RenderedGrid scene = test::render(camera(), test::roomCorner(), noise, 11);
+    for (const int subsampling : {1, 2, 4}) {
+      for (const bool refine : {true, false}) {
+        SCOPED_TRACE(::testing::Message() << "noise " << noise << ", s = " << subsampling << ", refine " << refine);
+        Params params = noise > 0.0 ? Params() : exactParams();
+        params.min_inliers = 50;
+        params.subsampling = subsampling;
+        Segmenter segmenter(params);
+        Segmenter::Options options;
+        options.refine = refine;
+        const Segmentation& result = segmenter.segment(scene.grid(), options);
+        ASSERT_GE(result.planes.size(), 3u);
+        std::vector<std::size_t> counts(result.planes.size() + 1, 0);
+        std::vector<std::size_t> first(result.planes.size() + 1, std::numeric_limits<std::size_t>::max());
+        for (std::size_t i = 0; i < result.labels.size(); ++i) {
+          ASSERT_LE(result.labels[i], result.planes.size());
+          ++counts[result.labels[i]];
+          first[result.labels[i]] = std::min(first[result.labels[i]], i);
+        }
+        for (std::size_t k = 0; k < result.planes.size(); ++k) {
+          EXPECT_EQ(result.planes[k].inlier_count, counts[k + 1]);
+          EXPECT_EQ(result.planes[k].first_pixel, first[k + 1]);
+          if (k > 0) {
+            EXPECT_GE(result.planes[k - 1].inlier_count, result.planes[k].inlier_count);
+          }
+        }
+      }
     }
   }
 }
