@@ -76,13 +76,13 @@ class FloodVisitor {
   }
 
   // The fill's run along a row (see spanFloodFill): inside a plane, where most pixels are,
-  // blocks of kBlock pixels at once while every pixel of a block is unclaimed and passes;
-  // pixel by pixel through join() elsewhere, and for kBlock pixels after a block fails, so
-  // that a border costs little more than before. Labels, distances and refits come out as
-  // with join() alone; only the order in which points are added to the sums differs.
+  // blocks of kBlock pixels at once while all pixels of a block join the same way (see
+  // joinBlock); pixel by pixel through join() elsewhere, and for kBlock pixels after a block
+  // fails, so that a border costs little more than before. Labels, distances and refits come
+  // out as with join() alone; only the order in which points are added to sums differs.
   FLOODPLANE_ALWAYS_INLINE int joinRun(std::size_t from, int step, int max) {
     int joined = 0;
-    int pixel_by_pixel_until = 0;
+    [[maybe_unused]] int pixel_by_pixel_until = 0;
     std::size_t pixel = from;
     while (joined < max) {
 #if FLOODPLANE_POINT_LANES

@@ -6,7 +6,7 @@
 #include "floodplane/plane_sums.h"
 #include "floodplane/point_grid.h"
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) && !defined(FLOODPLANE_NO_SIMD)
 #include <emmintrin.h>
 #include <xmmintrin.h>
 #define FLOODPLANE_POINT_LANES 1
@@ -15,6 +15,9 @@
 #endif
 
 namespace floodplane {
+
+// Define FLOODPLANE_NO_SIMD to build the pixel-by-pixel code everywhere (as on CPUs without
+// SSE2), e.g. to check that both give the same results.
 
 /// Whether the loops that take four neighbouring pixels of a row at once can run on a grid:
 /// they need SSE2 (every x86-64 CPU has it) and load the four floats at the start of each

@@ -3,8 +3,9 @@
 #include <cstdint>
 #include <type_traits>
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) && !defined(FLOODPLANE_NO_SIMD)
 #include <emmintrin.h>
+#define FLOODPLANE_ROW_SEARCH_SSE2 1
 #endif
 
 namespace floodplane {
@@ -16,7 +17,7 @@ namespace floodplane {
 template <class Label>
 int findInRow(const Label* row, int x, int x_end, Label label, bool equal) {
   static_assert(sizeof(Label) == 4 && std::is_integral_v<Label>, "32-bit labels");
-#if defined(__SSE2__)
+#if defined(FLOODPLANE_ROW_SEARCH_SSE2)
   const __m128i wanted = _mm_set1_epi32(static_cast<std::int32_t>(label));
   const int nothing_found = equal ? 0 : 0xffff;  // movemask of a block without what we look for
   for (; x + 3 <= x_end; x += 4) {

@@ -163,7 +163,6 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     inlier_indices[k].header = input_->header;
     inlier_indices[k].indices.clear();
-    inlier_indices[k].indices.reserve(last_->planes[k].inlier_count);
   }
   pcl::PointIndices* unlabelled = nullptr;
   if (label_indices) {
@@ -172,13 +171,43 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
     unlabelled->header = input_->header;
     unlabelled->indices.clear();
   }
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    const std::uint32_t k = labels[i];
-    if (k != 0) {
-      inlier_indices[k - 1].indices.push_back(static_cast<int>(i));
-    } else if (unlabelled && pcl::isXYZFinite((*input_)[i])) {
-      unlabelled->indices.push_back(static_cast<int>(i));
+  // One pass over the labels; `add_inlier(k, i)` files pixel i under plane k + 1.
+  const auto collect = [&](auto&& add_inlier) {
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      const std::uint32_t k = labels[i];
+      if (k != 0) {
+        if (!add_inlier(k - 1, static_cast<int>(i))) return false;
+      } else if (unlabelled && pcl::isXYZFinite((*input_)[i])) {
+        unlabelled->indices.push_back(static_cast<int>(i));
+      }
     }
+    return true;
+  };
+  // Each plane's indices go through a cursor into storage of its inlier count (the count of
+  // its label in the image), rather than one push_back at a time.
+  std::vector<int*> cursor(planes_.size());
+  std::vector<int*> end(planes_.size());
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    std::vector<int>& indices = inlier_indices[k].indices;
+    indices.resize(last_->planes[k].inlier_count);
+    cursor[k] = indices.data();
+    end[k] = indices.data() + indices.size();
+  }
+  bool counts_agree = collect([&](std::size_t k, int i) {
+    if (cursor[k] == end[k]) return false;
+    *cursor[k]++ = i;
+    return true;
+  });
+  for (std::size_t k = 0; counts_agree && k < planes_.size(); ++k) counts_agree = cursor[k] == end[k];
+  if (!counts_agree) {
+    // Cannot happen (the core counts what it labels, and its tests check that); if it did,
+    // the indices are still right, only slower to make.
+    if (unlabelled) unlabelled->indices.clear();
+    for (pcl::PointIndices& plane : inlier_indices) plane.indices.clear();
+    collect([&](std::size_t k, int i) {
+      inlier_indices[k].indices.push_back(i);
+      return true;
+    });
   }
   if (label_indices) {
     for (std::size_t k = 0; k < planes_.size(); ++k) (*label_indices)[k + 1] = inlier_indices[k];
