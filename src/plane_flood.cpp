@@ -161,7 +161,8 @@ class FloodVisitor {
     // One owner for all four, not this flood: none (0), or a segment to take them from.
     const std::int32_t owner = labels_[first];
     const __m128i owners = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels_ + first));
-    if (owner == label_ || _mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_set1_epi32(owner))) != 0xffff) return false;
+    if (owner == label_ || _mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_set1_epi32(owner))) != 0xffff)
+      return false;
 
     const __m128 p0 = _mm_loadu_ps(grid_.point(low));
     const __m128 p1 = _mm_loadu_ps(grid_.point(low + 1));
@@ -179,7 +180,8 @@ class FloodVisitor {
     const __m128 dy = _mm_sub_ps(p.y, q.y);
     const __m128 dz = _mm_sub_ps(p.z, q.z);
     const __m128 euclidean_sq = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-    const __m128 euclidean_tolerance_sq = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(c.euclidean_factor_sq), range_sq), range_sq);
+    const __m128 euclidean_tolerance_sq =
+        _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(c.euclidean_factor_sq), range_sq), range_sq);
     // Eq. 2.
     const __m128 distance = q.planeDistance(c.normal, c.offset);
     const __m128 tolerance = planeTolerance(c, range_sq);

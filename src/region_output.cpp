@@ -309,7 +309,8 @@ void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& la
       const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < width ? i + 1 : i,
                                          y > 0 ? i - width : i, y + 1 < height ? i + width : i};
       // Most unlabelled pixels (holes, clutter) have no labelled neighbour at all.
-      if ((labels[neighbours[0]] | labels[neighbours[1]] | labels[neighbours[2]] | labels[neighbours[3]]) == 0) continue;
+      if ((labels[neighbours[0]] | labels[neighbours[1]] | labels[neighbours[2]] | labels[neighbours[3]]) == 0)
+        continue;
       std::uint32_t best = 0;
       float best_distance = std::numeric_limits<float>::infinity();
       for (const std::size_t j : neighbours) {

@@ -47,8 +47,8 @@ struct PointLanes {
   __m128 squaredNorm() const { return _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z)); }
   /// planeDistance: |((n_x x + n_y y) + n_z z) + d|.
   __m128 planeDistance(const Vec3& normal, float offset) const {
-    const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(normal.x), x), _mm_mul_ps(_mm_set1_ps(normal.y), y)),
-                                  _mm_mul_ps(_mm_set1_ps(normal.z), z));
+    const __m128 xy = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(normal.x), x), _mm_mul_ps(_mm_set1_ps(normal.y), y));
+    const __m128 dot = _mm_add_ps(xy, _mm_mul_ps(_mm_set1_ps(normal.z), z));
     return _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_add_ps(dot, _mm_set1_ps(offset)));
   }
 };

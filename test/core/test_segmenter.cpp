@@ -183,7 +183,8 @@ TEST(Segmenter, DecidingFourPixelsAtATimeChangesNothing) {
   for (const double noise : {0.0, 0.01}) {
     const RenderedGrid scene = test::render(wide, test::roomCorner(), noise, 7);
     std::vector<float> padded;
-    for (std::size_t i = 0; i < scene.xyz.size(); i += 3) padded.insert(padded.end(), {scene.xyz[i], scene.xyz[i + 1], scene.xyz[i + 2], 1.f});
+    for (std::size_t i = 0; i < scene.xyz.size(); i += 3)
+      padded.insert(padded.end(), {scene.xyz[i], scene.xyz[i + 1], scene.xyz[i + 2], 1.f});
     PointGrid four = scene.grid();
     four.data = padded.data();
     four.stride = 4;
