@@ -198,15 +198,17 @@ class FloodVisitor {
     alignas(16) float distances[kBlock];
     _mm_store_ps(distances, distance);
     buffer_.claimRun(first, kBlock, label_, distances);
+    LaneSums lanes;
+    lanes.add(q);
+    PlaneSums block;  // of the four points, once for both segments
+    lanes.addTo(block);
     if (owner != 0) {
-      PlaneSums lost;
-      addToSums(lost, q);
       Segment& loser = segments_[owner];
-      loser.sums.subtract(lost);
+      loser.sums.subtract(block);
       loser.lost_pixels = true;
       taken_over_ += kBlock;
     }
-    addToSums(self_.sums, q);
+    self_.sums.merge(block);
     attempts_ += kBlock;
     return true;
   }

@@ -121,6 +121,7 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   // Every plane has the same tolerance at a given range.
   const FloodCriterion* criteria = candidates_.empty() ? nullptr : &candidates_[0].criterion;
   cells_.resize(static_cast<std::size_t>(grid_width));
+  column_range_sq_.resize(static_cast<std::size_t>(grid_width) * subsampling);
   for (int gy = 0; gy < grid_height; ++gy) {
     const std::size_t sample_row = static_cast<std::size_t>(gy) * grid_width;
     const std::int32_t* row0 = segment + sample_row;
@@ -137,7 +138,6 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
       cell.sample_range_sq = Vec3::load(segmented.point(sample_row + static_cast<std::size_t>(gx))).squaredNorm();
     }
     // Per pixel column, the squared range of its cell's sample, for the four-pixel loop.
-    column_range_sq_.resize(static_cast<std::size_t>(grid_width) * subsampling);
     for (int gx = 0; gx < grid_width; ++gx)
       std::fill_n(column_range_sq_.begin() + static_cast<std::ptrdiff_t>(gx) * subsampling, subsampling,
                   cells_[static_cast<std::size_t>(gx)].sample_range_sq);
@@ -216,8 +216,7 @@ void RegionBuilder::addRowToSums(const PointGrid& full, std::size_t row_start, c
   int u = 0;
   while (u < width) {
     const std::uint32_t k = row[u];
-    int end = u + 1;
-    while (end < width && row[end] == k) ++end;
+    const int end = findInRow(row, u, width - 1, k, false);
     if (k != 0) {
       Candidate& candidate = candidates_[k - 1];
       // Rows come in raster order: a plane's first run starts at its first pixel.
@@ -252,8 +251,11 @@ bool RegionBuilder::sortBySize(std::uint32_t min_inliers, const Params* recheck)
 
 void RegionBuilder::renumber(std::vector<std::uint32_t>& labels) {
   for (Candidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
-  const std::size_t n = labels.size();
-  for (std::size_t i = 0; i < n; ++i) {
+  renumberPixels(labels, 0, labels.size());
+}
+
+void RegionBuilder::renumberPixels(std::vector<std::uint32_t>& labels, std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) {
     const std::uint32_t k = remap_[labels[i]];
     labels[i] = k;
     if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
@@ -271,11 +273,7 @@ void RegionBuilder::refine(const PointGrid& full, std::vector<std::uint32_t>& la
   // pixel it looks at): one pass over the label image instead of two.
   const auto renumberRow = [&](int y) {
     const std::size_t row_start = static_cast<std::size_t>(y) * width;
-    for (std::size_t i = row_start; i < row_start + static_cast<std::size_t>(width); ++i) {
-      const std::uint32_t k = remap_[labels[i]];
-      labels[i] = k;
-      if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
-    }
+    renumberPixels(labels, row_start, row_start + static_cast<std::size_t>(width));
   };
   if (renumber_first) {
     for (Candidate& candidate : candidates_) candidate.first_pixel = kNoPixel;

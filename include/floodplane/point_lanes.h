@@ -63,26 +63,46 @@ inline __m128 planeTolerance(const FloodCriterion& c, __m128 range_sq) {
   return _mm_max_ps(_mm_set1_ps(c.plane_threshold), _mm_mul_ps(_mm_set1_ps(c.plane_noise_factor), range_sq));
 }
 
-/// PlaneSums::add for the four points, two at a time in double precision.
-inline void addToSums(PlaneSums& sums, const PointLanes& p) {
-  const __m128d x0 = _mm_cvtps_pd(p.x), x1 = _mm_cvtps_pd(_mm_movehl_ps(p.x, p.x));
-  const __m128d y0 = _mm_cvtps_pd(p.y), y1 = _mm_cvtps_pd(_mm_movehl_ps(p.y, p.y));
-  const __m128d z0 = _mm_cvtps_pd(p.z), z1 = _mm_cvtps_pd(_mm_movehl_ps(p.z, p.z));
-  const auto total = [](__m128d a, __m128d b) {
-    const __m128d sum = _mm_add_pd(a, b);
-    return _mm_cvtsd_f64(_mm_add_sd(sum, _mm_unpackhi_pd(sum, sum)));
-  };
-  sums.count += 4.0;
-  sums.sx += total(x0, x1);
-  sums.sy += total(y0, y1);
-  sums.sz += total(z0, z1);
-  sums.sxx += total(_mm_mul_pd(x0, x0), _mm_mul_pd(x1, x1));
-  sums.sxy += total(_mm_mul_pd(x0, y0), _mm_mul_pd(x1, y1));
-  sums.sxz += total(_mm_mul_pd(x0, z0), _mm_mul_pd(x1, z1));
-  sums.syy += total(_mm_mul_pd(y0, y0), _mm_mul_pd(y1, y1));
-  sums.syz += total(_mm_mul_pd(y0, z0), _mm_mul_pd(y1, z1));
-  sums.szz += total(_mm_mul_pd(z0, z0), _mm_mul_pd(z1, z1));
-}
+/// Plane sums of points taken four at a time (PointLanes), in two double lanes per sum;
+/// addTo() adds them to a PlaneSums. The one place where lanes are summed.
+class LaneSums {
+ public:
+  void add(const PointLanes& p) {
+    add(_mm_cvtps_pd(p.x), _mm_cvtps_pd(p.y), _mm_cvtps_pd(p.z));
+    add(_mm_cvtps_pd(_mm_movehl_ps(p.x, p.x)), _mm_cvtps_pd(_mm_movehl_ps(p.y, p.y)),
+        _mm_cvtps_pd(_mm_movehl_ps(p.z, p.z)));
+    count_ += 4.0;
+  }
+  void addTo(PlaneSums& sums) const {
+    const auto total = [](__m128d a) { return _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a))); };
+    sums.count += count_;
+    sums.sx += total(sx_);
+    sums.sy += total(sy_);
+    sums.sz += total(sz_);
+    sums.sxx += total(sxx_);
+    sums.sxy += total(sxy_);
+    sums.sxz += total(sxz_);
+    sums.syy += total(syy_);
+    sums.syz += total(syz_);
+    sums.szz += total(szz_);
+  }
+
+ private:
+  void add(__m128d x, __m128d y, __m128d z) {
+    sx_ = _mm_add_pd(sx_, x);
+    sy_ = _mm_add_pd(sy_, y);
+    sz_ = _mm_add_pd(sz_, z);
+    sxx_ = _mm_add_pd(sxx_, _mm_mul_pd(x, x));
+    sxy_ = _mm_add_pd(sxy_, _mm_mul_pd(x, y));
+    sxz_ = _mm_add_pd(sxz_, _mm_mul_pd(x, z));
+    syy_ = _mm_add_pd(syy_, _mm_mul_pd(y, y));
+    syz_ = _mm_add_pd(syz_, _mm_mul_pd(y, z));
+    szz_ = _mm_add_pd(szz_, _mm_mul_pd(z, z));
+  }
+  __m128d sx_ = _mm_setzero_pd(), sy_ = sx_, sz_ = sx_, sxx_ = sx_, sxy_ = sx_, sxz_ = sx_, syy_ = sx_, syz_ = sx_,
+          szz_ = sx_;
+  double count_ = 0.0;
+};
 #endif
 
 /// Adds points first .. first + n - 1 of a grid to the sums: four at a time into vector
@@ -91,36 +111,10 @@ inline void addToSums(PlaneSums& sums, const PointLanes& p) {
 inline void addRunToSums(PlaneSums& sums, const PointGrid& grid, std::size_t first, std::size_t n) {
 #if FLOODPLANE_POINT_LANES
   if (fourPixelsAtATime(grid) && n >= 4) {
-    __m128d sx = _mm_setzero_pd(), sy = sx, sz = sx, sxx = sx, sxy = sx, sxz = sx, syy = sx, syz = sx, szz = sx;
-    const auto add = [&](__m128d x, __m128d y, __m128d z) {
-      sx = _mm_add_pd(sx, x);
-      sy = _mm_add_pd(sy, y);
-      sz = _mm_add_pd(sz, z);
-      sxx = _mm_add_pd(sxx, _mm_mul_pd(x, x));
-      sxy = _mm_add_pd(sxy, _mm_mul_pd(x, y));
-      sxz = _mm_add_pd(sxz, _mm_mul_pd(x, z));
-      syy = _mm_add_pd(syy, _mm_mul_pd(y, y));
-      syz = _mm_add_pd(syz, _mm_mul_pd(y, z));
-      szz = _mm_add_pd(szz, _mm_mul_pd(z, z));
-    };
+    LaneSums lanes;
     std::size_t done = 0;
-    for (; done + 4 <= n; done += 4) {
-      const PointLanes p = PointLanes::load(grid, first + done);
-      add(_mm_cvtps_pd(p.x), _mm_cvtps_pd(p.y), _mm_cvtps_pd(p.z));
-      add(_mm_cvtps_pd(_mm_movehl_ps(p.x, p.x)), _mm_cvtps_pd(_mm_movehl_ps(p.y, p.y)),
-          _mm_cvtps_pd(_mm_movehl_ps(p.z, p.z)));
-    }
-    const auto total = [](__m128d a) { return _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a))); };
-    sums.count += static_cast<double>(done);
-    sums.sx += total(sx);
-    sums.sy += total(sy);
-    sums.sz += total(sz);
-    sums.sxx += total(sxx);
-    sums.sxy += total(sxy);
-    sums.sxz += total(sxz);
-    sums.syy += total(syy);
-    sums.syz += total(syz);
-    sums.szz += total(szz);
+    for (; done + 4 <= n; done += 4) lanes.add(PointLanes::load(grid, first + done));
+    lanes.addTo(sums);
     first += done;
     n -= done;
   }

@@ -61,6 +61,9 @@ class RegionBuilder {
   bool sortBySize(std::uint32_t min_inliers, const Params* recheck);
   // Applies remap_ to a label image and finds each plane's first pixel again.
   void renumber(std::vector<std::uint32_t>& labels);
+  // renumber() for pixels [begin, end), with the first pixels already reset and found
+  // before `begin`.
+  void renumberPixels(std::vector<std::uint32_t>& labels, std::size_t begin, std::size_t end);
   // Grows the planes into unlabelled pixels; with `renumber_first`, applies renumber() to
   // the labels first (in the same pass).
   void refine(const PointGrid& full, std::vector<std::uint32_t>& labels, bool renumber_first);
