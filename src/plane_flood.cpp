@@ -200,15 +200,17 @@ class FloodVisitor {
     buffer_.claimRun(first, kBlock, label_, distances);
     LaneSums lanes;
     lanes.add(q);
-    PlaneSums block;  // of the four points, once for both segments
-    lanes.addTo(block);
-    if (owner != 0) {
+    if (owner == 0) {
+      lanes.addTo(self_.sums);
+    } else {
+      PlaneSums block;  // of the four points, once for both segments
+      lanes.addTo(block);
       Segment& loser = segments_[owner];
       loser.sums.subtract(block);
       loser.lost_pixels = true;
       taken_over_ += kBlock;
+      self_.sums.merge(block);
     }
-    self_.sums.merge(block);
     attempts_ += kBlock;
     return true;
   }
