@@ -8,9 +8,9 @@
 #include <map>
 #include <stdexcept>
 
-#include "floodplane/synth/point_cloud.h"
-#include "floodplane/synth/renderer.h"
-#include "floodplane/synth/scene_file.h"
+#include "synth/point_cloud.h"
+#include "synth/renderer.h"
+#include "synth/scene_file.h"
 
 namespace floodplane::bench {
 

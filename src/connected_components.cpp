@@ -1,8 +1,8 @@
-#include "floodplane/connected_components.h"
+#include "connected_components.h"
 
 #include <cstddef>
 
-#include "floodplane/row_search.h"
+#include "row_search.h"
 
 namespace floodplane {
 

@@ -1,9 +1,9 @@
-#include "floodplane/plane_flood.h"
+#include "plane_flood.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "floodplane/point_lanes.h"
+#include "point_lanes.h"
 
 namespace floodplane {
 

@@ -1,4 +1,4 @@
-#include "floodplane/plane_merging.h"
+#include "plane_merging.h"
 
 #include <algorithm>
 #include <cmath>

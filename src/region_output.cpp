@@ -1,12 +1,12 @@
-#include "floodplane/region_output.h"
+#include "region_output.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 
-#include "floodplane/point_lanes.h"
-#include "floodplane/row_search.h"
+#include "point_lanes.h"
+#include "row_search.h"
 
 namespace floodplane {
 

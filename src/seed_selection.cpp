@@ -1,4 +1,4 @@
-#include "floodplane/seed_selection.h"
+#include "seed_selection.h"
 
 #include <algorithm>
 #include <cmath>

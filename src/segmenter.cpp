@@ -4,13 +4,13 @@
 #include <chrono>
 #include <cmath>
 
-#include "floodplane/connected_components.h"
-#include "floodplane/distance_buffer.h"
-#include "floodplane/plane_flood.h"
-#include "floodplane/plane_merging.h"
-#include "floodplane/point_lanes.h"
-#include "floodplane/region_output.h"
-#include "floodplane/seed_selection.h"
+#include "connected_components.h"
+#include "distance_buffer.h"
+#include "plane_flood.h"
+#include "plane_merging.h"
+#include "point_lanes.h"
+#include "region_output.h"
+#include "seed_selection.h"
 
 namespace floodplane {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "floodplane/io/rgb_image.h"
+#include "io/rgb_image.h"
 
 namespace pcd_compare {
 

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "bitmap_font.h"
-#include "floodplane/io/label_palette.h"
+#include "io/label_palette.h"
 
 namespace pcd_compare {
 

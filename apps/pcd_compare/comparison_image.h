@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/io/rgb_image.h"
+#include "io/rgb_image.h"
 
 namespace pcd_compare {
 

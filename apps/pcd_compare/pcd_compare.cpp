@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "comparison_image.h"
-#include "floodplane/eval/segmentation_metrics.h"
-#include "floodplane/io/atomic_file.h"
-#include "floodplane/io/png_file.h"
+#include "eval/segmentation_metrics.h"
+#include "io/atomic_file.h"
+#include "io/png_file.h"
 #include "floodplane/version.h"
 #include "input_cloud.h"
 #include "method.h"

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "floodplane/eval/segmentation_metrics.h"
+#include "eval/segmentation_metrics.h"
 #include "floodplane/segmenter.h"
 
 namespace pcd_compare {

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <type_traits>
 
-#include "floodplane/io/atomic_file.h"
-#include "floodplane/io/pcd_file.h"
+#include "io/atomic_file.h"
+#include "io/pcd_file.h"
 
 namespace pcd_segment {
 

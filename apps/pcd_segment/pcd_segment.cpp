@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
-#include "floodplane/io/atomic_file.h"
-#include "floodplane/io/label_palette.h"
-#include "floodplane/io/png_file.h"
+#include "io/atomic_file.h"
+#include "io/label_palette.h"
+#include "io/png_file.h"
 #include "floodplane/version.h"
 #include "inputs.h"
 #include "label_pcd.h"

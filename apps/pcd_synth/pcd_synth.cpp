@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/io/atomic_file.h"
-#include "floodplane/io/label_palette.h"
-#include "floodplane/io/pcd_file.h"
-#include "floodplane/io/png_file.h"
-#include "floodplane/synth/ground_truth_json.h"
-#include "floodplane/synth/point_cloud.h"
-#include "floodplane/synth/renderer.h"
-#include "floodplane/synth/scene_file.h"
+#include "io/atomic_file.h"
+#include "io/label_palette.h"
+#include "io/pcd_file.h"
+#include "io/png_file.h"
+#include "synth/ground_truth_json.h"
+#include "synth/point_cloud.h"
+#include "synth/renderer.h"
+#include "synth/scene_file.h"
 #include "floodplane/version.h"
 
 namespace {

@@ -1,4 +1,4 @@
-#include "floodplane/eval/segmentation_metrics.h"
+#include "eval/segmentation_metrics.h"
 
 #include <algorithm>
 #include <cmath>

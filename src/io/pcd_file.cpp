@@ -1,10 +1,10 @@
-#include "floodplane/io/pcd_file.h"
+#include "io/pcd_file.h"
 
 #include <pcl/io/pcd_io.h>
 
 #include <stdexcept>
 
-#include "floodplane/io/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace floodplane::io {
 

@@ -1,11 +1,11 @@
-#include "floodplane/io/png_file.h"
+#include "io/png_file.h"
 
 #include <png.h>
 
 #include <limits>
 #include <stdexcept>
 
-#include "floodplane/io/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace floodplane::io {
 

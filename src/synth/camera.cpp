@@ -1,4 +1,4 @@
-#include "floodplane/synth/camera.h"
+#include "synth/camera.h"
 
 #include <stdexcept>
 #include <string>

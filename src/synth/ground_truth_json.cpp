@@ -1,4 +1,4 @@
-#include "floodplane/synth/ground_truth_json.h"
+#include "synth/ground_truth_json.h"
 
 #include <nlohmann/json.hpp>
 

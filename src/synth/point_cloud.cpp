@@ -1,4 +1,4 @@
-#include "floodplane/synth/point_cloud.h"
+#include "synth/point_cloud.h"
 
 #include <cmath>
 

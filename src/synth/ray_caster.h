@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "floodplane/synth/rendered_frame.h"
-#include "floodplane/synth/scene.h"
+#include "synth/rendered_frame.h"
+#include "synth/scene.h"
 #include "surfaces.h"
 
 namespace floodplane::synth {

@@ -1,4 +1,4 @@
-#include "floodplane/synth/renderer.h"
+#include "synth/renderer.h"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "floodplane/synth/scene.h"
+#include "synth/scene.h"
 
 #include <array>
 #include <string>

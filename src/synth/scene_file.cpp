@@ -1,4 +1,4 @@
-#include "floodplane/synth/scene_file.h"
+#include "synth/scene_file.h"
 
 #include <cmath>
 #include <filesystem>

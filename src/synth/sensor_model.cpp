@@ -1,4 +1,4 @@
-#include "floodplane/synth/sensor_model.h"
+#include "synth/sensor_model.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/connected_components.h"
-#include "floodplane/union_find.h"
+#include "connected_components.h"
+#include "union_find.h"
 
 namespace floodplane {
 namespace {

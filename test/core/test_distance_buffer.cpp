@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "floodplane/distance_buffer.h"
+#include "distance_buffer.h"
 
 namespace floodplane {
 namespace {

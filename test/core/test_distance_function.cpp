@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "floodplane/distance_function.h"
+#include "distance_function.h"
 
 namespace floodplane {
 namespace {

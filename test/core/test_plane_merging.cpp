@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "floodplane/plane_merging.h"
+#include "plane_merging.h"
 
 namespace floodplane {
 namespace {

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "floodplane/row_search.h"
+#include "row_search.h"
 
 namespace floodplane {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "floodplane/seed_selection.h"
+#include "seed_selection.h"
 #include "test_scenes.h"
 
 namespace floodplane {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/span_flood_fill.h"
+#include "span_flood_fill.h"
 
 namespace floodplane {
 namespace {

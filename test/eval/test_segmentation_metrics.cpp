@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/eval/segmentation_metrics.h"
+#include "eval/segmentation_metrics.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "floodplane/io/label_palette.h"
+#include "io/label_palette.h"
 
 #include <gtest/gtest.h>
 

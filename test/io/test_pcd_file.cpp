@@ -1,4 +1,4 @@
-#include "floodplane/io/pcd_file.h"
+#include "io/pcd_file.h"
 #include "temp_path.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "floodplane/io/png_file.h"
+#include "io/png_file.h"
 #include "temp_path.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // a sphere and a cylinder in the exact model, the Kinect model's statistics, determinism, and
 // every scene file in data/scenes.
 
-#include "floodplane/synth/renderer.h"
+#include "synth/renderer.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/io/pcd_file.h"
-#include "floodplane/synth/ground_truth_json.h"
-#include "floodplane/synth/point_cloud.h"
-#include "floodplane/synth/scene_file.h"
+#include "io/pcd_file.h"
+#include "synth/ground_truth_json.h"
+#include "synth/point_cloud.h"
+#include "synth/scene_file.h"
 
 namespace {
 

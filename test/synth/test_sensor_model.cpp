@@ -2,7 +2,7 @@
 // lattice, the order of noise, quantization, range limits and dropouts. The statistics of
 // the whole model on a rendered plane are in test_renderer.cpp.
 
-#include "floodplane/synth/sensor_model.h"
+#include "synth/sensor_model.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "floodplane/distance_function.h"
+#include "distance_function.h"
 #include "floodplane/params.h"
 #include "floodplane/plane_sums.h"
 #include "floodplane/point_grid.h"

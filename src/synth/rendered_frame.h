@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/synth/camera.h"
-#include "floodplane/synth/sensor_model.h"
+#include "synth/camera.h"
+#include "synth/sensor_model.h"
 
 namespace floodplane::synth {
 

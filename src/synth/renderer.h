@@ -3,9 +3,9 @@
 
 #include <cstdint>
 
-#include "floodplane/synth/rendered_frame.h"
-#include "floodplane/synth/scene.h"
-#include "floodplane/synth/sensor_model.h"
+#include "synth/rendered_frame.h"
+#include "synth/scene.h"
+#include "synth/sensor_model.h"
 
 namespace floodplane::synth {
 

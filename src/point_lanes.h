@@ -2,7 +2,7 @@
 
 #include <cstddef>
 
-#include "floodplane/distance_function.h"
+#include "distance_function.h"
 #include "floodplane/plane_sums.h"
 #include "floodplane/point_grid.h"
 

@@ -30,7 +30,7 @@
 #include <optional>
 #include <string_view>
 
-#include "floodplane/synth/pixel_random.h"
+#include "synth/pixel_random.h"
 
 namespace floodplane::synth {
 

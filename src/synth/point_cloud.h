@@ -4,7 +4,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include "floodplane/synth/rendered_frame.h"
+#include "synth/rendered_frame.h"
 
 namespace floodplane::synth {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "floodplane/synth/scene.h"
+#include "synth/scene.h"
 
 namespace floodplane::synth {
 

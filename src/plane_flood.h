@@ -5,14 +5,14 @@
 #include <utility>
 #include <vector>
 
-#include "floodplane/connected_components.h"
-#include "floodplane/distance_buffer.h"
-#include "floodplane/distance_function.h"
+#include "connected_components.h"
+#include "distance_buffer.h"
+#include "distance_function.h"
 #include "floodplane/params.h"
 #include "floodplane/plane_sums.h"
 #include "floodplane/point_grid.h"
-#include "floodplane/seed_selection.h"
-#include "floodplane/span_flood_fill.h"
+#include "seed_selection.h"
+#include "span_flood_fill.h"
 
 namespace floodplane {
 

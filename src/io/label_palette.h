@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "floodplane/io/rgb_image.h"
+#include "io/rgb_image.h"
 
 namespace floodplane::io {
 

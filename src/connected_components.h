@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "floodplane/union_find.h"
+#include "union_find.h"
 
 namespace floodplane {
 

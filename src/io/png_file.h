@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "floodplane/io/rgb_image.h"
+#include "io/rgb_image.h"
 
 namespace floodplane::io {
 

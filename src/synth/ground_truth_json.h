@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "floodplane/synth/rendered_frame.h"
+#include "synth/rendered_frame.h"
 
 namespace floodplane::synth {
 

@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "floodplane/synth/camera.h"
+#include "synth/camera.h"
 
 namespace floodplane::synth {
 
