@@ -3,7 +3,7 @@ function(floodplane_set_warnings target)
   if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
                                              -Wnon-virtual-dtor -Wold-style-cast
-                                             -Wcast-align -Woverloaded-virtual)
+                                             -Wcast-align -Woverloaded-virtual -Wconversion)
     if(FLOODPLANE_WERROR)
       target_compile_options(${target} PRIVATE -Werror)
     endif()

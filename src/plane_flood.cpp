@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "point_lanes.h"
+#include "simd.h"
 
 namespace floodplane {
 
@@ -85,7 +85,7 @@ class FloodVisitor {
     [[maybe_unused]] int pixel_by_pixel_until = 0;
     std::size_t pixel = from;
     while (joined < max) {
-#if FLOODPLANE_POINT_LANES
+#if FLOODPLANE_SIMD
       // A block must not carry the count past the next refit, which join() makes at the
       // exact pixel.
       if (blocks_ && joined >= pixel_by_pixel_until && max - joined >= kBlock &&
@@ -146,7 +146,7 @@ class FloodVisitor {
   std::size_t attempts() const { return attempts_; }
 
  private:
-#if FLOODPLANE_POINT_LANES
+#if FLOODPLANE_SIMD
   // join() for the kBlock pixels after `pixel` in direction `step`, each from its
   // predecessor, in the two cases where every pixel joins the same way: all unclaimed and
   // passing Eqs. 2 and 3, or all owned by one other segment and passing Eqs. 2, 3 and 4
@@ -160,43 +160,31 @@ class FloodVisitor {
     const std::size_t low = step > 0 ? pixel : pixel - kBlock;
     // One owner for all four, not this flood: none (0), or a segment to take them from.
     const std::int32_t owner = labels_[first];
-    const __m128i owners = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels_ + first));
-    if (owner == label_ || _mm_movemask_epi8(_mm_cmpeq_epi32(owners, _mm_set1_epi32(owner))) != 0xffff)
-      return false;
+    if (owner == label_ || !allLabelsEqual(labels_ + first, owner)) return false;
 
-    const __m128 p0 = _mm_loadu_ps(grid_.point(low));
-    const __m128 p1 = _mm_loadu_ps(grid_.point(low + 1));
-    const __m128 p2 = _mm_loadu_ps(grid_.point(low + 2));
-    const __m128 p3 = _mm_loadu_ps(grid_.point(low + 3));
-    const __m128 p4 = _mm_loadu_ps(grid_.point(low + 4));
-    const PointLanes lower = PointLanes::transpose(p0, p1, p2, p3);  // points low .. low + 3
-    const PointLanes upper = PointLanes::transpose(p1, p2, p3, p4);  // points low + 1 .. low + 4
+    const PointLanes lower = PointLanes::transpose(grid_.point(low), grid_.point(low + 1), grid_.point(low + 2),
+                                                   grid_.point(low + 3));  // points low .. low + 3
+    const PointLanes upper = PointLanes::transpose(grid_.point(low + 1), grid_.point(low + 2), grid_.point(low + 3),
+                                                   grid_.point(low + 4));  // points low + 1 .. low + 4
     const PointLanes& q = step > 0 ? upper : lower;
     const PointLanes& p = step > 0 ? lower : upper;
-    const __m128 range_sq = nearerRangeSq(p.squaredNorm(), q.squaredNorm());  // noiseRangeSq
+    const Float4 range_sq = Float4::min(p.squaredNorm(), q.squaredNorm());  // noiseRangeSq
     const FloodCriterion& c = criterion_;
     // Eq. 3: |p - q|^2 < (K r^2) r^2. A NaN fails it, so no lane below has a NaN range.
-    const __m128 dx = _mm_sub_ps(p.x, q.x);
-    const __m128 dy = _mm_sub_ps(p.y, q.y);
-    const __m128 dz = _mm_sub_ps(p.z, q.z);
-    const __m128 euclidean_sq = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-    const __m128 euclidean_tolerance_sq =
-        _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(c.euclidean_factor_sq), range_sq), range_sq);
+    Mask4 pass = p.squaredDistance(q) < c.euclideanToleranceSq(range_sq);
     // Eq. 2.
-    const __m128 distance = q.planeDistance(c.normal, c.offset);
-    const __m128 tolerance = planeTolerance(c, range_sq);
-    __m128 pass = _mm_and_ps(_mm_cmplt_ps(euclidean_sq, euclidean_tolerance_sq), _mm_cmplt_ps(distance, tolerance));
+    const Float4 distance = q.planeDistance(c.normal, c.offset);
+    const Float4 tolerance = c.planeTolerance(range_sq);
+    pass = pass & (distance < tolerance);
     if (owner != 0) {
       // Eq. 4 (DistanceBuffer::fitsBetter): distance + margin < D, the margin as takeoverMargin.
-      const float margin_factor = samePlane(owner) ? kTakeoverMargin : 0.0f;
-      const __m128 margin = _mm_mul_ps(_mm_set1_ps(margin_factor), tolerance);
-      const __m128 owned_at = _mm_loadu_ps(buffer_.distances().data() + first);
-      pass = _mm_and_ps(pass, _mm_cmplt_ps(_mm_add_ps(distance, margin), owned_at));
+      const Float4 margin = Float4::broadcast(samePlane(owner) ? kTakeoverMargin : 0.0f) * tolerance;
+      pass = pass & (distance + margin < Float4::load(buffer_.distances().data() + first));
     }
-    if (_mm_movemask_ps(pass) != 0xf) return false;
+    if (!pass.all()) return false;
 
-    alignas(16) float distances[kBlock];
-    _mm_store_ps(distances, distance);
+    float distances[kBlock];
+    distance.store(distances);
     buffer_.claimRun(first, kBlock, label_, distances);
     LaneSums lanes;
     lanes.add(q);
@@ -244,17 +232,16 @@ class FloodVisitor {
 }  // namespace
 
 std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                             DistanceBuffer& buffer, std::vector<Segment>& segments,
+                             const DepthNoise& noise, DistanceBuffer& buffer, std::vector<Segment>& segments,
                              std::vector<SegmentEdge>& edges) {
   if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
 
   Segment& segment = segments[label];
-  FloodCriterion& criterion = segment.criterion;
-  criterion.normal = seed.normal;
-  criterion.offset = -seed.normal.dot(seed.point);
-  criterion.plane_threshold = static_cast<float>(params.distance_threshold);
-  criterion.plane_noise_factor = static_cast<float>(3.0 * params.depth_noise_coefficient);
-  criterion.setEuclidean(seed.spacing, seed.point.squaredNorm(), static_cast<float>(params.depth_noise_coefficient));
+  // Eq. 8's spacing at the seed, as metres per r^2 (see FloodCriterion).
+  const double spacing_per_range_sq =
+      static_cast<double>(seed.spacing) / std::max(static_cast<double>(seed.point.squaredNorm()), 1e-12);
+  segment.criterion =
+      FloodCriterion::make(seed.normal, -seed.normal.dot(seed.point), spacing_per_range_sq, params, noise);
 
   buffer.claim(seed.index, label, 0.0f);
   segment.sums.add(seed.point);

@@ -7,9 +7,10 @@
 
 #include "connected_components.h"
 #include "distance_buffer.h"
+#include "depth_noise.h"
 #include "distance_function.h"
 #include "floodplane/params.h"
-#include "floodplane/plane_sums.h"
+#include "plane_sums.h"
 #include "floodplane/point_grid.h"
 #include "seed_selection.h"
 #include "span_flood_fill.h"
@@ -50,7 +51,7 @@ class PlaneFlood {
   /// Appends the segment's neighbour pairs to `edges`; returns the pixels it took from other
   /// segments under Eq. 4.
   std::size_t grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                   DistanceBuffer& buffer, std::vector<Segment>& segments, std::vector<SegmentEdge>& edges);
+                   const DepthNoise& noise, DistanceBuffer& buffer, std::vector<Segment>& segments, std::vector<SegmentEdge>& edges);
 
   /// Pixels examined (join attempts) by the last grow, for tests and statistics.
   std::size_t joinAttempts() const { return join_attempts_; }

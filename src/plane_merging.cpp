@@ -14,11 +14,11 @@ double normalVariance(const PlaneSums& sums, const PlaneFit& fit) {
 
 }  // namespace
 
-MergeCriterion::MergeCriterion(const Params& params)
+MergeCriterion::MergeCriterion(const Params& params, const DepthNoise& noise)
     : angle_(params.angular_threshold),
       merge_distance_(params.merge_distance),
       fit_tolerance_(0.5 * params.distance_threshold),
-      noise_coefficient_(params.depth_noise_coefficient) {}
+      noise_(noise) {}
 
 bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b,
                                const PlaneFit& fit_b, double& cost) const {
@@ -27,14 +27,13 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
   if (fit_a.valid && fit_b.valid) {
     // The depth noise at the parts' combined centroid, from the sums without a fit.
     const Eigen::Vector3d centroid = (a.centroid() * a.count + b.centroid() * b.count) / (a.count + b.count);
-    const double depth_sigma = noise_coefficient_ * centroid.squaredNorm();
     // Eq. 9, first term: the normals agree, up to what their own uncertainty explains.
     const double uncertainty = std::sqrt(normalVariance(a, fit_a) + normalVariance(b, fit_b));
     const double allowed = std::min(angle_ + 3.0 * uncertainty, 1.5);
     // Written as !(>=) so that a NaN anywhere rejects the merge rather than skipping the test.
     if (!(fit_a.normal.dot(fit_b.normal) >= std::cos(allowed))) return false;
     // Eq. 9, second term, both ways.
-    const double tolerance = std::max(merge_distance_, 3.0 * depth_sigma);
+    const double tolerance = noise_.tolerance(merge_distance_, centroid.squaredNorm());
     const Eigen::Vector3d between = fit_a.centroid - fit_b.centroid;
     if (std::abs(between.dot(fit_a.normal)) >= tolerance) return false;
     if (std::abs(between.dot(fit_b.normal)) >= tolerance) return false;
@@ -44,7 +43,7 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
   both.merge(b);
   const PlaneFit merged = both.fit();
   if (!merged.valid) return false;
-  const double depth_sigma = noise_coefficient_ * merged.centroid.squaredNorm();
+  const double depth_sigma = noise_.sigma(merged.centroid.squaredNorm());
 
   // Each part fits the merged plane.
   const double fit_tolerance = std::max(fit_tolerance_, 2.0 * depth_sigma);

@@ -5,8 +5,9 @@
 #include <utility>
 #include <vector>
 
+#include "depth_noise.h"
 #include "floodplane/params.h"
-#include "floodplane/plane_sums.h"
+#include "plane_sums.h"
 
 namespace floodplane {
 
@@ -21,7 +22,7 @@ namespace floodplane {
 /// centroid is within 3 cm of the wall's plane, would merge into the wall.
 class MergeCriterion {
  public:
-  explicit MergeCriterion(const Params& params);
+  MergeCriterion(const Params& params, const DepthNoise& noise);
 
   /// Whether segments a and b (sums and fits) may merge; when they may, `cost` is how
   /// tightly they fit one plane (lower merges first).
@@ -32,7 +33,7 @@ class MergeCriterion {
   double angle_;
   double merge_distance_;
   double fit_tolerance_;
-  double noise_coefficient_;
+  DepthNoise noise_;
 };
 
 /// Agglomerative hierarchical clustering of the segment graph (Sec. III-D).

@@ -1,4 +1,4 @@
-#include "floodplane/plane_sums.h"
+#include "plane_sums.h"
 
 #include <Eigen/Eigenvalues>
 

@@ -1,4 +1,6 @@
-#include "floodplane/region_boundary.h"
+#include "region_boundary.h"
+
+#include "floodplane/segmenter.h"
 
 namespace floodplane {
 
@@ -46,6 +48,11 @@ void traceRegionBoundary(const std::uint32_t* labels, int width, int height, std
     contour.push_back(y * width + x);
     direction = following;
   }
+}
+
+void Segmentation::boundary(std::size_t plane, std::vector<int>& contour) const {
+  traceRegionBoundary(labels.data(), width, height, static_cast<std::uint32_t>(plane + 1), planes[plane].first_pixel,
+                      contour);
 }
 
 }  // namespace floodplane

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "floodplane/plane_sums.h"
+#include "plane_sums.h"
 
 namespace floodplane {
 
@@ -26,11 +26,12 @@ bool sameDirection(const Vec3& u, const Vec3& v, float cos_angle) {
 
 }  // namespace
 
-void SeedSelector::configure(const Params& params, float angular_pitch, int width, int height) {
+void SeedSelector::configure(const Params& params, const DepthNoise& noise, float angular_pitch, int width,
+                             int height) {
   half_seed_ = static_cast<float>(params.seed_size) * 0.5f;
   angle_ = static_cast<float>(params.angular_threshold);
   cos_angle_ = std::cos(angle_);
-  noise_coefficient_ = static_cast<float>(params.depth_noise_coefficient);
+  noise_ = noise;
   angular_pitch_ = angular_pitch;
   width_ = width;
   height_ = height;
@@ -39,7 +40,8 @@ void SeedSelector::configure(const Params& params, float angular_pitch, int widt
 }
 
 float SeedSelector::seedSizeAt(float range) const {
-  return std::max(2.0f * half_seed_, 6.0f * noise_coefficient_ * range * range);
+  // The half side is at least the noise's 3-sigma tolerance.
+  return 2.0f * noise_.tolerance(half_seed_, range * range);
 }
 
 int SeedSelector::rhoAt(float range) const {
@@ -83,7 +85,7 @@ SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) 
   const float lever_sq = std::min(std::min(to_right.squaredNorm(), to_left.squaredNorm()),
                                   std::min(to_up.squaredNorm(), to_down.squaredNorm()));
   const float lever = std::sqrt(lever_sq);
-  const float noise_sigma = noise_coefficient_ * range_sq;
+  const float noise_sigma = noise_.sigma(range_sq);
   const float cos_coarse = widenedCosine(angle_, noise_sigma, lever);
   for (int i = 0; i < 4; ++i) {
     for (int j = i + 1; j < 4; ++j) {

@@ -3,8 +3,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "depth_noise.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
+#include "vec3.h"
 
 namespace floodplane {
 
@@ -51,7 +53,7 @@ class SeedSelector {
  public:
   /// Prepares the tests for one grid. `angular_pitch` is the angle between the viewing rays
   /// of neighbouring pixels (1/f for a pinhole camera of focal length f pixels).
-  void configure(const Params& params, float angular_pitch, int width, int height);
+  void configure(const Params& params, const DepthNoise& noise, float angular_pitch, int width, int height);
 
   /// The side of the seed cube at range r: max(sigma_seed, 6 sigma_depth(r)).
   float seedSizeAt(float range) const;
@@ -74,7 +76,7 @@ class SeedSelector {
   float half_seed_ = 0.03f;
   float cos_angle_ = 1.f;
   float angle_ = 0.1f;
-  float noise_coefficient_ = 0.f;
+  DepthNoise noise_;
   float angular_pitch_ = 1.0f / 525.0f;
   int max_rho_ = 0;
   int width_ = 0;

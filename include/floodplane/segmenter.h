@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "floodplane/params.h"
-#include "floodplane/plane_sums.h"
+#include "floodplane/plane_fit.h"
 #include "floodplane/point_grid.h"
 
 namespace floodplane {
@@ -46,6 +46,11 @@ struct Segmentation {
   std::vector<SegmentedPlane> planes;   ///< largest first
   PhaseTimes phases;
   SegmentationStats stats;
+
+  /// Appends the outer boundary of planes[plane] to `contour`: linear pixel indices in order,
+  /// clockwise on screen (y down), 8-connected, starting at the plane's first pixel; a pixel
+  /// on a one-pixel-wide neck appears twice. Costs the boundary's length, not the area.
+  void boundary(std::size_t plane, std::vector<int>& contour) const;
 };
 
 /// The paper's method over a plain point grid, PCL-free: seed selection, span flood fill

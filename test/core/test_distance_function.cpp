@@ -64,17 +64,38 @@ TEST(SquaredEuclideanDistance, IsNaNWhenEitherPointIsAHole) {
 
 // --- DepthNoise ----------------------------------------------------------------------------
 
+DepthNoise quadraticNoise(double c) {
+  DepthNoise noise;
+  noise.quadratic = c;
+  return noise;
+}
+
 TEST(DepthNoise, GrowsWithTheSquareOfTheRange) {
-  DepthNoise noise{0.002};
+  const DepthNoise noise = quadraticNoise(0.002);
   EXPECT_DOUBLE_EQ(noise.sigma(1.0), 0.002);
   EXPECT_DOUBLE_EQ(noise.sigma(9.0), 0.018);  // r = 3 m
 }
 
 TEST(DepthNoise, ToleranceIsTheFixedValueUntilThreeSigmaExceedsIt) {
-  DepthNoise noise{0.002};
+  const DepthNoise noise = quadraticNoise(0.002);
   EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 1.0), 0.01);    // 3 sigma = 0.006 < 0.01
   EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 4.0), 0.024);   // 3 sigma = 0.024 > 0.01
   EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 25.0), 0.15);   // r = 5 m
+}
+
+TEST(DepthNoise, AddsSigmaZeroAtEveryRange) {
+  DepthNoise noise = quadraticNoise(0.002);
+  noise.constant = 0.001;
+  EXPECT_DOUBLE_EQ(noise.sigma(0.0), 0.001);
+  EXPECT_DOUBLE_EQ(noise.sigma(4.0), 0.009);
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.001, 1.0), 0.009);
+}
+
+TEST(DepthNoise, TakesItsCoefficientFromTheParameters) {
+  Params params;
+  params.depth_noise_coefficient = 0.0031;
+  EXPECT_DOUBLE_EQ(DepthNoise::fromParams(params).quadratic, 0.0031);
+  EXPECT_DOUBLE_EQ(DepthNoise::fromParams(params).constant, 0.0);
 }
 
 TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
@@ -86,14 +107,14 @@ TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
 
 // --- FloodCriterion ------------------------------------------------------------------------
 
-FloodCriterion criterion(float noise_coefficient) {
-  FloodCriterion c;
-  c.normal = {0, 0, -1};
-  c.offset = 2.f;
-  c.plane_threshold = 0.01f;
-  c.plane_noise_factor = 3.f * noise_coefficient;
-  c.setEuclidean(/*seed_spacing=*/0.01f, /*seed_range_sq=*/4.f, noise_coefficient);
-  return c;
+// The plane z = 2 facing the camera, sigma_plane = 1 cm, neighbouring pixels 1 cm apart at the
+// seed's range of 2 m.
+FloodCriterion criterion(double noise_coefficient) {
+  Params params;
+  params.distance_threshold = 0.01;
+  DepthNoise noise;
+  noise.quadratic = noise_coefficient;
+  return FloodCriterion::make({0, 0, -1}, 2.f, /*spacing_per_range_sq=*/0.01 / 4.0, params, noise);
 }
 
 TEST(FloodCriterion, PlaneToleranceIsTheMaximumOfSigmaPlaneAndThreeCRSquared) {
@@ -134,11 +155,15 @@ TEST(FloodCriterion, EuclideanToleranceAddsTheDepthNoiseOfBothPoints) {
   EXPECT_GT(c.euclideanToleranceSq(4.f), criterion(0.f).euclideanToleranceSq(4.f));
 }
 
-TEST(FloodCriterion, ToleratesASeedAtTheSensorOrigin) {
-  // A zero seed range must not divide by zero: the spacing term is bounded, not infinite.
-  FloodCriterion c;
-  c.setEuclidean(0.01f, 0.f, 0.f);
-  EXPECT_TRUE(std::isfinite(c.euclidean_factor_sq));
+TEST(FloodCriterion, GrowsThePlaneToleranceBySigmaZeroToo) {
+  Params params;
+  params.distance_threshold = 0.001;
+  DepthNoise noise;
+  noise.constant = 0.002;  // 3 sigma_0 = 6 mm
+  noise.quadratic = 0.001;
+  const FloodCriterion c = FloodCriterion::make({0, 0, -1}, 2.f, 0.0025, params, noise);
+  EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.009f);   // 3 (0.002 + 0.001)
+  EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.018f);   // 3 (0.002 + 0.004)
 }
 
 TEST(FloodCriterion, AcceptsANeighbourOnThePlaneAndRejectsOneOffIt) {
@@ -148,9 +173,10 @@ TEST(FloodCriterion, AcceptsANeighbourOnThePlaneAndRejectsOneOffIt) {
   const Vec3 off{0.015f, 0.f, 2.02f};   // 2 cm behind the plane
   const Vec3 far{0.05f, 0.f, 2.f};      // on the plane, but 5 cm away: beyond sigma_e = 2 cm
   const auto accepts = [&](const Vec3& p) {
-    const float r2 = p.squaredNorm();
-    return planeDistance(c.normal, c.offset, p) < c.planeTolerance(r2) &&
-           squaredEuclideanDistance(from, p) < c.euclideanToleranceSq(r2);
+    float distance = -1.f;
+    const bool accepted = c.accepts(from, p, distance);
+    if (accepted) EXPECT_FLOAT_EQ(distance, planeDistance(c.normal, c.offset, p));
+    return accepted;
   };
   EXPECT_TRUE(accepts(on));
   EXPECT_FALSE(accepts(off));

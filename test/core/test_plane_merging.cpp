@@ -49,6 +49,8 @@ Params exactParams() {
   return params;
 }
 
+MergeCriterion criterionFor(const Params& params) { return MergeCriterion(params, DepthNoise::fromParams(params)); }
+
 bool mergeable(const MergeCriterion& criterion, const PlaneSums& a, const PlaneSums& b, double* cost = nullptr) {
   double c = -1.0;
   const bool result = criterion.mergeable(a, a.fit(), b, b.fit(), c);
@@ -59,14 +61,14 @@ bool mergeable(const MergeCriterion& criterion, const PlaneSums& a, const PlaneS
 // --- MergeCriterion ---------------------------------------------------------------------------
 
 TEST(MergeCriterion, AcceptsTwoHalvesOfOnePlane) {
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   double cost = -1.0;
   EXPECT_TRUE(mergeable(criterion, patch(-0.5f, 0.f, 2.f), patch(0.f, 0.5f, 2.f), &cost));
   EXPECT_LT(cost, 0.01);  // they fit one plane up to their roughness
 }
 
 TEST(MergeCriterion, AcceptsHalvesOfATiltedPlaneInEitherOrder) {
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   const PlaneSums left = patch(-0.4f, 0.f, 2.f, 0.5f), right = patch(0.f, 0.4f, 2.2f, 0.5f);
   EXPECT_TRUE(mergeable(criterion, left, right));
   EXPECT_TRUE(mergeable(criterion, right, left));
@@ -75,7 +77,7 @@ TEST(MergeCriterion, AcceptsHalvesOfATiltedPlaneInEitherOrder) {
 TEST(MergeCriterion, RejectsTwoPlanesAtAnAngleAboveTheThreshold) {
   // Two 2 cm patches side by side, tilted by -0.1 and +0.1 rad (0.2 rad apart), centroids on
   // one plane and each within 1 mm of the merged plane: only the normals tell them apart.
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   EXPECT_FALSE(mergeable(criterion, smallPatch(-0.05f, 2.f, -0.1f), smallPatch(0.05f, 2.f, 0.1f)));
   // The same patches 0.08 rad apart pass.
   EXPECT_TRUE(mergeable(criterion, smallPatch(-0.05f, 2.f, -0.04f), smallPatch(0.05f, 2.f, 0.04f)));
@@ -88,12 +90,12 @@ TEST(MergeCriterion, RejectsTwoPlanesAtAnAngleAboveTheThreshold) {
 // (pcd_synth --sensor none) are exactly this case. Eigenvalues are now clamped at zero and
 // the angle test rejects on NaN.
 TEST(MergeCriterion, RejectsTwoExactPlanesAtAnAngleAboveTheThreshold) {
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   EXPECT_FALSE(mergeable(criterion, smallPatch(-0.05f, 2.f, -0.1f, 0.f), smallPatch(0.05f, 2.f, 0.1f, 0.f)));
 }
 
 TEST(MergeCriterion, RejectsAWallAndAFloorMeetingAtAnEdge) {
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   PlaneSums wall, floor;
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 20; ++j) {
@@ -106,7 +108,7 @@ TEST(MergeCriterion, RejectsAWallAndAFloorMeetingAtAnEdge) {
 TEST(MergeCriterion, RejectsParallelPlanesOffsetByMoreThanTheMergeDistance) {
   // Two small parallel patches 1 m apart sideways: a plane tilted by 2 or 4 cm per metre fits
   // both, so only Eq. 9's centroid-to-plane distance (3 cm) separates them.
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   EXPECT_TRUE(mergeable(criterion, smallPatch(-0.5f, 2.f, 0.f), smallPatch(0.5f, 2.02f, 0.f)));
   EXPECT_FALSE(mergeable(criterion, smallPatch(-0.5f, 2.f, 0.f), smallPatch(0.5f, 2.04f, 0.f)));
 }
@@ -114,17 +116,17 @@ TEST(MergeCriterion, RejectsParallelPlanesOffsetByMoreThanTheMergeDistance) {
 TEST(MergeCriterion, WidensTheMergeDistanceWithTheDepthNoiseAtRange) {
   Params noisy = exactParams();
   noisy.depth_noise_coefficient = 0.0019;  // 3 sigma at 4 m: 9.1 cm; at 2 m: 2.3 cm < 3 cm
-  const MergeCriterion criterion(noisy);
+  const MergeCriterion criterion = criterionFor(noisy);
   EXPECT_TRUE(mergeable(criterion, smallPatch(-0.5f, 4.f, 0.f), smallPatch(0.5f, 4.04f, 0.f)));
   EXPECT_FALSE(mergeable(criterion, smallPatch(-0.5f, 2.f, 0.f), smallPatch(0.5f, 2.04f, 0.f)));
   // Without the noise model, 4 cm at 4 m is as far apart as 4 cm at 2 m.
-  EXPECT_FALSE(mergeable(MergeCriterion(exactParams()), smallPatch(-0.5f, 4.f, 0.f), smallPatch(0.5f, 4.04f, 0.f)));
+  EXPECT_FALSE(mergeable(criterionFor(exactParams()), smallPatch(-0.5f, 4.f, 0.f), smallPatch(0.5f, 4.04f, 0.f)));
 }
 
 TEST(MergeCriterion, RejectsABoardTwoCentimetresInFrontOfAWall) {
   // Eq. 9 alone would merge them (the board's centroid is 2 cm < 3 cm from the wall's
   // plane, same normal); the board does not fit the merged plane (RMS 2 cm > 5 mm).
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   const PlaneSums wall = patch(-1.f, 1.f, 3.f, 0.f, -1.f, 1.f);
   const PlaneSums board = patch(-0.2f, 0.2f, 2.98f, 0.f, -0.2f, 0.2f);
   EXPECT_FALSE(mergeable(criterion, wall, board));
@@ -132,7 +134,7 @@ TEST(MergeCriterion, RejectsABoardTwoCentimetresInFrontOfAWall) {
 }
 
 TEST(MergeCriterion, CostsMoreTheWorseThePartsFitOnePlane) {
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   double flat = -1.0, kinked = -1.0;
   ASSERT_TRUE(mergeable(criterion, patch(-0.1f, 0.f, 2.f), patch(0.f, 0.1f, 2.f), &flat));
   ASSERT_TRUE(mergeable(criterion, patch(-0.1f, 0.f, 2.f), patch(0.f, 0.1f, 2.f, 0.05f), &kinked));
@@ -161,7 +163,7 @@ TEST(PlaneMerger, MergesAChainOfCoplanarSegmentsIntoOneCluster) {
   merger.addEdge(1, 2);
   merger.addEdge(3, 2);  // either order
   merger.addEdge(3, 4);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 3u);
   const std::int32_t root = merger.root(1);
   for (std::int32_t s = 1; s <= 4; ++s) EXPECT_EQ(merger.root(s), root) << "segment " << s;
@@ -176,7 +178,7 @@ TEST(PlaneMerger, KeepsCoplanarSegmentsWithoutAnEdgeApart) {
   merger.reset(sums.size());
   merger.addEdge(1, 2);
   merger.addEdge(5, 6);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 2u);
   EXPECT_EQ(merger.root(1), merger.root(2));
   EXPECT_EQ(merger.root(5), merger.root(6));
@@ -192,7 +194,7 @@ TEST(PlaneMerger, RootDataMapsEverySegmentToItsFinalRoot) {
   merger.addEdge(1, 2);
   merger.addEdge(2, 3);
   merger.addEdge(5, 6);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   const std::int32_t* roots = merger.rootData();
   EXPECT_EQ(roots[0], 0);  // "no segment" stays itself
   for (std::int32_t s = 0; s < 7; ++s) {
@@ -211,7 +213,7 @@ TEST(PlaneMerger, KeepsTheLargerSegmentAsRoot) {
   PlaneMerger merger;
   merger.reset(3);
   merger.addEdge(1, 2);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.root(1), 2);
   EXPECT_EQ(merger.root(2), 2);
   EXPECT_DOUBLE_EQ(sums[2].count, 3.0 * 441);
@@ -224,7 +226,7 @@ TEST(PlaneMerger, KeepsTheSmallerLabelAsRootBetweenEqualSizes) {
   PlaneMerger merger;
   merger.reset(3);
   merger.addEdge(2, 1);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.root(2), 1);
 }
 
@@ -235,7 +237,7 @@ TEST(PlaneMerger, IgnoresSelfEdgesAndEdgesToNoSegment) {
   merger.addEdge(1, 1);
   merger.addEdge(0, 2);
   merger.addEdge(3, 0);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 0u);
   for (std::int32_t s = 0; s < 7; ++s) EXPECT_EQ(merger.root(s), s);
 }
@@ -247,7 +249,7 @@ TEST(PlaneMerger, DoesNotMergeNeighboursThatFailTheCriterion) {
   PlaneMerger merger;
   merger.reset(3);
   merger.addEdge(1, 2);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 0u);
   EXPECT_NE(merger.root(1), merger.root(2));
 }
@@ -267,7 +269,7 @@ TEST(PlaneMerger, MergesTheMostSimilarPairFirst) {
   // B-C more tightly. Once B and C are one segment (slope ~0.11) A is too steep a step away
   // from it. Merging in label order instead (A-B first) would end with one cluster, since A+B
   // and C may merge: the order decides the result.
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   std::vector<PlaneSums> sums = bentStrip(0.085f, 0.14f);
   double cost_ab = -1.0, cost_bc = -1.0;
   ASSERT_TRUE(mergeable(criterion, sums[1], sums[2], &cost_ab));
@@ -292,7 +294,7 @@ TEST(PlaneMerger, MergesTheMostSimilarPairFirst) {
 
 TEST(PlaneMerger, MergesTheCheaperPairFirstWhateverTheLabels) {
   // The mirror image: now A-B is the tighter pair (0.055 rad) and B-C the looser (0.085).
-  const MergeCriterion criterion(exactParams());
+  const MergeCriterion criterion = criterionFor(exactParams());
   std::vector<PlaneSums> sums = bentStrip(0.055f, 0.14f);
   double cost_ab = -1.0, cost_bc = -1.0;
   ASSERT_TRUE(mergeable(criterion, sums[1], sums[2], &cost_ab));
@@ -311,12 +313,12 @@ TEST(PlaneMerger, CanBeResetAndRunAgain) {
   std::vector<PlaneSums> sums = coplanarStrips();
   merger.reset(sums.size());
   merger.addEdge(1, 2);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   ASSERT_EQ(merger.mergeCount(), 1u);
   sums = coplanarStrips();
   merger.reset(sums.size());
   merger.addEdge(3, 4);
-  merger.merge(sums, MergeCriterion(exactParams()));
+  merger.merge(sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 1u);
   EXPECT_EQ(merger.root(2), 2) << "the edge 1-2 of the last run is forgotten";
   EXPECT_EQ(merger.root(4), merger.root(3));

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "floodplane/plane_sums.h"
+#include "plane_sums.h"
 
 namespace floodplane {
 namespace {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "floodplane/region_boundary.h"
+#include "region_boundary.h"
 
 namespace floodplane {
 namespace {

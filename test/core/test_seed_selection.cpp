@@ -33,7 +33,7 @@ Params exactParams() {
 
 SeedSelector selectorFor(const test::RenderedGrid& scene, const Params& params) {
   SeedSelector selector;
-  selector.configure(params, 1.0f / static_cast<float>(camera().focal), scene.width, scene.height);
+  selector.configure(params, DepthNoise::fromParams(params), 1.0f / static_cast<float>(camera().focal), scene.width, scene.height);
   return selector;
 }
 
@@ -41,7 +41,7 @@ constexpr int kX = 160, kY = 120;  // a seed candidate at the image centre (pixe
 
 TEST(SeedSelector, ProjectsTheSeedCubeToRhoPixels) {
   SeedSelector selector;
-  selector.configure(exactParams(), 1.0f / 525.0f, 640, 480);
+  selector.configure(exactParams(), DepthNoise::fromParams(exactParams()), 1.0f / 525.0f, 640, 480);
   // rho = f (sigma_seed / 2) / (r + sigma_seed / 2)
   EXPECT_EQ(selector.rhoAt(1.0f), 15);  // 15.29
   EXPECT_EQ(selector.rhoAt(3.0f), 5);   // 5.20
@@ -53,16 +53,16 @@ TEST(SeedSelector, GrowsTheSeedCubeWithTheDepthNoise) {
   Params params;
   params.depth_noise_coefficient = 0.0019;
   SeedSelector selector;
-  selector.configure(params, 1.0f / 525.0f, 640, 480);
+  selector.configure(params, DepthNoise::fromParams(params), 1.0f / 525.0f, 640, 480);
   EXPECT_FLOAT_EQ(selector.seedSizeAt(1.0f), 0.06f);             // 6 sigma = 1.1 cm < 6 cm
   EXPECT_NEAR(selector.seedSizeAt(5.0f), 6 * 0.0019 * 25, 1e-6);  // 6 sigma = 28.5 cm
 }
 
 TEST(SeedSelector, FitsTheGridItIsGiven) {
   SeedSelector selector;
-  selector.configure(exactParams(), 1.0f / 525.0f, 4, 40);
+  selector.configure(exactParams(), DepthNoise::fromParams(exactParams()), 1.0f / 525.0f, 4, 40);
   EXPECT_EQ(selector.maxRho(), 0);  // a 4-pixel-wide grid has no room for a cross of rho 2
-  selector.configure(exactParams(), 1.0f / 525.0f, 5, 5);
+  selector.configure(exactParams(), DepthNoise::fromParams(exactParams()), 1.0f / 525.0f, 5, 5);
   EXPECT_EQ(selector.maxRho(), 2);
   EXPECT_EQ(selector.rhoAt(1.0f), 2);
 }

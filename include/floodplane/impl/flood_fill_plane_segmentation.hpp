@@ -7,7 +7,6 @@
 #include <pcl/console/print.h>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
-#include "floodplane/region_boundary.h"
 
 namespace floodplane {
 
@@ -232,8 +231,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
   const Eigen::Vector3f viewpoint = input_->sensor_origin_.template head<3>();
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     contour_.clear();
-    traceRegionBoundary(last_->labels.data(), last_->width, last_->height, static_cast<std::uint32_t>(k + 1),
-                        last_->planes[k].first_pixel, contour_);
+    last_->boundary(k, contour_);
     const CloudPlane& plane = planes_[k];
     typename PointCloud::VectorType contour(contour_.size());
     for (std::size_t j = 0; j < contour_.size(); ++j) {

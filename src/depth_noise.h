@@ -1,0 +1,44 @@
+#pragma once
+
+#include <algorithm>
+
+#include "floodplane/params.h"
+
+namespace floodplane {
+
+/// The sensor's depth noise, the one model every stage takes its tolerances from:
+///   sigma(r) = sigma_0 + c r^2,
+/// the shape of a triangulating sensor's error (structured light, stereo: Nguyen et al. 2012
+/// for the Kinect, whose axial noise and disparity quantisation both grow with the square of
+/// the depth). A tolerance is the larger of a fixed threshold and three standard deviations.
+/// All functions take r^2, so that the per-pixel hot path needs no square root; they are
+/// templates so that float hot paths stay in float.
+struct DepthNoise {
+  double constant = 0.0;   ///< sigma_0 [m]
+  double quadratic = 0.0;  ///< c [1/m]; 0 with sigma_0 = 0: the paper's fixed thresholds
+
+  static DepthNoise fromParams(const Params& params) {
+    DepthNoise noise;
+    noise.quadratic = params.depth_noise_coefficient;
+    return noise;
+  }
+
+  template <class Real>
+  Real sigma(Real range_sq) const {
+    return static_cast<Real>(constant) + static_cast<Real>(quadratic) * range_sq;
+  }
+  /// max(fixed, 3 sigma(r)).
+  template <class Real>
+  Real tolerance(Real fixed, Real range_sq) const {
+    return std::max(fixed, static_cast<Real>(3) * sigma(range_sq));
+  }
+};
+
+/// The squared range at which to take the depth noise when pixel q is tested from its
+/// neighbour p: the nearer of the two. On one surface the two ranges are nearly equal, so
+/// this changes nothing there; but an outlier far along its ray (a multipath return 100 km
+/// out) must not widen its own tolerances by c r^2 until it fits every plane. A hole at p
+/// (NaN) leaves q's own range.
+inline float nearerRangeSq(float p_sq, float q_sq) { return p_sq < q_sq ? p_sq : q_sq; }
+
+}  // namespace floodplane

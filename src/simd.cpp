@@ -1,0 +1,7 @@
+#include "simd.h"
+
+namespace floodplane {
+
+bool simdEnabled() { return FLOODPLANE_SIMD; }
+
+}  // namespace floodplane

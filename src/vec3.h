@@ -1,0 +1,21 @@
+#pragma once
+
+#include <cmath>
+
+namespace floodplane {
+
+/// A small fixed-size vector for the hot loops: no Eigen temporaries, no alignment rules.
+struct Vec3 {
+  float x = 0.f, y = 0.f, z = 0.f;
+
+  static Vec3 load(const float* p) { return {p[0], p[1], p[2]}; }
+  Vec3 operator-(const Vec3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+  Vec3 operator+(const Vec3& o) const { return {x + o.x, y + o.y, z + o.z}; }
+  Vec3 operator*(float s) const { return {x * s, y * s, z * s}; }
+  float dot(const Vec3& o) const { return x * o.x + y * o.y + z * o.z; }
+  Vec3 cross(const Vec3& o) const { return {y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
+  float squaredNorm() const { return dot(*this); }
+  float norm() const { return std::sqrt(squaredNorm()); }
+};
+
+}  // namespace floodplane
