@@ -19,3 +19,12 @@ function(floodplane_set_arch target)
     target_compile_definitions(${target} PUBLIC PCL_NO_PRECOMPILE)
   endif()
 endfunction()
+
+# The one SIMD switch: FLOODPLANE_SIMD=OFF builds the core's four-pixel loops pixel by pixel
+# (as on CPUs without SSE2), through a private definition of every target that compiles the
+# core's sources or reaches its internals (the unit tests); src/simd.h reads it.
+function(floodplane_set_simd target)
+  if(NOT FLOODPLANE_SIMD)
+    target_compile_definitions(${target} PRIVATE FLOODPLANE_NO_SIMD)
+  endif()
+endfunction()

@@ -7,7 +7,7 @@
 
 namespace floodplane::detail {
 
-void throwBadParameter(const char* setter, const std::string& message) {
+[[noreturn]] void throwBadParameter(const char* setter, const std::string& message) {
   throw std::invalid_argument(std::string("floodplane::FloodFillPlaneSegmentation::") + setter + ": " + message);
 }
 

@@ -16,6 +16,11 @@
 
 namespace floodplane {
 
+namespace detail {
+/// Throws std::invalid_argument "floodplane::FloodFillPlaneSegmentation::<setter>: <message>".
+[[noreturn]] void throwBadParameter(const char* setter, const std::string& message);
+}  // namespace detail
+
 /// Plane segmentation of organized point clouds by seeded span flood fill (Roychoudhury,
 /// Missura, Bennewitz: "Plane Segmentation in Organized Point Clouds using Flood Fill"),
 /// a drop-in for pcl::OrganizedMultiPlaneSegmentation that needs no normals:
@@ -70,14 +75,20 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   unsigned getMinInliers() const { return params_.min_inliers; }
   /// theta_angle [rad]: the largest angle between normals in the seed tests (Eqs. 6, 7) and
   /// between merging planes (Eq. 9). Must be in (0, pi/2). Default 0.1.
-  void setAngularThreshold(double angular_threshold);
+  void setAngularThreshold(double angular_threshold) {
+    setParam(&Params::angular_threshold, angular_threshold, "setAngularThreshold");
+  }
   double getAngularThreshold() const { return params_.angular_threshold; }
   /// sigma_plane [m]: the largest point-to-plane distance in the flood (Eq. 2). Default 0.01.
-  void setDistanceThreshold(double distance_threshold);
+  void setDistanceThreshold(double distance_threshold) {
+    setParam(&Params::distance_threshold, distance_threshold, "setDistanceThreshold");
+  }
   double getDistanceThreshold() const { return params_.distance_threshold; }
   /// Largest curvature lambda_0 / (lambda_0 + lambda_1 + lambda_2) of a reported plane, as
   /// in OMPS. Default 1/3, which accepts every plane (OMPS's 0.001 rejects far Kinect walls).
-  void setMaximumCurvature(double maximum_curvature);
+  void setMaximumCurvature(double maximum_curvature) {
+    setParam(&Params::maximum_curvature, maximum_curvature, "setMaximumCurvature");
+  }
   double getMaximumCurvature() const { return params_.maximum_curvature; }
   /// Project the regions' contour points onto their plane along the viewing rays, as OMPS's
   /// segmentAndRefine does. Default false.
@@ -86,16 +97,20 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
 
   // ---- the paper's parameters and floodplane's own --------------------------------------
   /// sigma_seed [m]: side of the seed cube (Sec. III-C). Default 0.06.
-  void setSeedSize(double seed_size);
+  void setSeedSize(double seed_size) { setParam(&Params::seed_size, seed_size, "setSeedSize"); }
   double getSeedSize() const { return params_.seed_size; }
   /// sigma_plane-merge [m] of Eq. 9. Default 0.03.
-  void setMergeDistance(double merge_distance);
+  void setMergeDistance(double merge_distance) {
+    setParam(&Params::merge_distance, merge_distance, "setMergeDistance");
+  }
   double getMergeDistance() const { return params_.merge_distance; }
   /// Sub-sampling factor: 1, 2, 4 or 8 (Table III). Labels are always full resolution.
-  void setSubsampling(int factor);
+  void setSubsampling(int factor) { setParam(&Params::subsampling, factor, "setSubsampling"); }
   int getSubsampling() const { return params_.subsampling; }
   /// c [1/m] of the depth noise sigma(r) = c r^2; 0 for the paper's fixed thresholds.
-  void setDepthNoiseCoefficient(double coefficient);
+  void setDepthNoiseCoefficient(double coefficient) {
+    setParam(&Params::depth_noise_coefficient, coefficient, "setDepthNoiseCoefficient");
+  }
   double getDepthNoiseCoefficient() const { return params_.depth_noise_coefficient; }
   /// All parameters at once; throws std::invalid_argument naming the first bad one.
   void setParams(const Params& params);
@@ -139,6 +154,16 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
   };
 
+  // Sets one field after checking the whole set with Params::problem(); a bad value throws
+  // std::invalid_argument naming `setter`.
+  template <typename Value>
+  void setParam(Value Params::*field, Value value, const char* setter) {
+    Params changed = params_;
+    changed.*field = value;
+    const std::string problem = changed.problem();
+    if (!problem.empty()) detail::throwBadParameter(setter, problem);
+    params_ = changed;
+  }
   // Validates the input and runs the core; false (after a PCL_ERROR) when there is nothing
   // to segment. Fills last_ and planes_.
   bool run(bool refine, const char* method);

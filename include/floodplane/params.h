@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 namespace floodplane {
 
@@ -49,7 +50,11 @@ struct Params {
   /// the paper's fixed thresholds, right for noise-free or laser data.
   double depth_noise_coefficient = 0.0019;
 
-  /// Throws std::invalid_argument naming the first bad field.
+  /// The first value the method cannot use, as a sentence naming its field
+  /// ("seed_size must be a finite number of metres > 0, got -1.000000"); empty when all are
+  /// fine. Every entry point validates through this one function.
+  std::string problem() const;
+  /// Throws std::invalid_argument with problem() when there is one.
   void validate() const;
 };
 

@@ -175,7 +175,9 @@ TEST(FloodCriterion, AcceptsANeighbourOnThePlaneAndRejectsOneOffIt) {
   const auto accepts = [&](const Vec3& p) {
     float distance = -1.f;
     const bool accepted = c.accepts(from, p, distance);
-    if (accepted) EXPECT_FLOAT_EQ(distance, planeDistance(c.normal, c.offset, p));
+    if (accepted) {
+      EXPECT_FLOAT_EQ(distance, planeDistance(c.normal, c.offset, p));
+    }
     return accepted;
   };
   EXPECT_TRUE(accepts(on));

@@ -99,8 +99,9 @@ TEST(MergeCriterion, RejectsAWallAndAFloorMeetingAtAnEdge) {
   PlaneSums wall, floor;
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 20; ++j) {
-      wall.add({-0.5f + 0.05f * i, -0.5f + 0.05f * j, 3.f});
-      floor.add({-0.5f + 0.05f * i, 0.5f, 2.f + 0.05f * j});
+      const float a = 0.05f * static_cast<float>(i), b = 0.05f * static_cast<float>(j);
+      wall.add({-0.5f + a, -0.5f + b, 3.f});
+      floor.add({-0.5f + a, 0.5f, 2.f + b});
     }
   EXPECT_FALSE(mergeable(criterion, wall, floor));
 }
@@ -149,7 +150,7 @@ TEST(MergeCriterion, CostsMoreTheWorseThePartsFitOnePlane) {
 // strips of the same plane far to the right, touching each other but nothing else.
 std::vector<PlaneSums> coplanarStrips() {
   std::vector<PlaneSums> sums(7);
-  for (int s = 1; s <= 4; ++s) sums[s] = patch(-0.2f + 0.1f * (s - 1), -0.1f + 0.1f * (s - 1), 2.f);
+  for (int s = 1; s <= 4; ++s) sums[s] = patch(-0.2f + 0.1f * static_cast<float>(s - 1), -0.1f + 0.1f * static_cast<float>(s - 1), 2.f);
   sums[5] = patch(1.0f, 1.1f, 2.f);
   sums[6] = patch(1.1f, 1.2f, 2.f);
   return sums;

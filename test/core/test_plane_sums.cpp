@@ -138,8 +138,9 @@ TEST(PlaneSums, TurnsTheNormalTowardsTheSensorWhicheverSideItIsOn) {
   PlaneSums wall, floor;
   for (int i = -2; i <= 2; ++i)
     for (int j = -2; j <= 2; ++j) {
-      wall.add({0.2f * i, 0.2f * j, 3.f});
-      floor.add({0.2f * i, 1.f, 2.f + 0.2f * j});
+      const float a = 0.2f * static_cast<float>(i), b = 0.2f * static_cast<float>(j);
+      wall.add({a, b, 3.f});
+      floor.add({a, 1.f, 2.f + b});
     }
   const PlaneFit w = wall.fit(), f = floor.fit();
   ASSERT_TRUE(w.valid);
@@ -201,7 +202,7 @@ TEST(PlaneSums, FitIsInvalidForFewerThanThreePoints) {
 // relative to the largest eigenvalue.
 TEST(PlaneSums, FitIsInvalidForCollinearPoints) {
   PlaneSums line;
-  for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * i});
+  for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * static_cast<float>(i)});
   const PlaneFit fit = line.fit();
   EXPECT_FALSE(fit.valid) << "eigenvalues " << fit.eigenvalues.transpose() << ", normal "
                           << fit.normal.transpose();
@@ -273,7 +274,7 @@ TEST(NormalUncertainty, IsInfiniteForCollinearPoints) {
 // infinity; in MergeCriterion::mergeable a NaN uncertainty skipped Eq. 9's normal test.
 TEST(NormalUncertainty, IsInfiniteNotNaNForPointsOnACoordinateAxis) {
   PlaneSums line;
-  for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * i});
+  for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * static_cast<float>(i)});
   const double sigma = normalUncertainty(line.fit(), line.count);
   EXPECT_TRUE(std::isinf(sigma)) << "got " << sigma;
 }

@@ -89,7 +89,7 @@ TEST(SpanFloodFill, ExaminesEachPixelOfAFullRectangleOnce) {
   EXPECT_EQ(visitor.attempts, mask.inside.size() - 1);
   std::size_t naive_attempts = 0;
   naiveFill(mask, 320, 240, naive_attempts);
-  EXPECT_GT(naive_attempts, 3.9 * mask.inside.size());  // the four-neighbour fill
+  EXPECT_GT(static_cast<double>(naive_attempts), 3.9 * static_cast<double>(mask.inside.size()));  // the four-neighbour fill
 }
 
 TEST(SpanFloodFill, FindsTheSameRegionAsAFourNeighbourFillOnAMaze) {
@@ -140,9 +140,9 @@ TEST(SpanFloodFill, ExaminesPixelsAboutOnceOnIrregularShapes) {
   const std::vector<bool> expected = naiveFill(mask, 100, 75, naive_attempts);
   const CountingVisitor visitor = fill(mask, 100, 75);
   ASSERT_EQ(visitor.in_region, expected);
-  const double per_pixel = static_cast<double>(visitor.attempts) / countTrue(expected);
+  const double per_pixel = static_cast<double>(visitor.attempts) / static_cast<double>(countTrue(expected));
   EXPECT_LT(per_pixel, 1.6);
-  EXPECT_GT(static_cast<double>(naive_attempts) / countTrue(expected), 3.5);
+  EXPECT_GT(static_cast<double>(naive_attempts) / static_cast<double>(countTrue(expected)), 3.5);
 }
 
 TEST(SpanFloodFill, ReportsEverySpanOfTheRegion) {

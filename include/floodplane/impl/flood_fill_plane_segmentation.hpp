@@ -10,76 +10,13 @@
 
 namespace floodplane {
 
-namespace detail {
-/// Throws std::invalid_argument "floodplane::FloodFillPlaneSegmentation::<setter>: <message>".
-void throwBadParameter(const char* setter, const std::string& message);
-}  // namespace detail
-
 // ---- setters -----------------------------------------------------------------------------
 
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::setParams(const Params& params) {
-  try {
-    params.validate();
-  } catch (const std::invalid_argument& e) {
-    detail::throwBadParameter("setParams", e.what());
-  }
+  const std::string problem = params.problem();
+  if (!problem.empty()) detail::throwBadParameter("setParams", problem);
   params_ = params;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setAngularThreshold(double angular_threshold) {
-  if (!(angular_threshold > 0.0 && angular_threshold < M_PI / 2))
-    detail::throwBadParameter("setAngularThreshold", "the angle must be in (0, pi/2) radians, got " +
-                                                         std::to_string(angular_threshold));
-  params_.angular_threshold = angular_threshold;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setDistanceThreshold(double distance_threshold) {
-  if (!(std::isfinite(distance_threshold) && distance_threshold > 0.0))
-    detail::throwBadParameter("setDistanceThreshold", "the distance must be a finite number of metres > 0, got " +
-                                                          std::to_string(distance_threshold));
-  params_.distance_threshold = distance_threshold;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setMaximumCurvature(double maximum_curvature) {
-  if (!(std::isfinite(maximum_curvature) && maximum_curvature >= 0.0))
-    detail::throwBadParameter("setMaximumCurvature", "the curvature must be a finite number >= 0, got " +
-                                                         std::to_string(maximum_curvature));
-  params_.maximum_curvature = maximum_curvature;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setSeedSize(double seed_size) {
-  if (!(std::isfinite(seed_size) && seed_size > 0.0))
-    detail::throwBadParameter("setSeedSize", "the seed size must be a finite number of metres > 0, got " +
-                                                 std::to_string(seed_size));
-  params_.seed_size = seed_size;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setMergeDistance(double merge_distance) {
-  if (!(std::isfinite(merge_distance) && merge_distance > 0.0))
-    detail::throwBadParameter("setMergeDistance", "the merge distance must be a finite number of metres > 0, got " +
-                                                      std::to_string(merge_distance));
-  params_.merge_distance = merge_distance;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setSubsampling(int factor) {
-  if (!isValidSubsampling(factor))
-    detail::throwBadParameter("setSubsampling", "the factor must be 1, 2, 4 or 8, got " + std::to_string(factor));
-  params_.subsampling = factor;
-}
-
-template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::setDepthNoiseCoefficient(double coefficient) {
-  if (!(std::isfinite(coefficient) && coefficient >= 0.0))
-    detail::throwBadParameter("setDepthNoiseCoefficient", "the coefficient must be a finite number >= 0, got " +
-                                                              std::to_string(coefficient));
-  params_.depth_noise_coefficient = coefficient;
 }
 
 // ---- running the core --------------------------------------------------------------------
