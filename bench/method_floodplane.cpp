@@ -73,7 +73,8 @@ void registerFloodplane() {
   for (const std::string& scene : sceneNames()) add("floodplane/s1/scene:" + scene, rendered(scene, 640, 480), 1);
   // Target 2: sub-sampling 2 (and Table III's 4 and 8), labels at full resolution.
   for (int s : {2, 4, 8}) {
-    for (const Frame& frame : realFrames()) add("floodplane/s" + std::to_string(s) + "/real:" + frame.name, real(frame), s);
+    for (const Frame& frame : realFrames())
+      add("floodplane/s" + std::to_string(s) + "/real:" + frame.name, real(frame), s);
   }
   for (const std::string& scene : sceneNames()) add("floodplane/s2/scene:" + scene, rendered(scene, 640, 480), 2);
   // Target 3: cost linear in the pixel count; 3840x2160 for the memory figure (issue 7).

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Installs dependencies, builds floodplane with its tests and runs them all.
 # Usage: scripts/test.sh [build-dir]   (default: build)
+# FLOODPLANE_WERROR=ON in the environment turns warnings into errors (CI does).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 
 "$root/scripts/install_deps.sh"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-      -DFLOODPLANE_BUILD_TESTS=ON -DFLOODPLANE_BUILD_APPS=ON -DFLOODPLANE_BUILD_BENCHMARKS=ON
+      -DFLOODPLANE_BUILD_TESTS=ON -DFLOODPLANE_BUILD_APPS=ON -DFLOODPLANE_BUILD_BENCHMARKS=ON \
+      -DFLOODPLANE_WERROR="${FLOODPLANE_WERROR:-OFF}"
 cmake --build "$build" --parallel "$(nproc)"
 cd "$build"
 ctest --output-on-failure --parallel "$(nproc)"

@@ -28,19 +28,16 @@ struct PixelBox {
 /// The relabelling after Eq. 4 (Sec. III-B): when later floods take pixels from a segment,
 /// what is left of it may fall apart. This splits the pixels labelled `label` inside `box`
 /// into 4-connected components with the classic two-pass union-find labelling (as PCL's
-/// OrganizedConnectedComponentSegmentation, [16]), over runs of pixels rather than pixels. The first component in raster order keeps
-/// `label`; every other one gets the next label from `next_label`, which is advanced.
-/// Components of fewer than `smallest_piece` pixels are released (label 0): crumbs that
-/// takeovers chipped off a segment are no plane of their own, and as segments they would
-/// only slow the merging down (five_people: 1146 crumbs from 89 floods); segmentAndRefine
-/// gives their pixels back to a plane they fit.
-/// Returns the labels of the new components (empty when the segment is still connected).
-/// Scratch memory is reused across calls.
+/// OrganizedConnectedComponentSegmentation, [16]), over runs of pixels rather than pixels. The first component in
+/// raster order keeps `label`; every other one gets the next label from `next_label`, which is advanced. Components of
+/// fewer than `smallest_piece` pixels are released (label 0): crumbs that takeovers chipped off a segment are no plane
+/// of their own, and as segments they would only slow the merging down (a cluttered Kinect frame has ten crumbs per
+/// flood); segmentAndRefine gives their pixels back to a plane they fit. Returns the labels of the new components
+/// (empty when the segment is still connected). Scratch memory is reused across calls.
 class ComponentSplitter {
  public:
-  std::vector<std::int32_t> split(std::int32_t* labels, int width, const PixelBox& box,
-                                  std::int32_t label, std::int32_t& next_label,
-                                  std::size_t smallest_piece = 1);
+  std::vector<std::int32_t> split(std::int32_t* labels, int width, const PixelBox& box, std::int32_t label,
+                                  std::int32_t& next_label, std::size_t smallest_piece = 1);
   /// Pixels released by the last split.
   std::size_t releasedPixels() const { return released_; }
 

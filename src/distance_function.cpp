@@ -4,8 +4,8 @@
 
 namespace floodplane {
 
-FloodCriterion FloodCriterion::make(const Vec3& normal, float offset, double spacing_per_range_sq,
-                                    const Params& params, const DepthNoise& noise) {
+FloodCriterion FloodCriterion::make(const Vec3& normal, float offset, double spacing_per_range_sq, const Params& params,
+                                    const DepthNoise& noise) {
   // The pixel pitch varies a little across a plane (it shrinks by cos^2 of the off-axis
   // angle), so neighbours may be up to twice the spacing apart.
   constexpr double kSpacingSlack = 2.0;

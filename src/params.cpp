@@ -23,12 +23,11 @@ std::string nonNegative(double value, const char* name) {
 }  // namespace
 
 std::string Params::problem() const {
-  for (std::string problem : {positive(distance_threshold, "distance_threshold", "metres"),
-                              positive(seed_size, "seed_size", "metres"),
-                              positive(angular_threshold, "angular_threshold", "radians"),
-                              positive(merge_distance, "merge_distance", "metres"),
-                              nonNegative(maximum_curvature, "maximum_curvature"),
-                              nonNegative(depth_noise_coefficient, "depth_noise_coefficient")}) {
+  for (std::string problem :
+       {positive(distance_threshold, "distance_threshold", "metres"), positive(seed_size, "seed_size", "metres"),
+        positive(angular_threshold, "angular_threshold", "radians"),
+        positive(merge_distance, "merge_distance", "metres"), nonNegative(maximum_curvature, "maximum_curvature"),
+        nonNegative(depth_noise_coefficient, "depth_noise_coefficient")}) {
     if (!problem.empty()) return problem;
   }
   if (angular_threshold >= M_PI / 2)

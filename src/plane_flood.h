@@ -19,10 +19,10 @@ namespace floodplane {
 
 /// A segment grown by one flood, as the later stages need it.
 struct Segment {
-  PlaneSums sums;             ///< of the pixels it owns now (Eq. 4 takeovers are subtracted)
-  PixelBox box;               ///< of every pixel it ever owned
-  FloodCriterion criterion;   ///< its plane and thresholds when its flood ended
-  bool lost_pixels = false;   ///< a later flood took pixels from it: it may be split
+  PlaneSums sums;            ///< of the pixels it owns now (Eq. 4 takeovers are subtracted)
+  PixelBox box;              ///< of every pixel it ever owned
+  FloodCriterion criterion;  ///< its plane and thresholds when its flood ended
+  bool lost_pixels = false;  ///< a later flood took pixels from it: it may be split
 };
 
 /// A pair of segments that touch: pixel neighbours whose points are 3-D neighbours.
@@ -51,7 +51,8 @@ class PlaneFlood {
   /// Appends the segment's neighbour pairs to `edges`; returns the pixels it took from other
   /// segments under Eq. 4.
   std::size_t grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                   const DepthNoise& noise, DistanceBuffer& buffer, std::vector<Segment>& segments, std::vector<SegmentEdge>& edges);
+                   const DepthNoise& noise, DistanceBuffer& buffer, std::vector<Segment>& segments,
+                   std::vector<SegmentEdge>& edges);
 
   /// Pixels examined (join attempts) by the last grow, for tests and statistics.
   std::size_t joinAttempts() const { return join_attempts_; }

@@ -20,8 +20,8 @@ MergeCriterion::MergeCriterion(const Params& params, const DepthNoise& noise)
       fit_tolerance_(0.5 * params.distance_threshold),
       noise_(noise) {}
 
-bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b,
-                               const PlaneFit& fit_b, double& cost) const {
+bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b, const PlaneFit& fit_b,
+                               double& cost) const {
   // The cheap tests on the parts' own planes come first: most neighbouring segments are
   // different planes and fail them, and the merged fit below costs an eigen-decomposition.
   if (fit_a.valid && fit_b.valid) {

@@ -67,8 +67,7 @@ class PlaneMerger {
       return a != o.a ? a > o.a : b > o.b;  // deterministic ties
     }
   };
-  void consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums,
-                const MergeCriterion& criterion);
+  void consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums, const MergeCriterion& criterion);
 
   std::vector<std::pair<std::int32_t, std::int32_t>> edges_;
   std::vector<std::vector<std::int32_t>> neighbours_;

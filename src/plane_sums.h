@@ -38,6 +38,8 @@ inline double normalUncertainty(const PlaneFit& fit, double count) {
 /// removing and merging are O(1), and so is the plane fit: the paper's merge step needs
 /// inlier-weighted centroids and normals (Sec. III-D); the sums give the exact least-squares
 /// plane of the union instead of a weighted average of two normals (PEAC, CAPE).
+// The ten sums read best three to a line, as the matrix they form:
+// clang-format off
 struct PlaneSums {
   double count = 0.0;
   double sx = 0.0, sy = 0.0, sz = 0.0;
@@ -103,5 +105,6 @@ struct PlaneSums {
   /// smallest eigenvalue as normal, turned to face the sensor at the origin.
   PlaneFit fit() const;
 };
+// clang-format on
 
 }  // namespace floodplane

@@ -12,12 +12,7 @@ class Refiner {
  public:
   Refiner(const PointGrid& full, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
           std::vector<std::size_t>& queue)
-      : full_(full),
-        labels_(labels.data()),
-        planes_(planes),
-        queue_(queue),
-        width_(full.width),
-        height_(full.height) {}
+      : full_(full), labels_(labels.data()), planes_(planes), queue_(queue), width_(full.width), height_(full.height) {}
 
   // Seeds of the growth: unlabelled pixels next to a plane they fit, the best plane first.
   void seedAlongPlaneBorders(bool renumber_first) {

@@ -10,11 +10,10 @@ constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
 }  // namespace
 
-void traceRegionBoundary(const std::uint32_t* labels, int width, int height, std::uint32_t label,
-                         std::size_t start, std::vector<int>& contour) {
+void traceRegionBoundary(const std::uint32_t* labels, int width, int height, std::uint32_t label, std::size_t start,
+                         std::vector<int>& contour) {
   const auto inside = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < width && y < height &&
-           labels[static_cast<std::size_t>(y) * width + x] == label;
+    return x >= 0 && y >= 0 && x < width && y < height && labels[static_cast<std::size_t>(y) * width + x] == label;
   };
   const int start_x = static_cast<int>(start % static_cast<std::size_t>(width));
   const int start_y = static_cast<int>(start / static_cast<std::size_t>(width));

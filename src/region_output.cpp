@@ -15,8 +15,7 @@ namespace {
 // A plane's thresholds for pixels that join it after merging. The Euclidean tolerance
 // follows from the plane itself: neighbouring pixels on n.P + d = 0 are alpha r^2 / |d| apart
 // (see FloodCriterion); |d| is bounded below where the plane is seen almost edge-on.
-FloodCriterion planeCriterion(const PlaneFit& fit, const Params& params, const DepthNoise& noise,
-                              float angular_pitch) {
+FloodCriterion planeCriterion(const PlaneFit& fit, const Params& params, const DepthNoise& noise, float angular_pitch) {
   const double distance = std::max(std::abs(fit.offset), 0.1 * fit.centroid.norm());
   const double spacing_per_range_sq = angular_pitch / std::max(distance, 1e-6);
   const Vec3 normal{static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
@@ -161,8 +160,7 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   }
 }
 
-void RegionBuilder::prepareCellRow(const PointGrid& segmented, int subsampling, int gy,
-                                   const MergedSegments& merged) {
+void RegionBuilder::prepareCellRow(const PointGrid& segmented, int subsampling, int gy, const MergedSegments& merged) {
   const std::uint32_t* table = candidate_of_segment_.data();
   const std::size_t width = static_cast<std::size_t>(segmented.width);
   const std::size_t sample_row = static_cast<std::size_t>(gy) * width;
@@ -173,9 +171,9 @@ void RegionBuilder::prepareCellRow(const PointGrid& segmented, int subsampling, 
     Cell& cell = cells_[gx];
     cell.around = {table[row0[gx]], table[row0[gx1]], table[row1[gx]], table[row1[gx1]]};
     const auto& k = cell.around;
-    cell.plane = (k[0] | k[1] | k[2] | k[3]) == 0                    ? 0u
+    cell.plane = (k[0] | k[1] | k[2] | k[3]) == 0                 ? 0u
                  : (k[0] == k[1] && k[0] == k[2] && k[0] == k[3]) ? k[0]
-                                                                     : kMixedCell;
+                                                                  : kMixedCell;
     // The nearer of a pixel and its cell's sample sets the noise tolerance.
     cell.sample_range_sq = Vec3::load(segmented.point(sample_row + gx)).squaredNorm();
     // Per pixel column, the squared range of its cell's sample, for the four-pixel loop.
@@ -231,8 +229,8 @@ void RegionBuilder::labelRun(const PointGrid& full, std::size_t row_start, int u
   }
 }
 
-void RegionBuilder::labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end,
-                                   std::size_t gx, std::uint32_t* out_row) const {
+void RegionBuilder::labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::size_t gx,
+                                   std::uint32_t* out_row) const {
   const Cell& cell = cells_[gx];
   // Every plane has the same tolerance at a given range.
   const FloodCriterion& any = candidates_.list().front().criterion;

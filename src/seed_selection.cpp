@@ -54,7 +54,8 @@ int SeedSelector::rhoAt(float range) const {
 }
 
 SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) const {
-  const std::size_t center = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+  const std::size_t center =
+      static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
   const Vec3 p = Vec3::load(grid.point(center));
   const float range_sq = p.squaredNorm();
   if (!std::isfinite(range_sq)) return SeedVerdict::kHole;
@@ -74,14 +75,12 @@ SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) 
   const Vec3 centroid_offset = (up + down + left + right) * 0.25f - p;
   const float seed_side = seedSizeAt(range);
   if (!(centroid_offset.squaredNorm() <= seed_side * seed_side)) {
-    return std::isfinite(centroid_offset.squaredNorm()) ? SeedVerdict::kDistanceDiscontinuity
-                                                        : SeedVerdict::kHole;
+    return std::isfinite(centroid_offset.squaredNorm()) ? SeedVerdict::kDistanceDiscontinuity : SeedVerdict::kHole;
   }
 
   // Eq. 6: the normals of the four quadrants of the cross agree.
   const Vec3 to_right = right - p, to_up = up - p, to_left = left - p, to_down = down - p;
-  Vec3 normals[4] = {to_right.cross(to_up), to_up.cross(to_left), to_left.cross(to_down),
-                     to_down.cross(to_right)};
+  Vec3 normals[4] = {to_right.cross(to_up), to_up.cross(to_left), to_left.cross(to_down), to_down.cross(to_right)};
   const float lever_sq = std::min(std::min(to_right.squaredNorm(), to_left.squaredNorm()),
                                   std::min(to_up.squaredNorm(), to_down.squaredNorm()));
   const float lever = std::sqrt(lever_sq);
@@ -107,7 +106,8 @@ SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) 
     const Vec3 chord = end - p;
     cross.add(end);
     for (int i = 1; i < rho; ++i) {
-      const Vec3 pi = Vec3::load(grid.point(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(center) + i * steps[arm])));
+      const Vec3 pi =
+          Vec3::load(grid.point(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(center) + i * steps[arm])));
       cross.add(pi);
       const Vec3 direction = 2 * i >= rho ? pi - p : end - pi;
       if (!sameDirection(direction, chord, cos_fine)) {

@@ -12,12 +12,12 @@ namespace floodplane {
 
 /// A pixel accepted as the start of a flood, with what the flood needs from it.
 struct Seed {
-  std::size_t index = 0;  ///< linear pixel index
-  Vec3 point;             ///< P_seed
-  Vec3 normal;            ///< n_seed, unit, facing the sensor (see SeedSelector)
+  std::size_t index = 0;           ///< linear pixel index
+  Vec3 point;                      ///< P_seed
+  Vec3 normal;                     ///< n_seed, unit, facing the sensor (see SeedSelector)
   float normal_uncertainty = 0.f;  ///< standard deviation of n_seed's direction [rad]
-  float spacing = 0.f;    ///< sigma_euclidean of Eq. 8: metres per pixel at the seed
-  int rho = 0;            ///< the seed cube's half side in pixels (Fig. 3)
+  float spacing = 0.f;             ///< sigma_euclidean of Eq. 8: metres per pixel at the seed
+  int rho = 0;                     ///< the seed cube's half side in pixels (Fig. 3)
 };
 
 /// Why a seed candidate was accepted or rejected, in the order the tests run.
@@ -69,8 +69,7 @@ class SeedSelector {
   /// The angle between neighbouring viewing rays on the optical axis (1 / f for a pinhole),
   /// the 98th percentile over a sample of neighbouring finite points; `fallback` when the
   /// grid has no neighbouring finite points.
-  static float estimateAngularPitch(const PointGrid& grid, std::vector<float>& scratch,
-                                    float fallback = 1.0f / 525.0f);
+  static float estimateAngularPitch(const PointGrid& grid, std::vector<float>& scratch, float fallback = 1.0f / 525.0f);
 
  private:
   float half_seed_ = 0.03f;

@@ -109,8 +109,8 @@ struct PointLanes {
   }
   /// planeDistance: |((n_x x + n_y y) + n_z z) + d|.
   Float4 planeDistance(const Vec3& normal, float offset) const {
-    const Float4 dot = (Float4::broadcast(normal.x) * x + Float4::broadcast(normal.y) * y) +
-                       Float4::broadcast(normal.z) * z;
+    const Float4 dot =
+        (Float4::broadcast(normal.x) * x + Float4::broadcast(normal.y) * y) + Float4::broadcast(normal.z) * z;
     return (dot + Float4::broadcast(offset)).abs();
   }
 };

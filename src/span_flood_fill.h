@@ -57,8 +57,7 @@ int joinRunPixelByPixel(Visitor& visitor, std::size_t from, int step, int max) {
 ///
 /// `shadows` is scratch space; pass the same vector every time to avoid allocation.
 template <class Visitor>
-void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visitor,
-                   std::vector<Shadow>& shadows) {
+void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visitor, std::vector<Shadow>& shadows) {
   const auto index = [width](int x, int y) {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
   };

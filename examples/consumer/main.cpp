@@ -13,16 +13,16 @@ int main() {
   for (int v = 0; v < 120; ++v) {
     for (int u = 0; u < 160; ++u) {
       const float x = (u - 79.5f) / 131.25f, y = (v - 59.5f) / 131.25f;  // the ray (x, y, 1)
-      float t = 3.0f;                                                     // back wall z = 3
-      if (y > 0.0f) t = std::fmin(t, 1.0f / y);                           // floor y = 1
-      if (x > 0.0f) t = std::fmin(t, 1.0f / x);                           // side wall x = 1
+      float t = 3.0f;                                                    // back wall z = 3
+      if (y > 0.0f) t = std::fmin(t, 1.0f / y);                          // floor y = 1
+      if (x > 0.0f) t = std::fmin(t, 1.0f / x);                          // side wall x = 1
       (*cloud)(u, v) = pcl::PointXYZ(x * t, y * t, t);
     }
   }
 
   floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> seg;  // was OrganizedMultiPlaneSegmentation
   seg.setMinInliers(500);
-  seg.setInputCloud(cloud);                                   // no setInputNormals
+  seg.setInputCloud(cloud);  // no setInputNormals
   floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
   std::vector<pcl::ModelCoefficients> coefficients;
   std::vector<pcl::PointIndices> inliers, label_indices, boundaries;

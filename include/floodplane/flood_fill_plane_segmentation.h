@@ -120,13 +120,11 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
 
   // ---- segmentation, with OrganizedMultiPlaneSegmentation's signatures -------------------
   /// Planes without the refinement step.
-  void segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
-               std::vector<pcl::PointIndices>& inlier_indices);
+  void segment(std::vector<pcl::ModelCoefficients>& model_coefficients, std::vector<pcl::PointIndices>& inlier_indices);
   /// Planes without the refinement step, with their inliers' centroids and covariances, the
   /// label cloud and the points of every label.
-  void segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
-               std::vector<pcl::PointIndices>& inlier_indices, Centroids& centroids,
-               Covariances& covariances, pcl::PointCloud<PointLT>& labels,
+  void segment(std::vector<pcl::ModelCoefficients>& model_coefficients, std::vector<pcl::PointIndices>& inlier_indices,
+               Centroids& centroids, Covariances& covariances, pcl::PointCloud<PointLT>& labels,
                std::vector<pcl::PointIndices>& label_indices);
   /// Planar regions (centroid, covariance, count, contour, coefficients) without refinement.
   void segment(Regions& regions);
@@ -138,8 +136,8 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
                         std::vector<pcl::PointIndices>& label_indices,
                         std::vector<pcl::PointIndices>& boundary_indices);
 
-  /// The last result as the core produced it: labels, and planes relative to the sensor origin (axes as the cloud's), the
-  /// time per phase and statistics. Valid until the next call.
+  /// The last result as the core produced it: labels, and planes relative to the sensor origin (axes as the cloud's),
+  /// the time per phase and statistics. Valid until the next call.
   const Segmentation& getLastSegmentation() const { return *last_; }
 
  protected:

@@ -24,11 +24,11 @@ struct PhaseTimes {
 
 /// What happened inside one segmentation, for tests, benchmarks and curious users.
 struct SegmentationStats {
-  std::size_t seed_candidates = 0;  ///< unclaimed pixels tested as seeds
-  std::size_t seeds = 0;            ///< candidates that passed Eqs. 5-7 (one flood each)
+  std::size_t seed_candidates = 0;    ///< unclaimed pixels tested as seeds
+  std::size_t seeds = 0;              ///< candidates that passed Eqs. 5-7 (one flood each)
   std::size_t pixels_taken_over = 0;  ///< pixels reassigned by Eq. 4
-  std::size_t segments = 0;         ///< segments after relabelling
-  std::size_t merges = 0;           ///< merges by Eq. 9
+  std::size_t segments = 0;           ///< segments after relabelling
+  std::size_t merges = 0;             ///< merges by Eq. 9
 };
 
 /// One plane found in the cloud.
@@ -42,8 +42,8 @@ struct SegmentedPlane {
 struct Segmentation {
   int width = 0;
   int height = 0;
-  std::vector<std::uint32_t> labels;    ///< 0 = no plane, k = planes[k - 1]
-  std::vector<SegmentedPlane> planes;   ///< largest first
+  std::vector<std::uint32_t> labels;   ///< 0 = no plane, k = planes[k - 1]
+  std::vector<SegmentedPlane> planes;  ///< largest first
   PhaseTimes phases;
   SegmentationStats stats;
 

@@ -63,7 +63,7 @@ TEST(UnionFind, TheSmallerRootWinsBetweenEqualSizesWhateverTheArgumentOrder) {
 TEST(UnionFind, TheLargerSetsRootSurvives) {
   UnionFind sets;
   sets.reset(5);
-  sets.unite(3, 4);  // {3, 4}, root 3
+  sets.unite(3, 4);                // {3, 4}, root 3
   EXPECT_EQ(sets.unite(0, 4), 3);  // {0} joins the larger set, despite 0 < 3
   EXPECT_EQ(sets.find(0), 3);
 }
@@ -117,8 +117,7 @@ struct Labels {
   explicit Labels(const std::vector<std::string>& rows)
       : width(static_cast<int>(rows[0].size())), height(static_cast<int>(rows.size())) {
     for (const std::string& row : rows)
-      for (char c : row)
-        data.push_back(c == '.' ? 0 : c <= '9' ? c - '0' : c - 'a' + 10);
+      for (char c : row) data.push_back(c == '.' ? 0 : c <= '9' ? c - '0' : c - 'a' + 10);
   }
   std::int32_t at(int x, int y) const { return data[static_cast<std::size_t>(y) * width + x]; }
   PixelBox box() const { return {0, 0, width - 1, height - 1}; }

@@ -52,7 +52,7 @@ TEST(DistanceBuffer, MarginDemandsTheNewPlaneBeCloserByMoreThanIt) {
   DistanceBuffer buffer;
   buffer.reset(3);
   buffer.claim(0, 1, 0.005f);
-  EXPECT_TRUE(buffer.fitsBetter(0, 0.004f));                   // closer by 1 mm, no margin
+  EXPECT_TRUE(buffer.fitsBetter(0, 0.004f));                      // closer by 1 mm, no margin
   EXPECT_FALSE(buffer.fitsBetter(0, 0.004f, /*margin=*/0.002f));  // but not by 2 mm
   EXPECT_TRUE(buffer.fitsBetter(0, 0.002f, /*margin=*/0.002f));   // closer by 3 mm
 }

@@ -78,9 +78,9 @@ TEST(DepthNoise, GrowsWithTheSquareOfTheRange) {
 
 TEST(DepthNoise, ToleranceIsTheFixedValueUntilThreeSigmaExceedsIt) {
   const DepthNoise noise = quadraticNoise(0.002);
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 1.0), 0.01);    // 3 sigma = 0.006 < 0.01
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 4.0), 0.024);   // 3 sigma = 0.024 > 0.01
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 25.0), 0.15);   // r = 5 m
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 1.0), 0.01);   // 3 sigma = 0.006 < 0.01
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 4.0), 0.024);  // 3 sigma = 0.024 > 0.01
+  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 25.0), 0.15);  // r = 5 m
 }
 
 TEST(DepthNoise, AddsSigmaZeroAtEveryRange) {
@@ -118,7 +118,7 @@ FloodCriterion criterion(double noise_coefficient) {
 }
 
 TEST(FloodCriterion, PlaneToleranceIsTheMaximumOfSigmaPlaneAndThreeCRSquared) {
-  const FloodCriterion c = criterion(0.002f);  // 3 c = 0.006
+  const FloodCriterion c = criterion(0.002f);       // 3 c = 0.006
   EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.01f);    // 0.006 < 0.01
   EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.024f);   // 0.006 * 4
   EXPECT_FLOAT_EQ(c.planeTolerance(16.f), 0.096f);  // 0.006 * 16
@@ -162,16 +162,16 @@ TEST(FloodCriterion, GrowsThePlaneToleranceBySigmaZeroToo) {
   noise.constant = 0.002;  // 3 sigma_0 = 6 mm
   noise.quadratic = 0.001;
   const FloodCriterion c = FloodCriterion::make({0, 0, -1}, 2.f, 0.0025, params, noise);
-  EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.009f);   // 3 (0.002 + 0.001)
-  EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.018f);   // 3 (0.002 + 0.004)
+  EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.009f);  // 3 (0.002 + 0.001)
+  EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.018f);  // 3 (0.002 + 0.004)
 }
 
 TEST(FloodCriterion, AcceptsANeighbourOnThePlaneAndRejectsOneOffIt) {
   const FloodCriterion c = criterion(0.f);
   const Vec3 from{0.f, 0.f, 2.f};
-  const Vec3 on{0.015f, 0.f, 2.f};      // 1.5 cm away, on the plane
-  const Vec3 off{0.015f, 0.f, 2.02f};   // 2 cm behind the plane
-  const Vec3 far{0.05f, 0.f, 2.f};      // on the plane, but 5 cm away: beyond sigma_e = 2 cm
+  const Vec3 on{0.015f, 0.f, 2.f};     // 1.5 cm away, on the plane
+  const Vec3 off{0.015f, 0.f, 2.02f};  // 2 cm behind the plane
+  const Vec3 far{0.05f, 0.f, 2.f};     // on the plane, but 5 cm away: beyond sigma_e = 2 cm
   const auto accepts = [&](const Vec3& p) {
     float distance = -1.f;
     const bool accepted = c.accepts(from, p, distance);

@@ -193,7 +193,7 @@ TEST(FloodFillPlaneSegmentation, GivesEmptyOutputsWithoutAnInputCloud) {
 
 TEST(FloodFillPlaneSegmentation, RejectsAnUnorganizedCloudWithEmptyOutputs) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  for (int i = 0; i < 1000; ++i) cloud->push_back(pcl::PointXYZ(0.001f * i, 0.0f, 1.0f));
+  for (int i = 0; i < 1000; ++i) cloud->push_back(pcl::PointXYZ(0.001f * static_cast<float>(i), 0.0f, 1.0f));
   ASSERT_EQ(cloud->height, 1u);
   FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud(cloud);
@@ -251,10 +251,10 @@ TEST(FloodFillPlaneSegmentation, RejectsBadParametersInTheSetterThatTookThem) {
 
 TEST(FloodFillPlaneSegmentation, HasThePapersDefaults) {
   const FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
-  EXPECT_DOUBLE_EQ(seg.getDistanceThreshold(), 0.01);   // sigma_plane
-  EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.06);            // sigma_seed
-  EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);     // theta_angle
-  EXPECT_DOUBLE_EQ(seg.getMergeDistance(), 0.03);       // sigma_plane-merge
+  EXPECT_DOUBLE_EQ(seg.getDistanceThreshold(), 0.01);  // sigma_plane
+  EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.06);           // sigma_seed
+  EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);    // theta_angle
+  EXPECT_DOUBLE_EQ(seg.getMergeDistance(), 0.03);      // sigma_plane-merge
   EXPECT_EQ(seg.getSubsampling(), 1);
   EXPECT_FALSE(seg.getProjectPoints());
 }
@@ -283,7 +283,7 @@ TEST(FloodFillPlaneSegmentation, GivesTheSameResultWhenCloudAndSensorMoveTogethe
   ASSERT_EQ(after.size(), before.size());
   std::size_t same = 0;
   for (std::size_t i = 0; i < labels_before.size(); ++i) same += labels_before[i].label == labels_after[i].label;
-  EXPECT_GT(static_cast<double>(same) / labels_before.size(), 0.999);
+  EXPECT_GT(static_cast<double>(same) / static_cast<double>(labels_before.size()), 0.999);
   for (std::size_t k = 0; k < before.size(); ++k) {
     const Eigen::Vector3f n_before(before[k].values[0], before[k].values[1], before[k].values[2]);
     const Eigen::Vector3f n_after(after[k].values[0], after[k].values[1], after[k].values[2]);

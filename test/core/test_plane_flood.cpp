@@ -33,7 +33,8 @@ struct Grid {
     for (int v = 0; v < h; ++v) {
       for (int u = 0; u < w; ++u) {
         const double z = depth(u, v);
-        float* p = &data[(static_cast<std::size_t>(v) * static_cast<std::size_t>(w) + static_cast<std::size_t>(u)) * stride];
+        float* p =
+            &data[(static_cast<std::size_t>(v) * static_cast<std::size_t>(w) + static_cast<std::size_t>(u)) * stride];
         p[0] = static_cast<float>((u - (w - 1) / 2.0) / kFocal * z);
         p[1] = static_cast<float>((v - (h - 1) / 2.0) / kFocal * z);
         p[2] = static_cast<float>(z);

@@ -150,7 +150,8 @@ TEST(MergeCriterion, CostsMoreTheWorseThePartsFitOnePlane) {
 // strips of the same plane far to the right, touching each other but nothing else.
 std::vector<PlaneSums> coplanarStrips() {
   std::vector<PlaneSums> sums(7);
-  for (int s = 1; s <= 4; ++s) sums[s] = patch(-0.2f + 0.1f * static_cast<float>(s - 1), -0.1f + 0.1f * static_cast<float>(s - 1), 2.f);
+  for (int s = 1; s <= 4; ++s)
+    sums[s] = patch(-0.2f + 0.1f * static_cast<float>(s - 1), -0.1f + 0.1f * static_cast<float>(s - 1), 2.f);
   sums[5] = patch(1.0f, 1.1f, 2.f);
   sums[6] = patch(1.1f, 1.2f, 2.f);
   return sums;
@@ -208,8 +209,8 @@ TEST(PlaneMerger, RootDataMapsEverySegmentToItsFinalRoot) {
 
 TEST(PlaneMerger, KeepsTheLargerSegmentAsRoot) {
   std::vector<PlaneSums> sums(3);
-  sums[1] = patch(-0.1f, 0.f, 2.f);                  // 441 points
-  sums[2] = patch(0.f, 0.3f, 2.f, 0.f, -0.1f, 0.1f);  // 441 points too...
+  sums[1] = patch(-0.1f, 0.f, 2.f);                       // 441 points
+  sums[2] = patch(0.f, 0.3f, 2.f, 0.f, -0.1f, 0.1f);      // 441 points too...
   sums[2].merge(patch(0.f, 0.3f, 2.f, 0.f, 0.1f, 0.2f));  // ...and 441 more
   PlaneMerger merger;
   merger.reset(3);

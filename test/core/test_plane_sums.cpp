@@ -113,9 +113,7 @@ TEST(PlaneSums, MergeEqualsSummingBothSetsDirectly) {
   EXPECT_NEAR(f1.mean_squared_error, f2.mean_squared_error, 1e-12);
 }
 
-TEST(PlaneSums, CentroidOfNoPointsIsZero) {
-  EXPECT_EQ(PlaneSums{}.centroid(), Eigen::Vector3d::Zero());
-}
+TEST(PlaneSums, CentroidOfNoPointsIsZero) { EXPECT_EQ(PlaneSums{}.centroid(), Eigen::Vector3d::Zero()); }
 
 // --- fit ----------------------------------------------------------------------------------------
 
@@ -204,8 +202,7 @@ TEST(PlaneSums, FitIsInvalidForCollinearPoints) {
   PlaneSums line;
   for (int i = 0; i < 5; ++i) line.add({0.f, 0.f, 1.f + 0.5f * static_cast<float>(i)});
   const PlaneFit fit = line.fit();
-  EXPECT_FALSE(fit.valid) << "eigenvalues " << fit.eigenvalues.transpose() << ", normal "
-                          << fit.normal.transpose();
+  EXPECT_FALSE(fit.valid) << "eigenvalues " << fit.eigenvalues.transpose() << ", normal " << fit.normal.transpose();
 }
 
 TEST(PlaneSums, FitIsInvalidForCoincidentPoints) {
@@ -317,9 +314,7 @@ TEST(FacesSensor, RejectsAPlaneSeenEdgeOn) {
 
 TEST(FacesSensor, DrawsTheLineAtTheMinimumIncidenceCosine) {
   const Eigen::Vector3d point(0, 0, 3);
-  const auto normalAt = [](double cosine) {
-    return Eigen::Vector3d(std::sqrt(1.0 - cosine * cosine), 0.0, -cosine);
-  };
+  const auto normalAt = [](double cosine) { return Eigen::Vector3d(std::sqrt(1.0 - cosine * cosine), 0.0, -cosine); };
   EXPECT_TRUE(facesSensor(normalAt(kMinIncidenceCosine * 1.01), point));
   EXPECT_FALSE(facesSensor(normalAt(kMinIncidenceCosine * 0.99), point));
 }

@@ -81,8 +81,7 @@ TEST(TraceRegionBoundary, GivesTheBorderOfARectangleClockwiseFromItsFirstPixel) 
       "......",
   });
   const Pixels xy = toXY(labels.trace(1), labels.width);
-  const Pixels expected = {{1, 1}, {2, 1}, {3, 1}, {4, 1}, {4, 2}, {4, 3},
-                           {3, 3}, {2, 3}, {1, 3}, {1, 2}};
+  const Pixels expected = {{1, 1}, {2, 1}, {3, 1}, {4, 1}, {4, 2}, {4, 3}, {3, 3}, {2, 3}, {1, 3}, {1, 2}};
   EXPECT_EQ(xy, expected);
   expectClosedEightConnectedChain(xy);
   EXPECT_GT(twiceSignedArea(xy), 0) << "clockwise on screen";
@@ -180,8 +179,7 @@ TEST(TraceRegionBoundary, VisitsAOnePixelNeckTwice) {
       "..11",
   });
   const Pixels xy = toXY(labels.trace(1), labels.width);
-  const Pixels expected = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2}, {3, 3},
-                           {2, 3}, {2, 2}, {1, 1}, {0, 1}};
+  const Pixels expected = {{0, 0}, {1, 0}, {1, 1}, {2, 2}, {3, 2}, {3, 3}, {2, 3}, {2, 2}, {1, 1}, {0, 1}};
   EXPECT_EQ(xy, expected);
   expectClosedEightConnectedChain(xy);
 }

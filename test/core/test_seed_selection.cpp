@@ -33,7 +33,8 @@ Params exactParams() {
 
 SeedSelector selectorFor(const test::RenderedGrid& scene, const Params& params) {
   SeedSelector selector;
-  selector.configure(params, DepthNoise::fromParams(params), 1.0f / static_cast<float>(camera().focal), scene.width, scene.height);
+  selector.configure(params, DepthNoise::fromParams(params), 1.0f / static_cast<float>(camera().focal), scene.width,
+                     scene.height);
   return selector;
 }
 
@@ -54,7 +55,7 @@ TEST(SeedSelector, GrowsTheSeedCubeWithTheDepthNoise) {
   params.depth_noise_coefficient = 0.0019;
   SeedSelector selector;
   selector.configure(params, DepthNoise::fromParams(params), 1.0f / 525.0f, 640, 480);
-  EXPECT_FLOAT_EQ(selector.seedSizeAt(1.0f), 0.06f);             // 6 sigma = 1.1 cm < 6 cm
+  EXPECT_FLOAT_EQ(selector.seedSizeAt(1.0f), 0.06f);              // 6 sigma = 1.1 cm < 6 cm
   EXPECT_NEAR(selector.seedSizeAt(5.0f), 6 * 0.0019 * 25, 1e-6);  // 6 sigma = 28.5 cm
 }
 

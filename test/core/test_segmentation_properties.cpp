@@ -88,8 +88,8 @@ bool finite(const pcl::PointXYZ& p) { return std::isfinite(p.x) && std::isfinite
     // it gives a PCL_ERROR and empty outputs.
     if (k_planes != 0 || !out.inliers.empty() || !out.regions.empty() || !out.label_indices.empty() ||
         !out.boundaries.empty() || !out.labels->empty())
-      return fail() << "a cloud of height 1 gave non-empty outputs (" << k_planes << " planes, "
-                    << out.labels->size() << " labels)";
+      return fail() << "a cloud of height 1 gave non-empty outputs (" << k_planes << " planes, " << out.labels->size()
+                    << " labels)";
     return ::testing::AssertionSuccess();
   }
 
@@ -99,8 +99,8 @@ bool finite(const pcl::PointXYZ& p) { return std::isfinite(p.x) && std::isfinite
                   << " points) for a " << cloud.width << " x " << cloud.height << " cloud";
   if (out.inliers.size() != k_planes || out.regions.size() != k_planes || out.boundaries.size() != k_planes ||
       out.label_indices.size() != k_planes + 1)
-    return fail() << "output sizes disagree: " << k_planes << " coefficients, " << out.inliers.size() << " inlier sets, "
-                  << out.regions.size() << " regions, " << out.boundaries.size() << " boundaries, "
+    return fail() << "output sizes disagree: " << k_planes << " coefficients, " << out.inliers.size()
+                  << " inlier sets, " << out.regions.size() << " regions, " << out.boundaries.size() << " boundaries, "
                   << out.label_indices.size() << " label sets";
 
   // Labels: 0..K, a plane's label only on finite points.
@@ -162,7 +162,8 @@ bool finite(const pcl::PointXYZ& p) { return std::isfinite(p.x) && std::isfinite
     const Eigen::Vector4f c(values[0], values[1], values[2], values[3]);
     if (!c.allFinite()) return fail() << "plane " << label << " has coefficients " << c.transpose();
     const Eigen::Vector3d normal = c.head<3>().cast<double>();
-    if (std::abs(normal.norm() - 1.0) > 1e-4) return fail() << "plane " << label << "'s normal has length " << normal.norm();
+    if (std::abs(normal.norm() - 1.0) > 1e-4)
+      return fail() << "plane " << label << "'s normal has length " << normal.norm();
     const Eigen::Vector3d origin = cloud.sensor_origin_.head<3>().cast<double>();
     if (!(normal.dot(origin - mean) > 0.0))
       return fail() << "plane " << label << "'s normal " << normal.transpose() << " faces away from the sensor at "
@@ -261,10 +262,9 @@ Eigen::Vector3d randomUnit(std::mt19937& rng) {
 // unbounded, cut by a random half-space, or a disc.
 test::ScenePlane randomPlane(std::mt19937& rng, const test::Pinhole& camera, int id) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  const Eigen::Vector3d ray =
-      Eigen::Vector3d((u01(rng) * camera.width - camera.cx()) / camera.focal,
-                      (u01(rng) * camera.height - camera.cy()) / camera.focal, 1.0)
-          .normalized();
+  const Eigen::Vector3d ray = Eigen::Vector3d((u01(rng) * camera.width - camera.cx()) / camera.focal,
+                                              (u01(rng) * camera.height - camera.cy()) / camera.focal, 1.0)
+                                  .normalized();
   const Eigen::Vector3d anchor = (0.5 + 5.5 * u01(rng)) * ray;
   Eigen::Vector3d side = randomUnit(rng);
   side = (side - side.dot(ray) * ray).normalized();
@@ -361,8 +361,8 @@ RandomCloud randomCloud(std::mt19937& rng, int width, int height) {
 
 // Sizes from 1 x 1 to 120 x 90: the smallest and thinnest first, then random ones.
 std::vector<std::pair<int, int>> randomSizes(std::mt19937& rng, std::size_t count) {
-  std::vector<std::pair<int, int>> sizes = {{1, 1}, {2, 2}, {3, 3}, {5, 5}, {1, 90}, {120, 1}, {2, 90}, {120, 2},
-                                            {7, 4}, {120, 90}, {120, 90}, {97, 89}};
+  std::vector<std::pair<int, int>> sizes = {{1, 1},  {2, 2},   {3, 3}, {5, 5},    {1, 90},   {120, 1},
+                                            {2, 90}, {120, 2}, {7, 4}, {120, 90}, {120, 90}, {97, 89}};
   std::uniform_int_distribution<int> any_w(1, 120), any_h(1, 90), big_w(40, 120), big_h(30, 90);
   while (sizes.size() < count) {
     if (rng() % 3 == 0)
@@ -655,8 +655,8 @@ test::RenderedGrid scanBoxRoom(int width, int height, const Eigen::Vector3d& lo,
 
 TEST(SegmentationProperties, FindsTheSixFacesOfARoomInALaserScan) {
   // A 5.8 x 2.8 x 7 m room; the scanner 1.3 m above the floor, off centre.
-  const test::RenderedGrid scan = scanBoxRoom(633, 513, Eigen::Vector3d(-3.2, -1.5, -2.9),
-                                              Eigen::Vector3d(2.6, 1.3, 4.1), 0.002, 5);
+  const test::RenderedGrid scan =
+      scanBoxRoom(633, 513, Eigen::Vector3d(-3.2, -1.5, -2.9), Eigen::Vector3d(2.6, 1.3, 4.1), 0.002, 5);
   const Cloud::Ptr cloud = toCloud(scan);
   Seg seg;
   seg.setDepthNoiseCoefficient(0.0);  // laser data: the paper's fixed thresholds
@@ -813,7 +813,8 @@ Eigen::Vector3f floorPixelRay() {
 // The plane of `out` with a normal within 1 degree of `normal`, or -1.
 int planeAlong(const Output& out, const Eigen::Vector3f& normal) {
   for (std::size_t k = 0; k < out.planes(); ++k) {
-    const Eigen::Vector3f n(out.coefficients[k].values[0], out.coefficients[k].values[1], out.coefficients[k].values[2]);
+    const Eigen::Vector3f n(out.coefficients[k].values[0], out.coefficients[k].values[1],
+                            out.coefficients[k].values[2]);
     if (n.dot(normal) > std::cos(static_cast<float>(M_PI) / 180.0f)) return static_cast<int>(k);
   }
   return -1;

@@ -115,7 +115,8 @@ TEST(Segmenter, FindsTheRoomCornerUnderKinectLikeNoise) {
   params.min_inliers = 100;
   Segmenter segmenter(params);
   const Segmentation& result = segmenter.segment(scene.grid());
-  for (const ScenePlane& truth : test::roomCorner()) EXPECT_GT(bestIoU(scene, result.labels, truth.id), 0.9) << truth.id;
+  for (const ScenePlane& truth : test::roomCorner())
+    EXPECT_GT(bestIoU(scene, result.labels, truth.id), 0.9) << truth.id;
   EXPECT_LE(result.planes.size(), 5u);
 }
 

@@ -18,7 +18,8 @@ struct Mask {
   int height = 0;
   std::vector<bool> inside;
 
-  explicit Mask(const std::vector<std::string>& rows) : width(static_cast<int>(rows[0].size())), height(static_cast<int>(rows.size())) {
+  explicit Mask(const std::vector<std::string>& rows)
+      : width(static_cast<int>(rows[0].size())), height(static_cast<int>(rows.size())) {
     for (const std::string& row : rows)
       for (char c : row) inside.push_back(c == '#');
   }
@@ -89,7 +90,8 @@ TEST(SpanFloodFill, ExaminesEachPixelOfAFullRectangleOnce) {
   EXPECT_EQ(visitor.attempts, mask.inside.size() - 1);
   std::size_t naive_attempts = 0;
   naiveFill(mask, 320, 240, naive_attempts);
-  EXPECT_GT(static_cast<double>(naive_attempts), 3.9 * static_cast<double>(mask.inside.size()));  // the four-neighbour fill
+  EXPECT_GT(static_cast<double>(naive_attempts),
+            3.9 * static_cast<double>(mask.inside.size()));  // the four-neighbour fill
 }
 
 TEST(SpanFloodFill, FindsTheSameRegionAsAFourNeighbourFillOnAMaze) {

@@ -39,14 +39,22 @@ class ByteReader {
 // one of the values sensors and bugs produce.
 float coordinate(ByteReader& in, float on_plane) {
   switch (in.byte() % 16) {
-    case 0: return std::numeric_limits<float>::quiet_NaN();
-    case 1: return std::numeric_limits<float>::infinity();
-    case 2: return -std::numeric_limits<float>::infinity();
-    case 3: return 0.0f;
-    case 4: return std::numeric_limits<float>::denorm_min();
-    case 5: return 1e30f;
-    case 6: return 1e5f * (in.unit() - 0.5f);  // 100 km
-    default: return on_plane + 0.002f * (in.unit() - 0.5f);
+    case 0:
+      return std::numeric_limits<float>::quiet_NaN();
+    case 1:
+      return std::numeric_limits<float>::infinity();
+    case 2:
+      return -std::numeric_limits<float>::infinity();
+    case 3:
+      return 0.0f;
+    case 4:
+      return std::numeric_limits<float>::denorm_min();
+    case 5:
+      return 1e30f;
+    case 6:
+      return 1e5f * (in.unit() - 0.5f);  // 100 km
+    default:
+      return on_plane + 0.002f * (in.unit() - 0.5f);
   }
 }
 

@@ -31,9 +31,10 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
     return false;
   }
   if (!input_->isOrganized() || input_->size() != static_cast<std::size_t>(input_->width) * input_->height) {
-    PCL_ERROR("[floodplane::%s::%s] This method needs an organized point cloud (height > 1); got %u x %u "
-              "with %zu points.\n",
-              name.c_str(), method, input_->width, input_->height, static_cast<std::size_t>(input_->size()));
+    PCL_ERROR(
+        "[floodplane::%s::%s] This method needs an organized point cloud (height > 1); got %u x %u "
+        "with %zu points.\n",
+        name.c_str(), method, input_->width, input_->height, static_cast<std::size_t>(input_->size()));
     return false;
   }
 
@@ -194,8 +195,8 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
 }
 
 template <typename PointT, typename PointLT>
-void FloodFillPlaneSegmentation<PointT, PointLT>::clearOutputs(
-    std::vector<pcl::ModelCoefficients>& model_coefficients, std::vector<pcl::PointIndices>& inlier_indices) const {
+void FloodFillPlaneSegmentation<PointT, PointLT>::clearOutputs(std::vector<pcl::ModelCoefficients>& model_coefficients,
+                                                               std::vector<pcl::PointIndices>& inlier_indices) const {
   model_coefficients.clear();
   inlier_indices.clear();
 }
