@@ -50,10 +50,23 @@ struct RenderedGrid {
   }
 };
 
-// The nearest plane hit along each pixel's ray; `range_noise` adds Gaussian noise of that
-// standard deviation [m] along the ray (seeded, deterministic).
+// The standard deviation [m] of the noise along a ray at range r [m].
+using RangeNoise = std::function<double(double)>;
+
+// The nearest plane hit along each pixel's ray, with Gaussian noise of standard deviation
+// `noise(range)` along the ray (seeded, deterministic).
+inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes, const RangeNoise& noise_of,
+                           unsigned seed = 1);
+
+// The same with noise of one standard deviation `range_noise` [m] at every range.
 inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes, double range_noise = 0.0,
                            unsigned seed = 1) {
+  return render(
+      camera, planes, [range_noise](double) { return range_noise; }, seed);
+}
+
+inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes, const RangeNoise& noise_of,
+                           unsigned seed) {
   RenderedGrid out;
   out.width = camera.width;
   out.height = camera.height;
@@ -77,7 +90,8 @@ inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>&
       }
       if (id == 0) continue;
       Eigen::Vector3d p = best * ray;
-      if (range_noise > 0.0) p *= 1.0 + range_noise * noise(rng) / p.norm();
+      const double sigma = noise_of(p.norm());
+      if (sigma > 0.0) p *= 1.0 + sigma * noise(rng) / p.norm();
       const std::size_t i = static_cast<std::size_t>(v) * camera.width + u;
       out.xyz[3 * i] = static_cast<float>(p.x());
       out.xyz[3 * i + 1] = static_cast<float>(p.y());
