@@ -256,7 +256,7 @@ TEST_F(PcdSegment, JsonAgreesWithThePcdAndPngSitsNextToIt) {
   EXPECT_EQ(json.at("plane_count"), count.size());
   EXPECT_EQ(json.at("width"), 160);
   EXPECT_EQ(json.at("height"), 120);
-  EXPECT_GE(json.at("segmentation_ms").get<double>(), 0.0);
+  EXPECT_GT(json.at("segmentation_ms").get<double>(), 0.0) << "the time is measured, not left at 0";
   std::size_t previous_inliers = std::numeric_limits<std::size_t>::max();
   for (const auto& plane : json.at("planes")) {
     const std::uint32_t id = plane.at("id");
@@ -504,7 +504,7 @@ TEST_F(PcdSegment, RejectsATruncatedCompressedPcd) {
   const std::string full = readFile(path("full.pcd"));
   for (const double fraction : {0.1, 0.5, 0.99}) {
     const std::string name = "cut" + std::to_string(static_cast<int>(fraction * 100)) + ".pcd";
-    writeFile(path(name), full.substr(0, static_cast<std::size_t>(full.size() * fraction)));
+    writeFile(path(name), full.substr(0, static_cast<std::size_t>(static_cast<double>(full.size()) * fraction)));
     SCOPED_TRACE(name);
     expectRejected(path(name).string(), "truncated");
   }
