@@ -187,36 +187,37 @@ class HooverClassifier {
     return parts.size() >= 2 && covers(covered, size) ? parts : std::vector<std::size_t>();
   }
 
+  // Each unclassified region of `wholes` that at least two unclassified regions of `pieces`
+  // split (coveringParts) is classified with its pieces; `found(whole, pieces)` counts it.
+  template <typename Found>
+  void findSplits(std::vector<Region>& wholes, const std::vector<std::vector<Overlap>>& overlaps_of_whole,
+                  std::vector<Region>& pieces, Found found) {
+    for (std::size_t w = 0; w < wholes.size(); ++w) {
+      if (wholes[w].classified) continue;
+      const std::vector<std::size_t> parts = coveringParts(overlaps_of_whole[w], pieces, wholes[w].pixels);
+      if (parts.empty()) continue;
+      wholes[w].classified = true;
+      for (const std::size_t p : parts) pieces[p].classified = true;
+      found(w, parts);
+    }
+  }
+
   // Over-segmentation of g into p1..pk.
   void findOverSegmentations() {
-    for (std::size_t g = 0; g < regions_.gt.size(); ++g) {
-      Region& plane = regions_.gt[g];
-      if (plane.classified) continue;
-      const std::vector<std::size_t> parts =
-          coveringParts(regions_.overlaps_of_gt[g], regions_.segments, plane.pixels);
-      if (parts.empty()) continue;
-      plane.classified = true;
-      for (const std::size_t p : parts) regions_.segments[p].classified = true;
-      scores_.planes[g].hoover = HooverClass::over_segmented;
-      ++scores_.hoover.over;
-    }
+    findSplits(regions_.gt, regions_.overlaps_of_gt, regions_.segments,
+               [this](std::size_t g, const std::vector<std::size_t>&) {
+                 scores_.planes[g].hoover = HooverClass::over_segmented;
+                 ++scores_.hoover.over;
+               });
   }
 
   // Under-segmentation of g1..gk into p: the mirror image.
   void findUnderSegmentations() {
-    for (std::size_t p = 0; p < regions_.segments.size(); ++p) {
-      Region& segment = regions_.segments[p];
-      if (segment.classified) continue;
-      const std::vector<std::size_t> parts =
-          coveringParts(regions_.overlaps_of_segment[p], regions_.gt, segment.pixels);
-      if (parts.empty()) continue;
-      segment.classified = true;
-      for (const std::size_t g : parts) {
-        regions_.gt[g].classified = true;
-        scores_.planes[g].hoover = HooverClass::under_segmented;
-      }
-      ++scores_.hoover.under;
-    }
+    findSplits(regions_.segments, regions_.overlaps_of_segment, regions_.gt,
+               [this](std::size_t, const std::vector<std::size_t>& planes) {
+                 for (const std::size_t g : planes) scores_.planes[g].hoover = HooverClass::under_segmented;
+                 ++scores_.hoover.under;
+               });
   }
 
   Regions regions_;
