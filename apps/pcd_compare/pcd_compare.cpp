@@ -241,6 +241,43 @@ void writeComparisonImage(const Options& options, const InputCloud& input,
                            comparisonImage(panels, input.cloud->width, input.cloud->height));
 }
 
+// floodplane at sub-sampling 1 (from the main table when it ran there), 2, 4 and 8.
+std::vector<std::pair<int, MethodResult>> measureResolutions(const Options& options, Methods& methods,
+                                                             const InputCloud& input, const SceneResult& scene) {
+  std::vector<std::pair<int, MethodResult>> resolutions;
+  const auto floodplane = std::find_if(scene.methods.begin(), scene.methods.end(),
+                                       [](const MethodResult& r) { return r.method == "floodplane"; });
+  if (floodplane != scene.methods.end()) {
+    resolutions.emplace_back(1, *floodplane);
+  } else {
+    const Measured full = measure(*methods.full_resolution, input.cloud, options.repeat);
+    resolutions.emplace_back(1, evaluate("floodplane", full, input, scene.min_points));
+  }
+  for (const auto& [factor, method] : methods.subsampled) {
+    const Measured sub = measure(*method, input.cloud, options.repeat);
+    resolutions.emplace_back(factor, evaluate(method->name(), sub, input, scene.min_points));
+  }
+  return resolutions;
+}
+
+// Each phase's median over the timed runs of the phase timer's instance.
+PhaseResult measurePhases(Method& phase_timer, const InputCloud& input, int repeat) {
+  const Measured timed = measure(phase_timer, input.cloud, repeat);
+  PhaseResult phases;
+  phases.call_median_ms = timed.timing.median_ms;
+  const auto phaseMedian = [&timed](double floodplane::PhaseTimes::*phase) {
+    std::vector<double> times;
+    for (const MethodRun& run : timed.runs) times.push_back((*run.phases).*phase);
+    return median(times);
+  };
+  phases.median.seed_selection = phaseMedian(&floodplane::PhaseTimes::seed_selection);
+  phases.median.flood_fill = phaseMedian(&floodplane::PhaseTimes::flood_fill);
+  phases.median.relabelling = phaseMedian(&floodplane::PhaseTimes::relabelling);
+  phases.median.merging = phaseMedian(&floodplane::PhaseTimes::merging);
+  phases.median.region_output = phaseMedian(&floodplane::PhaseTimes::region_output);
+  return phases;
+}
+
 SceneResult compareScene(const Options& options, Methods& methods, const InputCloud& input) {
   SceneResult scene;
   scene.name = input.name;
@@ -256,40 +293,8 @@ SceneResult compareScene(const Options& options, Methods& methods, const InputCl
     measured.push_back(measure(*method, input.cloud, options.repeat));
     scene.methods.push_back(evaluate(method->name(), measured.back(), input, scene.min_points));
   }
-  if (options.resolutions) {
-    const auto floodplane = std::find_if(scene.methods.begin(), scene.methods.end(),
-                                         [](const MethodResult& r) { return r.method == "floodplane"; });
-    if (floodplane != scene.methods.end()) {
-      scene.resolutions.emplace_back(1, *floodplane);
-    } else {
-      const Measured full = measure(*methods.full_resolution, input.cloud, options.repeat);
-      scene.resolutions.emplace_back(1, evaluate("floodplane", full, input, scene.min_points));
-    }
-    for (const auto& [factor, method] : methods.subsampled) {
-      const Measured sub = measure(*method, input.cloud, options.repeat);
-      scene.resolutions.emplace_back(factor,
-                                     evaluate(method->name(), sub, input, scene.min_points));
-    }
-  }
-  if (methods.phase_timer) {
-    const Measured timed = measure(*methods.phase_timer, input.cloud, options.repeat);
-    PhaseResult phases;
-    phases.call_median_ms = timed.timing.median_ms;
-    std::vector<double> seed, flood, relabel, merge, output;
-    for (const MethodRun& run : timed.runs) {
-      seed.push_back(run.phases->seed_selection);
-      flood.push_back(run.phases->flood_fill);
-      relabel.push_back(run.phases->relabelling);
-      merge.push_back(run.phases->merging);
-      output.push_back(run.phases->region_output);
-    }
-    phases.median.seed_selection = median(seed);
-    phases.median.flood_fill = median(flood);
-    phases.median.relabelling = median(relabel);
-    phases.median.merging = median(merge);
-    phases.median.region_output = median(output);
-    scene.phases = phases;
-  }
+  if (options.resolutions) scene.resolutions = measureResolutions(options, methods, input, scene);
+  if (methods.phase_timer) scene.phases = measurePhases(*methods.phase_timer, input, options.repeat);
   if (!options.png_dir.empty()) {
     std::vector<std::pair<std::string, const MethodRun*>> runs;
     for (std::size_t k = 0; k < methods.selected.size(); ++k) {
