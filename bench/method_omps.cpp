@@ -34,8 +34,9 @@ void runOmps(benchmark::State& state, const Frame& frame) {
 }
 
 void add(const std::string& name, FrameSource frame) {
-  benchmark::RegisterBenchmark(name.c_str(), [frame](benchmark::State& state) { runOmps(state, frame()); })
-      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(name.c_str(), [frame](benchmark::State& state) {
+    runOmps(state, frame());
+  })->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ namespace floodplane::apps {
 struct OmpsSettings {
   static constexpr float max_depth_change_factor = 0.02f;
   static constexpr float normal_smoothing_size = 6.0f;
-  static constexpr double angular_threshold = 0.09;  ///< [rad]
+  static constexpr double angular_threshold = 0.09;   ///< [rad]
   static constexpr double distance_threshold = 0.02;  ///< [m]
   static constexpr unsigned min_inliers = 50;
 };
@@ -61,8 +61,8 @@ void segmentAndRefineAfresh(Omps& omps, OmpsOutputs<PointT>& outputs) {
   outputs.labels->clear();
   outputs.label_indices.clear();
   outputs.boundaries.clear();
-  omps.segmentAndRefine(outputs.regions, outputs.coefficients, outputs.inliers, outputs.labels,
-                        outputs.label_indices, outputs.boundaries);
+  omps.segmentAndRefine(outputs.regions, outputs.coefficients, outputs.inliers, outputs.labels, outputs.label_indices,
+                        outputs.boundaries);
 }
 
 }  // namespace floodplane::apps

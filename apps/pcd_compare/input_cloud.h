@@ -13,7 +13,7 @@ namespace pcd_compare {
 
 struct InputCloud {
   std::string path;
-  std::string name;  ///< the file name without ".pcd", used in tables and image names
+  std::string name;    ///< the file name without ".pcd", used in tables and image names
   std::string sensor;  ///< see sensorModel
   Cloud::Ptr cloud;
   /// The file's `label` field (ground-truth plane id, 0 = none), when it has one.

@@ -27,9 +27,8 @@ class OmpsMethod : public Method {
          << floodplane::apps::OmpsSettings::normal_smoothing_size
          << "; pcl::OrganizedMultiPlaneSegmentation<PointXYZ, Normal, Label>::segmentAndRefine, "
             "angular threshold "
-         << segmentation_.getAngularThreshold() << " rad, distance threshold "
-         << segmentation_.getDistanceThreshold() << " m, min inliers "
-         << segmentation_.getMinInliers() << ", maximum curvature "
+         << segmentation_.getAngularThreshold() << " rad, distance threshold " << segmentation_.getDistanceThreshold()
+         << " m, min inliers " << segmentation_.getMinInliers() << ", maximum curvature "
          << segmentation_.getMaximumCurvature() << " (PCL default); time includes normals";
     return text.str();
   }
@@ -49,8 +48,7 @@ class OmpsMethod : public Method {
 
     MethodRun result;
     result.total_ms = std::chrono::duration<double, std::milli>(end - start).count();
-    result.parts_ms.emplace_back(
-        "normals", std::chrono::duration<double, std::milli>(normals_done - start).count());
+    result.parts_ms.emplace_back("normals", std::chrono::duration<double, std::milli>(normals_done - start).count());
     // OMPS's label cloud numbers connected components, not planes; the planes are the
     // refined inlier sets, so region k becomes label k + 1.
     result.labels.assign(cloud->size(), 0);

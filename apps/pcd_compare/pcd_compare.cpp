@@ -102,8 +102,7 @@ Measured measure(Method& method, const Cloud::ConstPtr& cloud, int repeat) {
   measured.timing.median_ms = median(totals);
   measured.timing.min_ms = *std::min_element(totals.begin(), totals.end());
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    measured.timing.parts_median_ms.emplace_back(measured.first.parts_ms[k].first,
-                                                 median(parts[k]));
+    measured.timing.parts_median_ms.emplace_back(measured.first.parts_ms[k].first, median(parts[k]));
   }
   return measured;
 }
@@ -124,18 +123,17 @@ MethodResult evaluate(const std::string& name, const Measured& measured, const I
     floodplane::eval::MetricsOptions options;
     options.min_points = min_points;
     options.tolerance = kTolerance;
-    result.scores = floodplane::eval::evaluateSegmentation(*input.ground_truth,
-                                                           measured.first.labels, input.valid,
-                                                           options);
+    result.scores =
+        floodplane::eval::evaluateSegmentation(*input.ground_truth, measured.first.labels, input.valid, options);
   }
   return result;
 }
 
 struct Methods {
-  std::vector<std::unique_ptr<Method>> selected;     // in --methods order
+  std::vector<std::unique_ptr<Method>> selected;                    // in --methods order
   std::vector<std::pair<int, std::unique_ptr<Method>>> subsampled;  // floodplane at 2, 4, 8
-  std::unique_ptr<Method> full_resolution;           // floodplane at 1 when not selected
-  std::unique_ptr<Method> phase_timer;               // floodplane with its phase timer
+  std::unique_ptr<Method> full_resolution;                          // floodplane at 1 when not selected
+  std::unique_ptr<Method> phase_timer;                              // floodplane with its phase timer
 };
 
 Methods makeMethods(const Options& options) {
@@ -153,8 +151,8 @@ Methods makeMethods(const Options& options) {
     for (const int factor : {2, 4, 8}) {
       methods.subsampled.emplace_back(factor, makeFloodplaneMethod(factor));
     }
-    const bool have_floodplane = std::find(options.methods.begin(), options.methods.end(),
-                                           "floodplane") != options.methods.end();
+    const bool have_floodplane =
+        std::find(options.methods.begin(), options.methods.end(), "floodplane") != options.methods.end();
     if (!have_floodplane) {
       methods.full_resolution = makeFloodplaneMethod(1);
     }
@@ -167,18 +165,16 @@ Methods makeMethods(const Options& options) {
   return methods;
 }
 
-std::vector<std::pair<std::string, std::string>> configuration(const Options& options,
-                                                               const Methods& methods) {
+std::vector<std::pair<std::string, std::string>> configuration(const Options& options, const Methods& methods) {
   std::vector<std::pair<std::string, std::string>> config;
   config.emplace_back("floodplane", FLOODPLANE_VERSION_STRING);
   config.emplace_back("PCL", PCL_VERSION_PRETTY);
   config.emplace_back("compiler", compilerName());
   config.emplace_back("build type", FLOODPLANE_BUILD_TYPE);
-  config.emplace_back("timing",
-                      "median and min of " + std::to_string(options.repeat) +
-                          " runs after one warm-up, of the segmentation call alone (cloud in "
-                          "memory; OMPS includes its normal estimation), one thread, "
-                          "steady_clock");
+  config.emplace_back("timing", "median and min of " + std::to_string(options.repeat) +
+                                    " runs after one warm-up, of the segmentation call alone (cloud in "
+                                    "memory; OMPS includes its normal estimation), one thread, "
+                                    "steady_clock");
   config.emplace_back("accuracy",
                       "for files with a `label` field: IoU, weighted IoU, Hoover counts "
                       "(T = 0.8) and false-plane fraction as in metrics.md; pixels with NaN xyz "
@@ -193,21 +189,18 @@ std::vector<std::pair<std::string, std::string>> configuration(const Options& op
     config.emplace_back("method " + method->name(), method->parameters());
   }
   if (methods.phase_timer) {
-    config.emplace_back("phases", methods.phase_timer->parameters() +
-                                      "; separate runs, not those of the main table");
+    config.emplace_back("phases", methods.phase_timer->parameters() + "; separate runs, not those of the main table");
   }
   return config;
 }
 
 // Ground truth | ransac | omps | floodplane, whichever of them there are.
 void writeComparisonImage(const Options& options, const InputCloud& input,
-                          const std::vector<std::pair<std::string, const MethodRun*>>& runs,
-                          const SceneResult& scene) {
+                          const std::vector<std::pair<std::string, const MethodRun*>>& runs, const SceneResult& scene) {
   static const std::vector<std::string> kOrder = {"ransac", "omps", "floodplane"};
   std::vector<Panel> panels;
   const std::vector<std::uint32_t> no_ground_truth;
-  const std::vector<std::uint32_t>& ground_truth =
-      input.ground_truth ? *input.ground_truth : no_ground_truth;
+  const std::vector<std::uint32_t>& ground_truth = input.ground_truth ? *input.ground_truth : no_ground_truth;
   if (input.ground_truth) {
     std::vector<std::uint32_t> shown = ground_truth;
     // Pixels without a point show as "no plane", as they do in the predictions.
@@ -229,8 +222,7 @@ void writeComparisonImage(const Options& options, const InputCloud& input,
         text << std::fixed << name << "  IoU " << result.scores->mean_iou;
         title = text.str();
       }
-      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth,
-                                                           input.valid)});
+      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth, input.valid)});
     }
   }
   if (panels.empty()) {
@@ -332,13 +324,12 @@ void addInputAndMethodOptions(CLI::App& app, Options& options, std::string& meth
   // One comma-separated token, split here: a vector option would also swallow the INPUTs
   // that follow it ("--methods omps scene.pcd").
   app.add_option("--methods", method_list, "Methods to run, comma-separated, from floodplane, ransac, omps")
-      ->check(
-          [](const std::string& list) -> std::string {
-            for (const std::string& name : splitList(list)) {
-              if (!isMethodName(name)) return "unknown method '" + name + "' (use floodplane, ransac, omps)";
-            }
-            return splitList(list).empty() ? "no method given" : "";
-          })
+      ->check([](const std::string& list) -> std::string {
+        for (const std::string& name : splitList(list)) {
+          if (!isMethodName(name)) return "unknown method '" + name + "' (use floodplane, ransac, omps)";
+        }
+        return splitList(list).empty() ? "no method given" : "";
+      })
       ->capture_default_str();
   app.add_option("--repeat", options.repeat, "Timed runs per method and file, after one warm-up")
       ->check(CLI::PositiveNumber)

@@ -104,9 +104,7 @@ struct MeanRow {
   }
   double time(double sum) const { return scenes > 0 ? sum / static_cast<double>(scenes) : kNaN; }
   double accuracy(double sum) const { return scored > 0 ? sum / static_cast<double>(scored) : kNaN; }
-  double falsePlanes() const {
-    return with_non_plane > 0 ? false_planes / static_cast<double>(with_non_plane) : kNaN;
-  }
+  double falsePlanes() const { return with_non_plane > 0 ? false_planes / static_cast<double>(with_non_plane) : kNaN; }
   double part(const std::string& name) const {
     const auto found = parts_ms.find(name);
     return found != parts_ms.end() ? time(found->second) : kNaN;
@@ -121,7 +119,7 @@ struct MeanRow {
 // The mean rows of the main table: per method over every scene, and per sensor model and
 // method over the scenes of that sensor model.
 struct Means {
-  std::map<std::string, MeanRow> overall;                             // by method
+  std::map<std::string, MeanRow> overall;                           // by method
   std::map<std::string, std::map<std::string, MeanRow>> by_sensor;  // by sensor, then method
 };
 
@@ -170,17 +168,19 @@ bool anyPart(const Report& report, const std::string& part) {
 
 std::string hooverName(HooverClass hoover) {
   switch (hoover) {
-    case HooverClass::correct: return "correct";
-    case HooverClass::over_segmented: return "over";
-    case HooverClass::under_segmented: return "under";
-    case HooverClass::missed: return "missed";
+    case HooverClass::correct:
+      return "correct";
+    case HooverClass::over_segmented:
+      return "over";
+    case HooverClass::under_segmented:
+      return "under";
+    case HooverClass::missed:
+      return "missed";
   }
   return "missed";
 }
 
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
+nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
 nlohmann::json scoresJson(const SegmentationScores& scores) {
   nlohmann::json planes = nlohmann::json::array();
@@ -220,10 +220,8 @@ nlohmann::json resultJson(const SceneResult& scene, const MethodResult& result) 
 }
 
 const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>> kPhases = {
-    {"seed_selection", &floodplane::PhaseTimes::seed_selection},
-    {"flood_fill", &floodplane::PhaseTimes::flood_fill},
-    {"relabelling", &floodplane::PhaseTimes::relabelling},
-    {"merging", &floodplane::PhaseTimes::merging},
+    {"seed_selection", &floodplane::PhaseTimes::seed_selection}, {"flood_fill", &floodplane::PhaseTimes::flood_fill},
+    {"relabelling", &floodplane::PhaseTimes::relabelling},       {"merging", &floodplane::PhaseTimes::merging},
     {"region_output", &floodplane::PhaseTimes::region_output},
 };
 
@@ -249,16 +247,22 @@ AccuracyCells sceneCells(const SegmentationScores& s) {
 }
 
 AccuracyCells meanCells(const MeanRow& row) {
-  return {row.accuracy(row.mean_iou), row.accuracy(row.weighted_iou), row.accuracy(row.correct),
-          row.accuracy(row.over),     row.accuracy(row.under),        row.accuracy(row.missed),
-          row.accuracy(row.noise),    row.falsePlanes(),              1};
+  return {row.accuracy(row.mean_iou),
+          row.accuracy(row.weighted_iou),
+          row.accuracy(row.correct),
+          row.accuracy(row.over),
+          row.accuracy(row.under),
+          row.accuracy(row.missed),
+          row.accuracy(row.noise),
+          row.falsePlanes(),
+          1};
 }
 
 std::string accuracyCells(const AccuracyCells& c) {
   const int n = c.count_decimals;
   return " " + fixed(c.mean_iou, 3) + " | " + fixed(c.weighted_iou, 3) + " | " + fixed(c.correct, n) + " | " +
-         fixed(c.over, n) + " | " + fixed(c.under, n) + " | " + fixed(c.missed, n) + " | " + fixed(c.noise, n) +
-         " | " + fixed(c.false_planes, 3) + " |";
+         fixed(c.over, n) + " | " + fixed(c.under, n) + " | " + fixed(c.missed, n) + " | " + fixed(c.noise, n) + " | " +
+         fixed(c.false_planes, 3) + " |";
 }
 
 // Which optional column groups the main table has.
@@ -363,8 +367,8 @@ std::string resolutionTable(const Report& report) {
         << " | " << fixed(row.time(row.min_ms), 2) << " | " << fixed(row.time(speedup_sums[factor]), 2) << " | "
         << fixed(row.time(row.planes), 1) << " |";
     if (accuracy) {
-      out << " " << fixed(row.accuracy(row.mean_iou), 3) << " | " << fixed(row.accuracy(row.weighted_iou), 3)
-          << " | " << fixed(row.falsePlanes(), 3) << " |";
+      out << " " << fixed(row.accuracy(row.mean_iou), 3) << " | " << fixed(row.accuracy(row.weighted_iou), 3) << " | "
+          << fixed(row.falsePlanes(), 3) << " |";
     }
     out << "\n";
   }
@@ -432,18 +436,16 @@ std::string csvReport(const Report& report) {
   std::ostringstream out;
   out << "scene,file,method,subsampling,width,height,median_ms,min_ms,ratio_to_floodplane,"
          "normals_ms,planes,mean_iou,weighted_iou,correct,over,under,missed,noise,false_plane_fraction\n";
-  const auto line = [&out](const SceneResult& scene, const MethodResult& result, int factor,
-                           double ratio) {
+  const auto line = [&out](const SceneResult& scene, const MethodResult& result, int factor, double ratio) {
     // Scene names come from file names; quote them in case they hold commas.
-    out << '"' << scene.name << "\",\"" << scene.path << "\"," << result.method << "," << factor
-        << "," << scene.width << "," << scene.height << "," << fixed(result.timing.median_ms, 4)
-        << "," << fixed(result.timing.min_ms, 4) << "," << fixed(ratio, 4) << ","
-        << fixed(partMs(result.timing, "normals"), 4) << "," << result.planes << ",";
+    out << '"' << scene.name << "\",\"" << scene.path << "\"," << result.method << "," << factor << "," << scene.width
+        << "," << scene.height << "," << fixed(result.timing.median_ms, 4) << "," << fixed(result.timing.min_ms, 4)
+        << "," << fixed(ratio, 4) << "," << fixed(partMs(result.timing, "normals"), 4) << "," << result.planes << ",";
     if (result.scores) {
       const auto& s = *result.scores;
-      out << fixed(s.mean_iou, 6) << "," << fixed(s.weighted_iou, 6) << "," << s.hoover.correct
-          << "," << s.hoover.over << "," << s.hoover.under << "," << s.hoover.missed << ","
-          << s.hoover.noise << "," << fixed(s.false_plane_fraction, 6);
+      out << fixed(s.mean_iou, 6) << "," << fixed(s.weighted_iou, 6) << "," << s.hoover.correct << "," << s.hoover.over
+          << "," << s.hoover.under << "," << s.hoover.missed << "," << s.hoover.noise << ","
+          << fixed(s.false_plane_fraction, 6);
     } else {
       out << ",,,,,,,";
     }

@@ -41,7 +41,7 @@ struct SceneResult {
   std::size_t width = 0;
   std::size_t height = 0;
   bool has_ground_truth = false;
-  std::uint32_t min_points = 0;  ///< the metrics' size rule at this resolution
+  std::uint32_t min_points = 0;       ///< the metrics' size rule at this resolution
   std::vector<MethodResult> methods;  ///< in --methods order
   /// floodplane at sub-sampling 1, 2, 4, 8 (--resolutions), with the factor.
   std::vector<std::pair<int, MethodResult>> resolutions;

@@ -195,8 +195,8 @@ bool createOutputDirectory(const fs::path& directory) {
 
 void printResult(const std::string& input, const FileResult& result, const std::string& output) {
   std::cout << fs::path(input).filename().string() << ": " << result.width << "x" << result.height << ", "
-            << result.planes << (result.planes == 1 ? " plane, " : " planes, ") << std::fixed
-            << std::setprecision(1) << result.segmentation_ms << " ms -> " << output << std::endl;
+            << result.planes << (result.planes == 1 ? " plane, " : " planes, ") << std::fixed << std::setprecision(1)
+            << result.segmentation_ms << " ms -> " << output << std::endl;
 }
 
 // Segments every input, going on past failures; returns the number that failed.

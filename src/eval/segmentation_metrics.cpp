@@ -34,8 +34,7 @@ std::map<std::uint32_t, std::size_t> countLabels(const std::vector<std::uint32_t
 }
 
 // The regions at least `min_points` large, by ascending label, and each kept label's index.
-std::vector<Region> keptRegions(const std::map<std::uint32_t, std::size_t>& counts,
-                                std::uint32_t min_points,
+std::vector<Region> keptRegions(const std::map<std::uint32_t, std::size_t>& counts, std::uint32_t min_points,
                                 std::unordered_map<std::uint32_t, std::size_t>& index_of) {
   std::vector<Region> regions;
   for (const auto& [label, pixels] : counts) {
@@ -65,10 +64,9 @@ struct Regions {
 void checkSizes(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
                 const std::vector<std::uint8_t>& valid, const char* function) {
   if (predicted.size() != ground_truth.size() || valid.size() != ground_truth.size()) {
-    throw std::invalid_argument(std::string(function) +
-                                ": ground_truth, predicted and valid must have one size (got " +
-                                std::to_string(ground_truth.size()) + ", " + std::to_string(predicted.size()) +
-                                ", " + std::to_string(valid.size()) + ")");
+    throw std::invalid_argument(std::string(function) + ": ground_truth, predicted and valid must have one size (got " +
+                                std::to_string(ground_truth.size()) + ", " + std::to_string(predicted.size()) + ", " +
+                                std::to_string(valid.size()) + ")");
   }
 }
 
@@ -142,7 +140,8 @@ class HooverClassifier {
     findOverSegmentations();
     findUnderSegmentations();
     const auto unclassified = [](const Region& r) { return !r.classified; };
-    scores_.hoover.missed = static_cast<std::size_t>(std::count_if(regions_.gt.begin(), regions_.gt.end(), unclassified));
+    scores_.hoover.missed =
+        static_cast<std::size_t>(std::count_if(regions_.gt.begin(), regions_.gt.end(), unclassified));
     scores_.hoover.noise =
         static_cast<std::size_t>(std::count_if(regions_.segments.begin(), regions_.segments.end(), unclassified));
   }

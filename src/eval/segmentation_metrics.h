@@ -28,10 +28,10 @@ enum class HooverClass { correct, over_segmented, under_segmented, missed };
 
 /// One kept ground-truth plane.
 struct PlaneScore {
-  std::uint32_t label = 0;            ///< its ground-truth label
-  std::size_t pixels = 0;             ///< |g|, valid pixels only
-  double iou = 0.0;                   ///< max over kept predicted segments of |g n p| / |g u p|
-  std::uint32_t best_segment = 0;     ///< the predicted label reaching `iou`; 0 if none overlaps
+  std::uint32_t label = 0;         ///< its ground-truth label
+  std::size_t pixels = 0;          ///< |g|, valid pixels only
+  double iou = 0.0;                ///< max over kept predicted segments of |g n p| / |g u p|
+  std::uint32_t best_segment = 0;  ///< the predicted label reaching `iou`; 0 if none overlaps
   HooverClass hoover = HooverClass::missed;
 };
 
@@ -47,8 +47,8 @@ struct HooverCounts {
 };
 
 struct SegmentationScores {
-  std::vector<PlaneScore> planes;        ///< kept ground-truth planes, by ascending label
-  std::size_t predicted_segments = 0;    ///< kept predicted segments
+  std::vector<PlaneScore> planes;      ///< kept ground-truth planes, by ascending label
+  std::size_t predicted_segments = 0;  ///< kept predicted segments
   /// Averages of PlaneScore::iou, plain and weighted by |g|. NaN when no plane is kept:
   /// there is nothing to average, and 0 would read as "found nothing".
   double mean_iou = 0.0;
@@ -64,8 +64,7 @@ struct SegmentationScores {
 /// NaN when there is no valid pixel of ground-truth label 0: undefined, not 0, so that such
 /// clouds are left out of averages. IoU and the Hoover counts do not see these errors.
 /// Throws std::invalid_argument if the three vectors differ in size.
-double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth,
-                          const std::vector<std::uint32_t>& predicted,
+double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
                           const std::vector<std::uint8_t>& valid, std::uint32_t min_points);
 
 /// Compares `predicted` with `ground_truth`, both row-major label grids of one size, label 0

@@ -30,9 +30,7 @@ namespace fs = std::filesystem;
 // wrong in one line, so PCL is silenced while it reads and restored after.
 class QuietPcl {
  public:
-  QuietPcl() : previous_(pcl::console::getVerbosityLevel()) {
-    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-  }
+  QuietPcl() : previous_(pcl::console::getVerbosityLevel()) { pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS); }
   ~QuietPcl() { pcl::console::setVerbosityLevel(previous_); }
   QuietPcl(const QuietPcl&) = delete;
   QuietPcl& operator=(const QuietPcl&) = delete;
@@ -159,8 +157,8 @@ RawCloud readRawCloud(const std::string& path) {
       fail("not a PCD file, or its header is invalid (no fields)");
     }
     if (std::uint64_t{raw.cloud.width} * raw.cloud.height == 0) {
-      fail("the cloud has no points (" + std::to_string(raw.cloud.width) + " x " +
-           std::to_string(raw.cloud.height) + ")");
+      fail("the cloud has no points (" + std::to_string(raw.cloud.width) + " x " + std::to_string(raw.cloud.height) +
+           ")");
     }
     if (data_index > file_size) fail("truncated PCD file: the header is incomplete");
     checkBodySize(path, file_size, data_type, data_index, raw.cloud);

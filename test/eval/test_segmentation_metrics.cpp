@@ -56,8 +56,8 @@ SegmentationScores score(const std::vector<std::string>& gt, const std::vector<s
   return evaluateSegmentation(g, grid(pred), allValid(g.size()), options);
 }
 
-void expectCounts(const SegmentationScores& s, std::size_t correct, std::size_t over,
-                  std::size_t under, std::size_t missed, std::size_t noise) {
+void expectCounts(const SegmentationScores& s, std::size_t correct, std::size_t over, std::size_t under,
+                  std::size_t missed, std::size_t noise) {
   EXPECT_EQ(s.hoover.correct, correct);
   EXPECT_EQ(s.hoover.over, over);
   EXPECT_EQ(s.hoover.under, under);
@@ -224,10 +224,8 @@ TEST(SegmentationMetrics, ToleranceOutsideHooversRangeIsRejected) {
 }
 
 TEST(SegmentationMetrics, GridsOfDifferentSizesAreRejected) {
-  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"111"}), allValid(2)),
-               std::invalid_argument);
-  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"11"}), allValid(3)),
-               std::invalid_argument);
+  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"111"}), allValid(2)), std::invalid_argument);
+  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"11"}), allValid(3)), std::invalid_argument);
 }
 
 TEST(SegmentationMetrics, FalsePlaneFractionIsTheShareOfNonPlanePixelsInASegment) {

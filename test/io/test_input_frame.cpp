@@ -63,10 +63,9 @@ class InputFrame : public ::testing::Test {
 
   // A header of x y z floats announcing `width` x `height` points, then `data`.
   void writeHeader(const std::string& encoding, int width, int height, const std::string& data) const {
-    writeBytes(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " +
-                          std::to_string(width) + "\nHEIGHT " + std::to_string(height) +
-                          "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(width * height) + "\nDATA " +
-                          encoding + "\n" + data);
+    writeBytes(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " + std::to_string(width) +
+                          "\nHEIGHT " + std::to_string(height) + "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
+                          std::to_string(width * height) + "\nDATA " + encoding + "\n" + data);
   }
 
   const fs::path path_ = floodplane::test::uniqueTempPath(".pcd");
@@ -117,8 +116,9 @@ TEST_F(InputFrame, ReadsTheLabelFieldAsGroundTruth) {
 }
 
 TEST_F(InputFrame, IgnoresALabelFieldThatIsNotAnUnsignedInteger) {
-  std::string text = "VERSION 0.7\nFIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 2\n"
-                     "HEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n";
+  std::string text =
+      "VERSION 0.7\nFIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 2\n"
+      "HEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n";
   for (int i = 0; i < 4; ++i) text += "0 0 1 2.5\n";
   writeBytes(path_, text);
   const auto frame = loadInputFrame(path_.string());
@@ -127,8 +127,9 @@ TEST_F(InputFrame, IgnoresALabelFieldThatIsNotAnUnsignedInteger) {
 }
 
 TEST_F(InputFrame, ReadsDoublePrecisionCoordinates) {
-  std::string text = "VERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 3\n"
-                     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 12\nDATA ascii\n";
+  std::string text =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 3\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 12\nDATA ascii\n";
   for (int i = 0; i < 12; ++i) text += std::to_string(0.25 * i) + " 0.5 1.5\n";
   writeBytes(path_, text);
   const auto frame = loadInputFrame(path_.string());
@@ -204,8 +205,9 @@ TEST_F(InputFrame, RejectsACloudWithoutXyz) {
 }
 
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
-  std::string text = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
-                     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  std::string text =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
   writeBytes(path_, text);
   expectRejected("not a single float or double");
 }

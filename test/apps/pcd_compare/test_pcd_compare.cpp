@@ -40,8 +40,8 @@ class PcdCompare : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("pcd_compare_test_" + std::string(info->name()) + "_" +
-                                        std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() /
+           ("pcd_compare_test_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -51,8 +51,8 @@ class PcdCompare : public ::testing::Test {
   Outcome run(const std::string& arguments) const {
     const fs::path out = dir_ / "stdout.txt";
     const fs::path err = dir_ / "stderr.txt";
-    const std::string command = quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" +
-                                quoted(out.string()) + " 2>" + quoted(err.string());
+    const std::string command =
+        quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
     const int status = std::system(command.c_str());
     Outcome outcome;
     outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -83,8 +83,7 @@ void expectIouAveragesOfThePlanes(const nlohmann::json& result, const std::strin
 int rowCount(const std::string& markdown, const std::string& scene, const std::string& method) {
   const std::string row = "| " + scene + " | " + method + " |";
   int count = 0;
-  for (std::size_t at = markdown.find(row); at != std::string::npos;
-       at = markdown.find(row, at + 1)) {
+  for (std::size_t at = markdown.find(row); at != std::string::npos; at = markdown.find(row, at + 1)) {
     ++count;
   }
   return count;
@@ -94,8 +93,7 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
   const fs::path json_file = dir_ / "out.json";
   const fs::path csv_file = dir_ / "out.csv";
   const Outcome outcome = run("--repeat 2 --json " + quoted(json_file.string()) + " --csv " +
-                              quoted(csv_file.string()) + " " + quoted(kTabletop) + " " +
-                              quoted(kStaircase));
+                              quoted(csv_file.string()) + " " + quoted(kTabletop) + " " + quoted(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   for (const std::string method : {"floodplane", "ransac", "omps"}) {
     EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", method), 1) << method;
@@ -127,8 +125,7 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
       for (const auto& plane : result["per_plane"]) {
         classified += plane["hoover"] == "missed" ? 0 : 1;
       }
-      EXPECT_EQ(classified + hoover["missed"].get<std::size_t>(),
-                result["ground_truth_planes"].get<std::size_t>())
+      EXPECT_EQ(classified + hoover["missed"].get<std::size_t>(), result["ground_truth_planes"].get<std::size_t>())
           << method;
     }
     EXPECT_DOUBLE_EQ(scene["methods"]["floodplane"]["ratio_to_floodplane"].get<double>(), 1.0);
@@ -179,8 +176,7 @@ TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
 
 TEST_F(PcdCompare, MissingFileIsReportedByNameAndTheOtherFilesAreStillCompared) {
   const std::string missing = (dir_ / "no_such_scene.pcd").string();
-  const Outcome outcome =
-      run("--repeat 2 --methods floodplane " + quoted(missing) + " " + quoted(kStaircase));
+  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(missing) + " " + quoted(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
   EXPECT_NE(outcome.err.find(missing + ": no such file"), std::string::npos) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1) << outcome.out;
@@ -199,16 +195,12 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
   const fs::path no_xyz = dir_ / "labels_only.pcd";
   pcl::io::savePCDFileBinary(no_xyz.string(), labels_only);
 
-  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(text.string()) + " " +
-                              quoted(flat.string()) + " " + quoted(no_xyz.string()) + " " +
-                              quoted(kStaircase));
+  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(text.string()) + " " + quoted(flat.string()) +
+                              " " + quoted(no_xyz.string()) + " " + quoted(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
-  EXPECT_NE(outcome.err.find(text.string() + ": not a PCD file"), std::string::npos)
-      << outcome.err;
-  EXPECT_NE(outcome.err.find(flat.string() + ": unorganized cloud"), std::string::npos)
-      << outcome.err;
-  EXPECT_NE(outcome.err.find(no_xyz.string() + ": the cloud has no x y z fields"), std::string::npos)
-      << outcome.err;
+  EXPECT_NE(outcome.err.find(text.string() + ": not a PCD file"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find(flat.string() + ": unorganized cloud"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find(no_xyz.string() + ": the cloud has no x y z fields"), std::string::npos) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
 }
 
@@ -238,14 +230,15 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
 TEST_F(PcdCompare, OmpsOverAWholeSceneBatchFinishesAndEachSceneIsIndependent) {
   const fs::path alone_json = dir_ / "alone.json";
   const fs::path batch_json = dir_ / "batch.json";
-  const Outcome batch = run("--quiet --repeat 3 --methods omps --json " + quoted(batch_json.string()) +
-                            " " + quoted(FLOODPLANE_RENDERED_DIR));
+  const Outcome batch = run("--quiet --repeat 3 --methods omps --json " + quoted(batch_json.string()) + " " +
+                            quoted(FLOODPLANE_RENDERED_DIR));
   ASSERT_EQ(batch.exit_code, 0) << batch.err;
   const nlohmann::json scenes = nlohmann::json::parse(readFile(batch_json))["scenes"];
   ASSERT_GE(scenes.size(), 10u);
   const std::string last_scene = std::string(FLOODPLANE_RENDERED_DIR) + "/tabletop.none.pcd";
-  ASSERT_EQ(run("--quiet --repeat 3 --methods omps --json " + quoted(alone_json.string()) + " " +
-                quoted(last_scene)).exit_code, 0);
+  ASSERT_EQ(run("--quiet --repeat 3 --methods omps --json " + quoted(alone_json.string()) + " " + quoted(last_scene))
+                .exit_code,
+            0);
   const nlohmann::json alone = nlohmann::json::parse(readFile(alone_json))["scenes"][0];
   bool found = false;
   for (const auto& scene : scenes) {
@@ -266,8 +259,8 @@ TEST_F(PcdCompare, CloudWithoutLabelsGivesRuntimeOnly) {
   const fs::path file = dir_ / "unlabelled.pcd";
   pcl::io::savePCDFileBinary(file.string(), xyz);
   const fs::path json_file = dir_ / "out.json";
-  const Outcome outcome = run("--repeat 2 --methods floodplane,omps --json " +
-                              quoted(json_file.string()) + " " + quoted(file.string()));
+  const Outcome outcome =
+      run("--repeat 2 --methods floodplane,omps --json " + quoted(json_file.string()) + " " + quoted(file.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "unlabelled", "floodplane"), 1);
   EXPECT_EQ(outcome.out.find("mean IoU"), std::string::npos);
@@ -308,8 +301,8 @@ TEST_F(PcdCompare, AveragesPerSensorModelNamedInTheFileName) {
 
 TEST_F(PcdCompare, PngShowsGroundTruthAndEachMethodSideBySide) {
   const fs::path png_dir = dir_ / "images";
-  const Outcome outcome = run("--repeat 2 --quiet --methods floodplane,omps --png " +
-                              quoted(png_dir.string()) + " " + quoted(kStaircase));
+  const Outcome outcome =
+      run("--repeat 2 --quiet --methods floodplane,omps --png " + quoted(png_dir.string()) + " " + quoted(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::string png = readFile(png_dir / "staircase.none.png");
   ASSERT_GT(png.size(), 24u);
