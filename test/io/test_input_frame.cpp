@@ -212,4 +212,35 @@ TEST_F(InputFrame, RejectsIntegerCoordinates) {
   expectRejected("not a single float or double");
 }
 
+// The checks only reject: on real sensor frames the reader gives what PCL's own loader gives.
+TEST(InputFrameOfRealData, AgreesWithPclsLoaderOnEveryRealFrame) {
+  const fs::path folder(FLOODPLANE_REAL_DATA_DIR);
+  if (!fs::is_directory(folder)) GTEST_SKIP() << "no real data at " << FLOODPLANE_REAL_DATA_DIR;
+  std::size_t frames = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path().extension() != ".pcd") continue;
+    SCOPED_TRACE(entry.path().string());
+    ++frames;
+    pcl::PointCloud<pcl::PointXYZRGBA> expected;
+    ASSERT_EQ(pcl::io::loadPCDFile(entry.path().string(), expected), 0);
+    const auto frame = loadInputFrame(entry.path().string());
+    ASSERT_EQ(frame.xyz.width, expected.width);
+    ASSERT_EQ(frame.xyz.height, expected.height);
+    ASSERT_TRUE(frame.xyzrgb.has_value()) << "the real frames have colour";
+    EXPECT_TRUE(frame.xyz.sensor_orientation_.isApprox(expected.sensor_orientation_));
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      const auto& p = expected[i];
+      if (!std::isfinite(p.z)) {
+        ASSERT_FALSE(std::isfinite(frame.xyz[i].z)) << i;
+        continue;
+      }
+      ASSERT_EQ(frame.xyz[i].x, p.x) << i;
+      ASSERT_EQ(frame.xyz[i].y, p.y) << i;
+      ASSERT_EQ(frame.xyz[i].z, p.z) << i;
+      ASSERT_EQ((*frame.xyzrgb)[i].rgba, p.rgba) << i;
+    }
+  }
+  EXPECT_GT(frames, 0u) << "the folder holds no .pcd file";
+}
+
 }  // namespace
