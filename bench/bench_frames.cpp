@@ -1,13 +1,14 @@
 #include "bench_frames.h"
 
 #include <pcl/common/io.h>
-#include <pcl/io/pcd_io.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
 
+#include "io/input_files.h"
+#include "io/input_frame.h"
 #include "synth/point_cloud.h"
 #include "synth/renderer.h"
 #include "synth/scene_file.h"
@@ -19,16 +20,16 @@ namespace fs = std::filesystem;
 const std::vector<Frame>& realFrames() {
   static const std::vector<Frame> frames = [] {
     std::vector<Frame> loaded;
-    const fs::path folder(FLOODPLANE_REAL_DATA_DIR);
-    if (!fs::is_directory(folder)) return loaded;
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(folder))
-      if (entry.path().extension() == ".pcd") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    for (const fs::path& file : files) {
-      Frame frame{file.stem().string(), pcl::PointCloud<pcl::PointXYZ>::Ptr(new pcl::PointCloud<pcl::PointXYZ>)};
-      if (pcl::io::loadPCDFile(file.string(), *frame.cloud) != 0) throw std::runtime_error("cannot read " + file.string());
-      loaded.push_back(std::move(frame));
+    if (!fs::is_directory(FLOODPLANE_REAL_DATA_DIR)) return loaded;
+    for (const io::InputFile& file : io::expandInputs({FLOODPLANE_REAL_DATA_DIR})) {
+      try {
+        if (!file.error.empty()) throw std::runtime_error(file.error);
+        io::InputFrame frame = io::loadInputFrame(file.path);
+        loaded.push_back({fs::path(file.path).stem().string(),
+                          std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(std::move(frame.xyz))});
+      } catch (const std::runtime_error& error) {
+        throw std::runtime_error("cannot read " + file.path + ": " + error.what());
+      }
     }
     return loaded;
   }();

@@ -1,6 +1,6 @@
 #pragma once
-// Reading the inputs: PCD files, or directories of them, into an XYZ cloud plus the
-// ground-truth labels when the file has a `label` field.
+// One input as pcd_compare compares it: the frame's points, the ground-truth labels when the
+// file has a `label` field, and which pixels the metrics count.
 
 #include <cstdint>
 #include <optional>
@@ -13,7 +13,8 @@ namespace pcd_compare {
 
 struct InputCloud {
   std::string path;
-  std::string name;  ///< the file name without ".pcd", used in tables and image names
+  std::string name;    ///< the file name without ".pcd", used in tables and image names
+  std::string sensor;  ///< see sensorModel
   Cloud::Ptr cloud;
   /// The file's `label` field (ground-truth plane id, 0 = none), when it has one.
   std::optional<std::vector<std::uint32_t>> ground_truth;
@@ -21,13 +22,14 @@ struct InputCloud {
   std::vector<std::uint8_t> valid;
 };
 
-/// The PCD files named by `inputs`: files as given, directories replaced by their *.pcd
-/// files in sorted order. Paths that do not exist are kept, so that loading reports them.
-std::vector<std::string> expandInputs(const std::vector<std::string>& inputs);
+/// The sensor model a file named <scene>.<sensor>.pcd was rendered or recorded with (none,
+/// kinect, scanner, ...): whatever follows the last dot of the name without ".pcd". Empty
+/// when there is no dot, or when digits alone follow it (a time stamp's fraction of a second).
+std::string sensorModel(const std::string& path);
 
-/// Loads an organized cloud with x, y and z fields. Throws std::runtime_error with a
-/// one-line message naming the file if it is missing, not a readable PCD file, not
-/// organized, or has no x, y, z.
+/// Loads an organized cloud through floodplane::io::loadInputFrame. Throws
+/// std::runtime_error with a one-line reason (without the path) if the file cannot be read
+/// as a frame, or if its grid is a single column, which PCL's methods cannot take.
 InputCloud loadInputCloud(const std::string& path);
 
 }  // namespace pcd_compare

@@ -1,5 +1,5 @@
 // PCL's OrganizedMultiPlaneSegmentation with integral-image normals, as in PCL's own
-// organized segmentation demo.
+// organized segmentation demo (settings and the call in common/omps_run.h).
 
 #include <pcl/features/integral_image_normal.h>
 #include <pcl/segmentation/organized_multi_plane_segmentation.h>
@@ -7,41 +7,28 @@
 #include <chrono>
 #include <sstream>
 
+#include "common/omps_run.h"
 #include "method.h"
 
 namespace pcd_compare {
 
 namespace {
 
-constexpr float kMaxDepthChangeFactor = 0.02f;
-constexpr float kNormalSmoothingSize = 6.0f;
-constexpr double kAngularThreshold = 0.09;  // [rad]
-constexpr double kDistanceThreshold = 0.02;  // [m]
-constexpr unsigned kMinInliers = 50;
-
 class OmpsMethod : public Method {
  public:
-  OmpsMethod() {
-    normal_estimation_.setNormalEstimationMethod(
-        pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal>::AVERAGE_3D_GRADIENT);
-    normal_estimation_.setMaxDepthChangeFactor(kMaxDepthChangeFactor);
-    normal_estimation_.setNormalSmoothingSize(kNormalSmoothingSize);
-    segmentation_.setMinInliers(kMinInliers);
-    segmentation_.setAngularThreshold(kAngularThreshold);
-    segmentation_.setDistanceThreshold(kDistanceThreshold);
-  }
+  OmpsMethod() { floodplane::apps::configureOmps(normal_estimation_, segmentation_); }
 
   std::string name() const override { return "omps"; }
 
   std::string parameters() const override {
     std::ostringstream text;
     text << "pcl::IntegralImageNormalEstimation AVERAGE_3D_GRADIENT, max depth change factor "
-         << kMaxDepthChangeFactor << ", normal smoothing size " << kNormalSmoothingSize
+         << floodplane::apps::OmpsSettings::max_depth_change_factor << ", normal smoothing size "
+         << floodplane::apps::OmpsSettings::normal_smoothing_size
          << "; pcl::OrganizedMultiPlaneSegmentation<PointXYZ, Normal, Label>::segmentAndRefine, "
             "angular threshold "
-         << segmentation_.getAngularThreshold() << " rad, distance threshold "
-         << segmentation_.getDistanceThreshold() << " m, min inliers "
-         << segmentation_.getMinInliers() << ", maximum curvature "
+         << segmentation_.getAngularThreshold() << " rad, distance threshold " << segmentation_.getDistanceThreshold()
+         << " m, min inliers " << segmentation_.getMinInliers() << ", maximum curvature "
          << segmentation_.getMaximumCurvature() << " (PCL default); time includes normals";
     return text.str();
   }
@@ -56,29 +43,17 @@ class OmpsMethod : public Method {
 
     segmentation_.setInputNormals(normals);
     segmentation_.setInputCloud(cloud);
-    auto labels = std::make_shared<pcl::PointCloud<pcl::Label>>();
-    // PCL 1.13's segment() appends to the coefficient and inlier vectors it is given, and
-    // refine() then indexes its per-label tables with the stale entries' labels: past their
-    // end on the next cloud (heap corruption, seen as "double free or corruption" several
-    // files into a batch). Every output starts empty.
-    regions_.clear();
-    coefficients_.clear();
-    inliers_.clear();
-    label_indices_.clear();
-    boundaries_.clear();
-    segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels, label_indices_,
-                                   boundaries_);
+    floodplane::apps::segmentAndRefineAfresh(segmentation_, outputs_);
     const auto end = Clock::now();
 
     MethodRun result;
     result.total_ms = std::chrono::duration<double, std::milli>(end - start).count();
-    result.parts_ms.emplace_back(
-        "normals", std::chrono::duration<double, std::milli>(normals_done - start).count());
+    result.parts_ms.emplace_back("normals", std::chrono::duration<double, std::milli>(normals_done - start).count());
     // OMPS's label cloud numbers connected components, not planes; the planes are the
     // refined inlier sets, so region k becomes label k + 1.
     result.labels.assign(cloud->size(), 0);
-    for (std::size_t k = 0; k < inliers_.size(); ++k) {
-      for (const pcl::index_t index : inliers_[k].indices) {
+    for (std::size_t k = 0; k < outputs_.inliers.size(); ++k) {
+      for (const pcl::index_t index : outputs_.inliers[k].indices) {
         result.labels[static_cast<std::size_t>(index)] = static_cast<std::uint32_t>(k + 1);
       }
     }
@@ -88,13 +63,7 @@ class OmpsMethod : public Method {
  private:
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation_;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> segmentation_;
-  std::vector<pcl::PlanarRegion<pcl::PointXYZ>,
-              Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>
-      regions_;
-  std::vector<pcl::ModelCoefficients> coefficients_;
-  std::vector<pcl::PointIndices> inliers_;
-  std::vector<pcl::PointIndices> label_indices_;
-  std::vector<pcl::PointIndices> boundaries_;
+  floodplane::apps::OmpsOutputs<pcl::PointXYZ> outputs_;
 };
 
 }  // namespace

@@ -1,6 +1,6 @@
 // pcd_compare: runs floodplane, PCL's sequential RANSAC and PCL's OrganizedMultiPlaneSegmentation
 // on organized PCD files and reports their runtime and, where the file carries ground-truth
-// labels, their accuracy (metrics of /work/shared/reference/metrics.md, floodplane_eval).
+// labels, their accuracy (the project's metrics.md definitions, floodplane_eval).
 // Argument parsing, the timing protocol and output only; the methods are in *_method.cpp.
 
 #include <CLI/CLI.hpp>
@@ -12,17 +12,21 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/cli.h"
 #include "comparison_image.h"
 #include "eval/segmentation_metrics.h"
 #include "io/atomic_file.h"
 #include "io/png_file.h"
 #include "floodplane/version.h"
 #include "input_cloud.h"
+#include "io/input_files.h"
 #include "method.h"
 #include "report.h"
 
@@ -98,8 +102,7 @@ Measured measure(Method& method, const Cloud::ConstPtr& cloud, int repeat) {
   measured.timing.median_ms = median(totals);
   measured.timing.min_ms = *std::min_element(totals.begin(), totals.end());
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    measured.timing.parts_median_ms.emplace_back(measured.first.parts_ms[k].first,
-                                                 median(parts[k]));
+    measured.timing.parts_median_ms.emplace_back(measured.first.parts_ms[k].first, median(parts[k]));
   }
   return measured;
 }
@@ -120,18 +123,17 @@ MethodResult evaluate(const std::string& name, const Measured& measured, const I
     floodplane::eval::MetricsOptions options;
     options.min_points = min_points;
     options.tolerance = kTolerance;
-    result.scores = floodplane::eval::evaluateSegmentation(*input.ground_truth,
-                                                           measured.first.labels, input.valid,
-                                                           options);
+    result.scores =
+        floodplane::eval::evaluateSegmentation(*input.ground_truth, measured.first.labels, input.valid, options);
   }
   return result;
 }
 
 struct Methods {
-  std::vector<std::unique_ptr<Method>> selected;     // in --methods order
+  std::vector<std::unique_ptr<Method>> selected;                    // in --methods order
   std::vector<std::pair<int, std::unique_ptr<Method>>> subsampled;  // floodplane at 2, 4, 8
-  std::unique_ptr<Method> full_resolution;           // floodplane at 1 when not selected
-  std::unique_ptr<Method> phase_timer;               // floodplane with its phase timer
+  std::unique_ptr<Method> full_resolution;                          // floodplane at 1 when not selected
+  std::unique_ptr<Method> phase_timer;                              // floodplane with its phase timer
 };
 
 Methods makeMethods(const Options& options) {
@@ -149,8 +151,8 @@ Methods makeMethods(const Options& options) {
     for (const int factor : {2, 4, 8}) {
       methods.subsampled.emplace_back(factor, makeFloodplaneMethod(factor));
     }
-    const bool have_floodplane = std::find(options.methods.begin(), options.methods.end(),
-                                           "floodplane") != options.methods.end();
+    const bool have_floodplane =
+        std::find(options.methods.begin(), options.methods.end(), "floodplane") != options.methods.end();
     if (!have_floodplane) {
       methods.full_resolution = makeFloodplaneMethod(1);
     }
@@ -163,23 +165,22 @@ Methods makeMethods(const Options& options) {
   return methods;
 }
 
-std::vector<std::pair<std::string, std::string>> configuration(const Options& options,
-                                                               const Methods& methods) {
+std::vector<std::pair<std::string, std::string>> configuration(const Options& options, const Methods& methods) {
   std::vector<std::pair<std::string, std::string>> config;
   config.emplace_back("floodplane", FLOODPLANE_VERSION_STRING);
   config.emplace_back("PCL", PCL_VERSION_PRETTY);
   config.emplace_back("compiler", compilerName());
   config.emplace_back("build type", FLOODPLANE_BUILD_TYPE);
-  config.emplace_back("timing",
-                      "median and min of " + std::to_string(options.repeat) +
-                          " runs after one warm-up, of the segmentation call alone (cloud in "
-                          "memory; OMPS includes its normal estimation), one thread, "
-                          "steady_clock");
+  config.emplace_back("timing", "median and min of " + std::to_string(options.repeat) +
+                                    " runs after one warm-up, of the segmentation call alone (cloud in "
+                                    "memory; OMPS includes its normal estimation), one thread, "
+                                    "steady_clock");
   config.emplace_back("accuracy",
-                      "for files with a `label` field: IoU, weighted IoU and Hoover counts "
-                      "(T = 0.8) as in metrics.md; pixels with NaN xyz ignored; planes and "
-                      "segments below round(500 * W*H / (640*480)) pixels ignored; labels of "
-                      "the warm-up run");
+                      "for files with a `label` field: IoU, weighted IoU, Hoover counts "
+                      "(T = 0.8) and false-plane fraction as in metrics.md; pixels with NaN xyz "
+                      "ignored; planes and segments below round(500 * W*H / (640*480)) pixels "
+                      "ignored; labels of the warm-up run; means per method, and per sensor "
+                      "model for files named <scene>.<sensor>.pcd");
   for (const auto& method : methods.selected) {
     config.emplace_back("method " + method->name(), method->parameters());
   }
@@ -188,21 +189,18 @@ std::vector<std::pair<std::string, std::string>> configuration(const Options& op
     config.emplace_back("method " + method->name(), method->parameters());
   }
   if (methods.phase_timer) {
-    config.emplace_back("phases", methods.phase_timer->parameters() +
-                                      "; separate runs, not those of the main table");
+    config.emplace_back("phases", methods.phase_timer->parameters() + "; separate runs, not those of the main table");
   }
   return config;
 }
 
 // Ground truth | ransac | omps | floodplane, whichever of them there are.
 void writeComparisonImage(const Options& options, const InputCloud& input,
-                          const std::vector<std::pair<std::string, const MethodRun*>>& runs,
-                          const SceneResult& scene) {
+                          const std::vector<std::pair<std::string, const MethodRun*>>& runs, const SceneResult& scene) {
   static const std::vector<std::string> kOrder = {"ransac", "omps", "floodplane"};
   std::vector<Panel> panels;
   const std::vector<std::uint32_t> no_ground_truth;
-  const std::vector<std::uint32_t>& ground_truth =
-      input.ground_truth ? *input.ground_truth : no_ground_truth;
+  const std::vector<std::uint32_t>& ground_truth = input.ground_truth ? *input.ground_truth : no_ground_truth;
   if (input.ground_truth) {
     std::vector<std::uint32_t> shown = ground_truth;
     // Pixels without a point show as "no plane", as they do in the predictions.
@@ -224,8 +222,7 @@ void writeComparisonImage(const Options& options, const InputCloud& input,
         text << std::fixed << name << "  IoU " << result.scores->mean_iou;
         title = text.str();
       }
-      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth,
-                                                           input.valid)});
+      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth, input.valid)});
     }
   }
   if (panels.empty()) {
@@ -236,10 +233,48 @@ void writeComparisonImage(const Options& options, const InputCloud& input,
                            comparisonImage(panels, input.cloud->width, input.cloud->height));
 }
 
+// floodplane at sub-sampling 1 (from the main table when it ran there), 2, 4 and 8.
+std::vector<std::pair<int, MethodResult>> measureResolutions(const Options& options, Methods& methods,
+                                                             const InputCloud& input, const SceneResult& scene) {
+  std::vector<std::pair<int, MethodResult>> resolutions;
+  const auto floodplane = std::find_if(scene.methods.begin(), scene.methods.end(),
+                                       [](const MethodResult& r) { return r.method == "floodplane"; });
+  if (floodplane != scene.methods.end()) {
+    resolutions.emplace_back(1, *floodplane);
+  } else {
+    const Measured full = measure(*methods.full_resolution, input.cloud, options.repeat);
+    resolutions.emplace_back(1, evaluate("floodplane", full, input, scene.min_points));
+  }
+  for (const auto& [factor, method] : methods.subsampled) {
+    const Measured sub = measure(*method, input.cloud, options.repeat);
+    resolutions.emplace_back(factor, evaluate(method->name(), sub, input, scene.min_points));
+  }
+  return resolutions;
+}
+
+// Each phase's median over the timed runs of the phase timer's instance.
+PhaseResult measurePhases(Method& phase_timer, const InputCloud& input, int repeat) {
+  const Measured timed = measure(phase_timer, input.cloud, repeat);
+  PhaseResult phases;
+  phases.call_median_ms = timed.timing.median_ms;
+  const auto phaseMedian = [&timed](double floodplane::PhaseTimes::*phase) {
+    std::vector<double> times;
+    for (const MethodRun& run : timed.runs) times.push_back((*run.phases).*phase);
+    return median(times);
+  };
+  phases.median.seed_selection = phaseMedian(&floodplane::PhaseTimes::seed_selection);
+  phases.median.flood_fill = phaseMedian(&floodplane::PhaseTimes::flood_fill);
+  phases.median.relabelling = phaseMedian(&floodplane::PhaseTimes::relabelling);
+  phases.median.merging = phaseMedian(&floodplane::PhaseTimes::merging);
+  phases.median.region_output = phaseMedian(&floodplane::PhaseTimes::region_output);
+  return phases;
+}
+
 SceneResult compareScene(const Options& options, Methods& methods, const InputCloud& input) {
   SceneResult scene;
   scene.name = input.name;
   scene.path = input.path;
+  scene.sensor = input.sensor;
   scene.width = input.cloud->width;
   scene.height = input.cloud->height;
   scene.has_ground_truth = input.ground_truth.has_value();
@@ -250,40 +285,8 @@ SceneResult compareScene(const Options& options, Methods& methods, const InputCl
     measured.push_back(measure(*method, input.cloud, options.repeat));
     scene.methods.push_back(evaluate(method->name(), measured.back(), input, scene.min_points));
   }
-  if (options.resolutions) {
-    const auto floodplane = std::find_if(scene.methods.begin(), scene.methods.end(),
-                                         [](const MethodResult& r) { return r.method == "floodplane"; });
-    if (floodplane != scene.methods.end()) {
-      scene.resolutions.emplace_back(1, *floodplane);
-    } else {
-      const Measured full = measure(*methods.full_resolution, input.cloud, options.repeat);
-      scene.resolutions.emplace_back(1, evaluate("floodplane", full, input, scene.min_points));
-    }
-    for (const auto& [factor, method] : methods.subsampled) {
-      const Measured sub = measure(*method, input.cloud, options.repeat);
-      scene.resolutions.emplace_back(factor,
-                                     evaluate(method->name(), sub, input, scene.min_points));
-    }
-  }
-  if (methods.phase_timer) {
-    const Measured timed = measure(*methods.phase_timer, input.cloud, options.repeat);
-    PhaseResult phases;
-    phases.call_median_ms = timed.timing.median_ms;
-    std::vector<double> seed, flood, relabel, merge, output;
-    for (const MethodRun& run : timed.runs) {
-      seed.push_back(run.phases->seed_selection);
-      flood.push_back(run.phases->flood_fill);
-      relabel.push_back(run.phases->relabelling);
-      merge.push_back(run.phases->merging);
-      output.push_back(run.phases->region_output);
-    }
-    phases.median.seed_selection = median(seed);
-    phases.median.flood_fill = median(flood);
-    phases.median.relabelling = median(relabel);
-    phases.median.merging = median(merge);
-    phases.median.region_output = median(output);
-    scene.phases = phases;
-  }
+  if (options.resolutions) scene.resolutions = measureResolutions(options, methods, input, scene);
+  if (methods.phase_timer) scene.phases = measurePhases(*methods.phase_timer, input, options.repeat);
   if (!options.png_dir.empty()) {
     std::vector<std::pair<std::string, const MethodRun*>> runs;
     for (std::size_t k = 0; k < methods.selected.size(); ++k) {
@@ -294,123 +297,121 @@ SceneResult compareScene(const Options& options, Methods& methods, const InputCl
   return scene;
 }
 
-}  // namespace
+constexpr const char* kDescription =
+    "Compares plane segmentations of organized PCD files: floodplane, PCL's sequential "
+    "RANSAC and PCL's OrganizedMultiPlaneSegmentation. Prints the configuration, then a "
+    "Markdown table of runtimes (median and min over --repeat runs after a warm-up) and, for "
+    "files with a ground-truth `label` field, accuracy: mean and weighted IoU, Hoover counts "
+    "and the false-plane fraction, per file, as means, and as means per sensor model for "
+    "files named <scene>.<sensor>.pcd. INPUT is a PCD file or a directory (its *.pcd files, "
+    "sorted).";
 
-int main(int argc, char** argv) {
-  Options options;
-  CLI::App app{
-      "Compares plane segmentations of organized PCD files: floodplane, PCL's sequential "
-      "RANSAC and PCL's OrganizedMultiPlaneSegmentation. Prints the configuration, then a "
-      "Markdown table of runtimes (median and min over --repeat runs after a warm-up) and, for "
-      "files with a ground-truth `label` field, accuracy: mean and weighted IoU and Hoover "
-      "counts. INPUT is a PCD file or a directory (its *.pcd files, sorted).",
-      "pcd_compare"};
-  app.set_version_flag("--version", FLOODPLANE_VERSION_STRING);
+bool isMethodName(const std::string& name) { return name == "floodplane" || name == "ransac" || name == "omps"; }
+
+// The methods named in --methods, each once: a method named twice would be timed twice and
+// collide in the tables.
+std::vector<std::string> uniqueMethods(const std::string& method_list) {
+  std::vector<std::string> methods;
+  for (const std::string& name : splitList(method_list)) {
+    if (std::find(methods.begin(), methods.end(), name) == methods.end()) methods.push_back(name);
+  }
+  return methods;
+}
+
+void addInputAndMethodOptions(CLI::App& app, Options& options, std::string& method_list) {
   // No existence check here: a missing file is reported with the others, and the batch goes on.
   app.add_option("inputs", options.inputs, "PCD files or directories of *.pcd")->required();
   // One comma-separated token, split here: a vector option would also swallow the INPUTs
   // that follow it ("--methods omps scene.pcd").
-  std::string method_list = "floodplane,ransac,omps";
-  app.add_option("--methods", method_list,
-                 "Methods to run, comma-separated, from floodplane, ransac, omps")
-      ->check(
-          [](const std::string& list) -> std::string {
-            for (const std::string& name : splitList(list)) {
-              if (name != "floodplane" && name != "ransac" && name != "omps") {
-                return "unknown method '" + name + "' (use floodplane, ransac, omps)";
-              }
-            }
-            return splitList(list).empty() ? "no method given" : "";
-          })
+  app.add_option("--methods", method_list, "Methods to run, comma-separated, from floodplane, ransac, omps")
+      ->check([](const std::string& list) -> std::string {
+        for (const std::string& name : splitList(list)) {
+          if (!isMethodName(name)) return "unknown method '" + name + "' (use floodplane, ransac, omps)";
+        }
+        return splitList(list).empty() ? "no method given" : "";
+      })
       ->capture_default_str();
   app.add_option("--repeat", options.repeat, "Timed runs per method and file, after one warm-up")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+}
+
+void addOutputOptions(CLI::App& app, Options& options) {
   app.add_option("--csv", options.csv_file, "Also write the rows as CSV to this file");
   app.add_option("--json", options.json_file, "Also write everything as JSON to this file");
   app.add_option("--png", options.png_dir,
                  "Write <scene>.png per file into this directory: ground truth | ransac | omps "
                  "| floodplane, segments coloured by the ground-truth plane they overlap most");
-  app.add_flag("--resolutions", options.resolutions,
-               "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
-  app.add_flag("--phases", options.phases,
-               "Also report floodplane's time per phase (Fig. 5), from separate runs");
-  app.add_flag("-q,--quiet", options.quiet,
-               "Print no configuration and no progress: only the tables and errors");
-  // A bad command line prints the whole usage, not just the complaint.
-  app.failure_message(CLI::FailureMessage::help);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
-  // A method named twice would be timed twice and collide in the tables.
-  std::vector<std::string> unique_methods;
-  for (const std::string& name : splitList(method_list)) {
-    if (std::find(unique_methods.begin(), unique_methods.end(), name) == unique_methods.end()) {
-      unique_methods.push_back(name);
-    }
-  }
-  options.methods = unique_methods;
+  app.add_flag("--resolutions", options.resolutions, "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
+  app.add_flag("--phases", options.phases, "Also report floodplane's time per phase (Fig. 5), from separate runs");
+  app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the tables and errors");
+}
 
-  Methods methods = makeMethods(options);
-  Report report;
-  report.configuration = configuration(options, methods);
-  if (!options.quiet) {
-    std::cout << markdownConfiguration(report) << std::flush;
-  }
-
-  const std::vector<std::string> files = expandInputs(options.inputs);
+// Compares every input, going on past files that cannot be read (listed in report.failed).
+void compareAll(const Options& options, Methods& methods, Report& report) {
+  const std::vector<floodplane::io::InputFile> files = floodplane::io::expandInputs(options.inputs);
   std::set<std::string> names;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    const std::string& file = files[i];
+    const floodplane::io::InputFile& file = files[i];
     if (!options.quiet && files.size() > 1) {
-      std::cerr << "pcd_compare: [" << i + 1 << "/" << files.size() << "] " << file << "\n";
+      std::cerr << "pcd_compare: [" << i + 1 << "/" << files.size() << "] " << file.path << "\n";
     }
     try {
-      InputCloud input = loadInputCloud(file);
+      if (!file.error.empty()) throw std::runtime_error(file.error);
+      InputCloud input = loadInputCloud(file.path);
       // Scenes are named by their file name; two files of one name from different
       // directories would share a row label and an image file.
       if (!names.insert(input.name).second) {
-        input.name = fs::path(file).parent_path().filename().string() + "/" + input.name;
+        input.name = fs::path(file.path).parent_path().filename().string() + "/" + input.name;
         std::replace(input.name.begin(), input.name.end(), '/', '_');
       }
       report.scenes.push_back(compareScene(options, methods, input));
     } catch (const std::exception& error) {
-      std::cerr << "pcd_compare: error: " << error.what() << "\n";
-      report.failed.push_back(file);
+      std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
+      report.failed.push_back(file.path);
     }
   }
-  if (files.empty()) {
-    std::cerr << "pcd_compare: error: no PCD files in the inputs\n";
-    return 1;
-  }
+}
 
-  std::cout << markdownTables(report) << std::flush;
-  bool output_failed = false;
+// Writes the CSV and JSON files asked for; false if one could not be written (said on stderr).
+bool writeReportFiles(const Options& options, const Report& report) {
   try {
-    if (!options.csv_file.empty()) {
-      floodplane::io::writeBytesAtomically(options.csv_file, csvReport(report));
-    }
-    if (!options.json_file.empty()) {
-      floodplane::io::writeBytesAtomically(options.json_file, jsonReport(report));
-    }
+    if (!options.csv_file.empty()) floodplane::io::writeBytesAtomically(options.csv_file, csvReport(report));
+    if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, jsonReport(report));
   } catch (const std::exception& error) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
-    output_failed = true;
+    return false;
   }
-  if (!report.failed.empty()) {
-    std::cerr << "pcd_compare: " << report.failed.size() << " of " << files.size()
-              << " files failed:";
-    for (const std::string& file : report.failed) {
-      std::cerr << " " << file;
-    }
-    std::cerr << "\n";
-  }
-  return report.failed.empty() && !output_failed ? 0 : 1;
+  return true;
+}
+
+void printFailures(const Report& report) {
+  if (report.failed.empty()) return;
+  std::cerr << "pcd_compare: " << report.failed.size() << " of " << report.failed.size() + report.scenes.size()
+            << " files failed:";
+  for (const std::string& file : report.failed) std::cerr << " " << file;
+  std::cerr << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  std::string method_list = "floodplane,ransac,omps";
+  CLI::App app{kDescription, "pcd_compare"};
+  floodplane::apps::addVersionFlag(app);
+  addInputAndMethodOptions(app, options, method_list);
+  addOutputOptions(app, options);
+  if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
+  options.methods = uniqueMethods(method_list);
+
+  Methods methods = makeMethods(options);
+  Report report;
+  report.configuration = configuration(options, methods);
+  if (!options.quiet) std::cout << markdownConfiguration(report) << std::flush;
+  compareAll(options, methods, report);
+  std::cout << markdownTables(report) << std::flush;
+  const bool written = writeReportFiles(options, report);
+  printFailures(report);
+  return report.failed.empty() && written ? 0 : 1;
 }

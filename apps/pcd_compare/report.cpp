@@ -55,7 +55,8 @@ double ratioToFloodplane(const SceneResult& scene, const MethodResult& result) {
 }
 
 // Averages of one method over the scenes: times over every scene, accuracy over the scenes
-// with ground truth (Hoover counts too: counts per frame, as PEAC and CAPE report them).
+// with ground truth (Hoover counts too: counts per frame, as PEAC and CAPE report them), the
+// false-plane fraction over the scenes where it is defined.
 struct MeanRow {
   std::size_t scenes = 0;
   std::size_t scored = 0;
@@ -68,6 +69,8 @@ struct MeanRow {
   double weighted_iou = 0.0;
   double correct = 0.0, over = 0.0, under = 0.0, missed = 0.0, noise = 0.0;
   double planes = 0.0;
+  double false_planes = 0.0;
+  std::size_t with_non_plane = 0;  // scenes with valid ground-truth-0 pixels
 
   void add(const SceneResult& scene, const MethodResult& result) {
     ++scenes;
@@ -81,30 +84,55 @@ struct MeanRow {
       floodplane_median_ms += reference->timing.median_ms;
       ++with_floodplane;
     }
-    // Scenes whose ground truth keeps no plane have no IoU to average.
-    if (result.scores && !result.scores->planes.empty()) {
-      ++scored;
-      mean_iou += result.scores->mean_iou;
-      weighted_iou += result.scores->weighted_iou;
-      correct += static_cast<double>(result.scores->hoover.correct);
-      over += static_cast<double>(result.scores->hoover.over);
-      under += static_cast<double>(result.scores->hoover.under);
-      missed += static_cast<double>(result.scores->hoover.missed);
-      noise += static_cast<double>(result.scores->hoover.noise);
+    if (result.scores) addScores(*result.scores);
+  }
+  void addScores(const SegmentationScores& scores) {
+    if (std::isfinite(scores.false_plane_fraction)) {
+      false_planes += scores.false_plane_fraction;
+      ++with_non_plane;
     }
+    // Scenes whose ground truth keeps no plane have no IoU to average.
+    if (scores.planes.empty()) return;
+    ++scored;
+    mean_iou += scores.mean_iou;
+    weighted_iou += scores.weighted_iou;
+    correct += static_cast<double>(scores.hoover.correct);
+    over += static_cast<double>(scores.hoover.over);
+    under += static_cast<double>(scores.hoover.under);
+    missed += static_cast<double>(scores.hoover.missed);
+    noise += static_cast<double>(scores.hoover.noise);
   }
   double time(double sum) const { return scenes > 0 ? sum / static_cast<double>(scenes) : kNaN; }
-  double accuracy(double sum) const {
-    return scored > 0 ? sum / static_cast<double>(scored) : kNaN;
+  double accuracy(double sum) const { return scored > 0 ? sum / static_cast<double>(scored) : kNaN; }
+  double falsePlanes() const { return with_non_plane > 0 ? false_planes / static_cast<double>(with_non_plane) : kNaN; }
+  double part(const std::string& name) const {
+    const auto found = parts_ms.find(name);
+    return found != parts_ms.end() ? time(found->second) : kNaN;
   }
   // Ratio of the mean medians: a method's total time over floodplane's, which long scenes
   // dominate as they dominate a user's waiting. NaN unless floodplane ran on every scene.
   double ratio() const {
-    return with_floodplane == scenes && floodplane_median_ms > 0.0
-               ? median_ms / floodplane_median_ms
-               : kNaN;
+    return with_floodplane == scenes && floodplane_median_ms > 0.0 ? median_ms / floodplane_median_ms : kNaN;
   }
 };
+
+// The mean rows of the main table: per method over every scene, and per sensor model and
+// method over the scenes of that sensor model.
+struct Means {
+  std::map<std::string, MeanRow> overall;                           // by method
+  std::map<std::string, std::map<std::string, MeanRow>> by_sensor;  // by sensor, then method
+};
+
+Means methodMeans(const Report& report) {
+  Means means;
+  for (const SceneResult& scene : report.scenes) {
+    for (const MethodResult& result : scene.methods) {
+      means.overall[result.method].add(scene, result);
+      if (!scene.sensor.empty()) means.by_sensor[scene.sensor][result.method].add(scene, result);
+    }
+  }
+  return means;
+}
 
 std::vector<std::string> methodOrder(const Report& report) {
   std::vector<std::string> order;
@@ -140,17 +168,19 @@ bool anyPart(const Report& report, const std::string& part) {
 
 std::string hooverName(HooverClass hoover) {
   switch (hoover) {
-    case HooverClass::correct: return "correct";
-    case HooverClass::over_segmented: return "over";
-    case HooverClass::under_segmented: return "under";
-    case HooverClass::missed: return "missed";
+    case HooverClass::correct:
+      return "correct";
+    case HooverClass::over_segmented:
+      return "over";
+    case HooverClass::under_segmented:
+      return "under";
+    case HooverClass::missed:
+      return "missed";
   }
   return "missed";
 }
 
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
+nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
 nlohmann::json scoresJson(const SegmentationScores& scores) {
   nlohmann::json planes = nlohmann::json::array();
@@ -169,6 +199,7 @@ nlohmann::json scoresJson(const SegmentationScores& scores) {
             {"under", scores.hoover.under},
             {"missed", scores.hoover.missed},
             {"noise", scores.hoover.noise}}},
+          {"false_plane_fraction", number(scores.false_plane_fraction)},
           {"ground_truth_planes", scores.planes.size()},
           {"predicted_segments", scores.predicted_segments},
           {"per_plane", planes}};
@@ -189,19 +220,200 @@ nlohmann::json resultJson(const SceneResult& scene, const MethodResult& result) 
 }
 
 const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>> kPhases = {
-    {"seed_selection", &floodplane::PhaseTimes::seed_selection},
-    {"flood_fill", &floodplane::PhaseTimes::flood_fill},
-    {"relabelling", &floodplane::PhaseTimes::relabelling},
-    {"merging", &floodplane::PhaseTimes::merging},
+    {"seed_selection", &floodplane::PhaseTimes::seed_selection}, {"flood_fill", &floodplane::PhaseTimes::flood_fill},
+    {"relabelling", &floodplane::PhaseTimes::relabelling},       {"merging", &floodplane::PhaseTimes::merging},
     {"region_output", &floodplane::PhaseTimes::region_output},
 };
 
-void accuracyCells(std::ostringstream& out, double mean_iou, double weighted_iou, double correct,
-                   double over, double under, double missed, double noise, int count_decimals) {
-  out << " " << fixed(mean_iou, 3) << " | " << fixed(weighted_iou, 3) << " | "
-      << fixed(correct, count_decimals) << " | " << fixed(over, count_decimals) << " | "
-      << fixed(under, count_decimals) << " | " << fixed(missed, count_decimals) << " | "
-      << fixed(noise, count_decimals) << " |";
+// The accuracy columns of a table row, from one scene's scores or from the means.
+struct AccuracyCells {
+  double mean_iou = kNaN;
+  double weighted_iou = kNaN;
+  double correct = kNaN, over = kNaN, under = kNaN, missed = kNaN, noise = kNaN;
+  double false_planes = kNaN;
+  int count_decimals = 0;  // whole counts for a scene, one decimal for means
+};
+
+AccuracyCells sceneCells(const SegmentationScores& s) {
+  return {s.mean_iou,
+          s.weighted_iou,
+          static_cast<double>(s.hoover.correct),
+          static_cast<double>(s.hoover.over),
+          static_cast<double>(s.hoover.under),
+          static_cast<double>(s.hoover.missed),
+          static_cast<double>(s.hoover.noise),
+          s.false_plane_fraction,
+          0};
+}
+
+AccuracyCells meanCells(const MeanRow& row) {
+  return {row.accuracy(row.mean_iou),
+          row.accuracy(row.weighted_iou),
+          row.accuracy(row.correct),
+          row.accuracy(row.over),
+          row.accuracy(row.under),
+          row.accuracy(row.missed),
+          row.accuracy(row.noise),
+          row.falsePlanes(),
+          1};
+}
+
+std::string accuracyCells(const AccuracyCells& c) {
+  const int n = c.count_decimals;
+  return " " + fixed(c.mean_iou, 3) + " | " + fixed(c.weighted_iou, 3) + " | " + fixed(c.correct, n) + " | " +
+         fixed(c.over, n) + " | " + fixed(c.under, n) + " | " + fixed(c.missed, n) + " | " + fixed(c.noise, n) + " | " +
+         fixed(c.false_planes, 3) + " |";
+}
+
+// Which optional column groups the main table has.
+struct MainColumns {
+  bool accuracy = false;  // some scene has ground truth
+  bool normals = false;   // some method reports its normal estimation (OMPS)
+};
+
+std::string mainTableHeader(const MainColumns& columns) {
+  std::ostringstream out;
+  out << "## Runtime" << (columns.accuracy ? " and accuracy" : "") << "\n\n";
+  out << "| scene | method | median ms | min ms | x floodplane |" << (columns.normals ? " normals ms |" : "")
+      << " planes |";
+  if (columns.accuracy) out << " mean IoU | weighted IoU | correct | over | under | missed | noise | false planes |";
+  out << "\n|---|---|---:|---:|---:|" << (columns.normals ? "---:|" : "") << "---:|";
+  if (columns.accuracy) out << "---:|---:|---:|---:|---:|---:|---:|---:|";
+  out << "\n";
+  return out.str();
+}
+
+std::string mainTableRow(const SceneResult& scene, const MethodResult& result, const MainColumns& columns) {
+  std::ostringstream out;
+  out << "| " << scene.name << " | " << result.method << " | " << fixed(result.timing.median_ms, 2) << " | "
+      << fixed(result.timing.min_ms, 2) << " | " << fixed(ratioToFloodplane(scene, result), 2) << " |";
+  if (columns.normals) out << " " << fixed(partMs(result.timing, "normals"), 2) << " |";
+  out << " " << result.planes << " |";
+  if (columns.accuracy) {
+    out << (result.scores ? accuracyCells(sceneCells(*result.scores)) : " - | - | - | - | - | - | - | - |");
+  }
+  out << "\n";
+  return out.str();
+}
+
+// `label` is "**mean**" or "**mean <sensor>**".
+std::string mainTableMeanRow(const std::string& label, const std::string& method, const MeanRow& row,
+                             const MainColumns& columns) {
+  std::ostringstream out;
+  out << "| " << label << " (" << row.scenes << " scenes) | " << method << " | " << fixed(row.time(row.median_ms), 2)
+      << " | " << fixed(row.time(row.min_ms), 2) << " | " << fixed(row.ratio(), 2) << " |";
+  if (columns.normals) out << " " << fixed(row.part("normals"), 2) << " |";
+  out << " " << fixed(row.time(row.planes), 1) << " |";
+  if (columns.accuracy) out << accuracyCells(meanCells(row));
+  out << "\n";
+  return out.str();
+}
+
+// Runtime and accuracy: a row per scene and method, the means per method, then the means per
+// sensor model and method.
+std::string mainTable(const Report& report) {
+  const MainColumns columns{anyGroundTruth(report), anyPart(report, "normals")};
+  std::string out = mainTableHeader(columns);
+  for (const SceneResult& scene : report.scenes) {
+    for (const MethodResult& result : scene.methods) out += mainTableRow(scene, result, columns);
+  }
+  const std::vector<std::string> order = methodOrder(report);
+  const Means means = methodMeans(report);
+  for (const std::string& method : order) {
+    out += mainTableMeanRow("**mean**", method, means.overall.at(method), columns);
+  }
+  for (const auto& [sensor, rows] : means.by_sensor) {
+    for (const std::string& method : order) {
+      const auto row = rows.find(method);
+      if (row != rows.end()) out += mainTableMeanRow("**mean " + sensor + "**", method, row->second, columns);
+    }
+  }
+  return out + "\n";
+}
+
+// floodplane at sub-sampling 1, 2, 4, 8 (Table III): a row per scene and factor, a mean row
+// per factor. Empty when --resolutions was not given.
+std::string resolutionTable(const Report& report) {
+  const bool accuracy = anyGroundTruth(report);
+  std::ostringstream out;
+  out << "## floodplane by sub-sampling factor (Table III)\n\n"
+      << "| scene | sub-sampling | median ms | min ms | speed-up over 1 | planes |"
+      << (accuracy ? " mean IoU | weighted IoU | false planes |" : "") << "\n"
+      << "|---|---:|---:|---:|---:|---:|" << (accuracy ? "---:|---:|---:|" : "") << "\n";
+  std::map<int, MeanRow> factor_means;
+  std::map<int, double> speedup_sums;
+  for (const SceneResult& scene : report.scenes) {
+    double full = kNaN;
+    for (const auto& [factor, result] : scene.resolutions) {
+      if (factor == 1) full = result.timing.median_ms;
+    }
+    for (const auto& [factor, result] : scene.resolutions) {
+      factor_means[factor].add(scene, result);
+      speedup_sums[factor] += full / result.timing.median_ms;
+      out << "| " << scene.name << " | " << factor << " | " << fixed(result.timing.median_ms, 2) << " | "
+          << fixed(result.timing.min_ms, 2) << " | " << fixed(full / result.timing.median_ms, 2) << " | "
+          << result.planes << " |";
+      if (accuracy) {
+        out << " " << (result.scores ? fixed(result.scores->mean_iou, 3) : kNone) << " | "
+            << (result.scores ? fixed(result.scores->weighted_iou, 3) : kNone) << " | "
+            << (result.scores ? fixed(result.scores->false_plane_fraction, 3) : kNone) << " |";
+      }
+      out << "\n";
+    }
+  }
+  if (factor_means.empty()) return "";
+  for (const auto& [factor, row] : factor_means) {
+    out << "| **mean** (" << row.scenes << " scenes) | " << factor << " | " << fixed(row.time(row.median_ms), 2)
+        << " | " << fixed(row.time(row.min_ms), 2) << " | " << fixed(row.time(speedup_sums[factor]), 2) << " | "
+        << fixed(row.time(row.planes), 1) << " |";
+    if (accuracy) {
+      out << " " << fixed(row.accuracy(row.mean_iou), 3) << " | " << fixed(row.accuracy(row.weighted_iou), 3) << " | "
+          << fixed(row.falsePlanes(), 3) << " |";
+    }
+    out << "\n";
+  }
+  return out.str() + "\n";
+}
+
+// One row of the phase table: each phase's share of the phases' total, the total, the call.
+std::string phaseRow(const std::string& name, const floodplane::PhaseTimes& phases, double call_ms) {
+  const double total = phases.total();
+  std::string row = "| " + name + " |";
+  for (const auto& [key, member] : kPhases) {
+    (void)key;
+    row += " " + fixed(total > 0.0 ? 100.0 * (phases.*member) / total : kNaN, 1) + "% |";
+  }
+  return row + " " + fixed(total, 2) + " | " + fixed(call_ms, 2) + " |\n";
+}
+
+// floodplane's time by phase (Fig. 5): a row per scene and the mean. Empty when --phases was
+// not given.
+std::string phaseTable(const Report& report) {
+  std::string out =
+      "## floodplane's time by phase (Fig. 5), share of the phases' total\n\n"
+      "| scene | seed selection | flood fill | relabelling | merging | region output | phases ms | call ms |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  floodplane::PhaseTimes sum;
+  double call_sum = 0.0;
+  std::size_t count = 0;
+  for (const SceneResult& scene : report.scenes) {
+    if (!scene.phases) continue;
+    out += phaseRow(scene.name, scene.phases->median, scene.phases->call_median_ms);
+    for (const auto& [key, member] : kPhases) {
+      (void)key;
+      sum.*member += scene.phases->median.*member;
+    }
+    call_sum += scene.phases->call_median_ms;
+    ++count;
+  }
+  if (count == 0) return "";
+  floodplane::PhaseTimes mean;
+  for (const auto& [key, member] : kPhases) {
+    (void)key;
+    mean.*member = sum.*member / static_cast<double>(count);
+  }
+  out += phaseRow("**mean** (" + std::to_string(count) + " scenes)", mean, call_sum / static_cast<double>(count));
+  return out + "\n";
 }
 
 }  // namespace
@@ -217,173 +429,25 @@ std::string markdownConfiguration(const Report& report) {
 }
 
 std::string markdownTables(const Report& report) {
-  std::ostringstream out;
-  const bool accuracy = anyGroundTruth(report);
-  const bool normals = anyPart(report, "normals");
-  const std::vector<std::string> order = methodOrder(report);
-
-  out << "## Runtime" << (accuracy ? " and accuracy" : "") << "\n\n";
-  out << "| scene | method | median ms | min ms | x floodplane |"
-      << (normals ? " normals ms |" : "") << " planes |";
-  if (accuracy) {
-    out << " mean IoU | weighted IoU | correct | over | under | missed | noise |";
-  }
-  out << "\n|---|---|---:|---:|---:|" << (normals ? "---:|" : "") << "---:|";
-  if (accuracy) {
-    out << "---:|---:|---:|---:|---:|---:|---:|";
-  }
-  out << "\n";
-  std::map<std::string, MeanRow> means;
-  for (const SceneResult& scene : report.scenes) {
-    for (const MethodResult& result : scene.methods) {
-      means[result.method].add(scene, result);
-      out << "| " << scene.name << " | " << result.method << " | "
-          << fixed(result.timing.median_ms, 2) << " | " << fixed(result.timing.min_ms, 2)
-          << " | " << fixed(ratioToFloodplane(scene, result), 2) << " |";
-      if (normals) {
-        out << " " << fixed(partMs(result.timing, "normals"), 2) << " |";
-      }
-      out << " " << result.planes << " |";
-      if (accuracy) {
-        if (result.scores) {
-          const auto& s = *result.scores;
-          accuracyCells(out, s.mean_iou, s.weighted_iou, static_cast<double>(s.hoover.correct),
-                        static_cast<double>(s.hoover.over), static_cast<double>(s.hoover.under),
-                        static_cast<double>(s.hoover.missed),
-                        static_cast<double>(s.hoover.noise), 0);
-        } else {
-          out << " - | - | - | - | - | - | - |";
-        }
-      }
-      out << "\n";
-    }
-  }
-  for (const std::string& method : order) {
-    const MeanRow& row = means[method];
-    out << "| **mean** (" << row.scenes << " scenes) | " << method << " | "
-        << fixed(row.time(row.median_ms), 2) << " | " << fixed(row.time(row.min_ms), 2) << " | "
-        << fixed(row.ratio(), 2) << " |";
-    if (normals) {
-      const auto part = row.parts_ms.find("normals");
-      out << " " << fixed(part != row.parts_ms.end() ? row.time(part->second) : kNaN, 2) << " |";
-    }
-    out << " " << fixed(row.time(row.planes), 1) << " |";
-    if (accuracy) {
-      accuracyCells(out, row.accuracy(row.mean_iou), row.accuracy(row.weighted_iou),
-                    row.accuracy(row.correct), row.accuracy(row.over), row.accuracy(row.under),
-                    row.accuracy(row.missed), row.accuracy(row.noise), 1);
-    }
-    out << "\n";
-  }
-  out << "\n";
-
-  bool any_resolutions = false;
-  bool any_phases = false;
-  for (const SceneResult& scene : report.scenes) {
-    any_resolutions = any_resolutions || !scene.resolutions.empty();
-    any_phases = any_phases || scene.phases.has_value();
-  }
-  if (any_resolutions) {
-    out << "## floodplane by sub-sampling factor (Table III)\n\n"
-        << "| scene | sub-sampling | median ms | min ms | speed-up over 1 | planes |"
-        << (accuracy ? " mean IoU | weighted IoU |" : "") << "\n"
-        << "|---|---:|---:|---:|---:|---:|" << (accuracy ? "---:|---:|" : "") << "\n";
-    std::map<int, MeanRow> factor_means;
-    std::map<int, double> speedup_sums;
-    for (const SceneResult& scene : report.scenes) {
-      double full = kNaN;
-      for (const auto& [factor, result] : scene.resolutions) {
-        if (factor == 1) {
-          full = result.timing.median_ms;
-        }
-      }
-      for (const auto& [factor, result] : scene.resolutions) {
-        factor_means[factor].add(scene, result);
-        speedup_sums[factor] += full / result.timing.median_ms;
-        out << "| " << scene.name << " | " << factor << " | " << fixed(result.timing.median_ms, 2)
-            << " | " << fixed(result.timing.min_ms, 2) << " | "
-            << fixed(full / result.timing.median_ms, 2) << " | " << result.planes << " |";
-        if (accuracy) {
-          out << " " << (result.scores ? fixed(result.scores->mean_iou, 3) : kNone) << " | "
-              << (result.scores ? fixed(result.scores->weighted_iou, 3) : kNone) << " |";
-        }
-        out << "\n";
-      }
-    }
-    for (const auto& [factor, row] : factor_means) {
-      out << "| **mean** (" << row.scenes << " scenes) | " << factor << " | "
-          << fixed(row.time(row.median_ms), 2) << " | " << fixed(row.time(row.min_ms), 2)
-          << " | " << fixed(row.time(speedup_sums[factor]), 2) << " | "
-          << fixed(row.time(row.planes), 1) << " |";
-      if (accuracy) {
-        out << " " << fixed(row.accuracy(row.mean_iou), 3) << " | "
-            << fixed(row.accuracy(row.weighted_iou), 3) << " |";
-      }
-      out << "\n";
-    }
-    out << "\n";
-  }
-
-  if (any_phases) {
-    out << "## floodplane's time by phase (Fig. 5), share of the phases' total\n\n"
-        << "| scene | seed selection | flood fill | relabelling | merging | region output | "
-           "phases ms | call ms |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    floodplane::PhaseTimes sum;
-    double call_sum = 0.0;
-    std::size_t count = 0;
-    const auto row = [&out](const std::string& name, const floodplane::PhaseTimes& phases,
-                            double call_ms) {
-      const double total = phases.total();
-      out << "| " << name << " |";
-      for (const auto& [key, member] : kPhases) {
-        (void)key;
-        out << " " << fixed(total > 0.0 ? 100.0 * (phases.*member) / total : kNaN, 1) << "% |";
-      }
-      out << " " << fixed(total, 2) << " | " << fixed(call_ms, 2) << " |\n";
-    };
-    for (const SceneResult& scene : report.scenes) {
-      if (!scene.phases) {
-        continue;
-      }
-      row(scene.name, scene.phases->median, scene.phases->call_median_ms);
-      for (const auto& [key, member] : kPhases) {
-        (void)key;
-        sum.*member += scene.phases->median.*member;
-      }
-      call_sum += scene.phases->call_median_ms;
-      ++count;
-    }
-    floodplane::PhaseTimes mean;
-    for (const auto& [key, member] : kPhases) {
-      (void)key;
-      mean.*member = sum.*member / static_cast<double>(count);
-    }
-    row("**mean** (" + std::to_string(count) + " scenes)", mean,
-        call_sum / static_cast<double>(count));
-    out << "\n";
-  }
-  return out.str();
+  return mainTable(report) + resolutionTable(report) + phaseTable(report);
 }
 
 std::string csvReport(const Report& report) {
   std::ostringstream out;
   out << "scene,file,method,subsampling,width,height,median_ms,min_ms,ratio_to_floodplane,"
-         "normals_ms,planes,mean_iou,weighted_iou,correct,over,under,missed,noise\n";
-  const auto line = [&out](const SceneResult& scene, const MethodResult& result, int factor,
-                           double ratio) {
+         "normals_ms,planes,mean_iou,weighted_iou,correct,over,under,missed,noise,false_plane_fraction\n";
+  const auto line = [&out](const SceneResult& scene, const MethodResult& result, int factor, double ratio) {
     // Scene names come from file names; quote them in case they hold commas.
-    out << '"' << scene.name << "\",\"" << scene.path << "\"," << result.method << "," << factor
-        << "," << scene.width << "," << scene.height << "," << fixed(result.timing.median_ms, 4)
-        << "," << fixed(result.timing.min_ms, 4) << "," << fixed(ratio, 4) << ","
-        << fixed(partMs(result.timing, "normals"), 4) << "," << result.planes << ",";
+    out << '"' << scene.name << "\",\"" << scene.path << "\"," << result.method << "," << factor << "," << scene.width
+        << "," << scene.height << "," << fixed(result.timing.median_ms, 4) << "," << fixed(result.timing.min_ms, 4)
+        << "," << fixed(ratio, 4) << "," << fixed(partMs(result.timing, "normals"), 4) << "," << result.planes << ",";
     if (result.scores) {
       const auto& s = *result.scores;
-      out << fixed(s.mean_iou, 6) << "," << fixed(s.weighted_iou, 6) << "," << s.hoover.correct
-          << "," << s.hoover.over << "," << s.hoover.under << "," << s.hoover.missed << ","
-          << s.hoover.noise;
+      out << fixed(s.mean_iou, 6) << "," << fixed(s.weighted_iou, 6) << "," << s.hoover.correct << "," << s.hoover.over
+          << "," << s.hoover.under << "," << s.hoover.missed << "," << s.hoover.noise << ","
+          << fixed(s.false_plane_fraction, 6);
     } else {
-      out << ",,,,,,";
+      out << ",,,,,,,";
     }
     out << "\n";
   };
@@ -400,57 +464,76 @@ std::string csvReport(const Report& report) {
   return out.str();
 }
 
+namespace {
+
+nlohmann::json phasesJson(const PhaseResult& phases) {
+  nlohmann::json json;
+  const double total = phases.median.total();
+  for (const auto& [key, member] : kPhases) {
+    json["median_ms"][key] = phases.median.*member;
+    json["share"][key] = number(total > 0.0 ? (phases.median.*member) / total : kNaN);
+  }
+  json["phases_total_ms"] = total;
+  json["call_median_ms"] = phases.call_median_ms;
+  return json;
+}
+
+nlohmann::json sceneJson(const SceneResult& scene) {
+  nlohmann::json json = {{"name", scene.name},
+                         {"file", scene.path},
+                         {"width", scene.width},
+                         {"height", scene.height},
+                         {"ground_truth", scene.has_ground_truth},
+                         {"min_points", scene.min_points},
+                         {"methods", nlohmann::json::object()}};
+  if (!scene.sensor.empty()) json["sensor"] = scene.sensor;
+  for (const MethodResult& result : scene.methods) {
+    json["methods"][result.method] = resultJson(scene, result);
+  }
+  for (const auto& [factor, result] : scene.resolutions) {
+    json["resolutions"][std::to_string(factor)] = resultJson(scene, result);
+  }
+  if (scene.phases) json["phases"] = phasesJson(*scene.phases);
+  return json;
+}
+
+nlohmann::json meanJson(const MeanRow& row) {
+  return {{"scenes", row.scenes},
+          {"scenes_with_ground_truth", row.scored},
+          {"median_ms", number(row.time(row.median_ms))},
+          {"min_ms", number(row.time(row.min_ms))},
+          {"ratio_to_floodplane", number(row.ratio())},
+          {"mean_iou", number(row.accuracy(row.mean_iou))},
+          {"weighted_iou", number(row.accuracy(row.weighted_iou))},
+          {"hoover",
+           {{"correct", number(row.accuracy(row.correct))},
+            {"over", number(row.accuracy(row.over))},
+            {"under", number(row.accuracy(row.under))},
+            {"missed", number(row.accuracy(row.missed))},
+            {"noise", number(row.accuracy(row.noise))}}},
+          {"false_plane_fraction", number(row.falsePlanes())},
+          {"scenes_with_non_plane_ground_truth", row.with_non_plane}};
+}
+
+nlohmann::json meansJson(const std::map<std::string, MeanRow>& rows) {
+  nlohmann::json json = nlohmann::json::object();
+  for (const auto& [method, row] : rows) json[method] = meanJson(row);
+  return json;
+}
+
+}  // namespace
+
 std::string jsonReport(const Report& report) {
   nlohmann::json json;
   for (const auto& [key, value] : report.configuration) {
     json["configuration"][key] = value;
   }
   json["scenes"] = nlohmann::json::array();
-  std::map<std::string, MeanRow> means;
-  for (const SceneResult& scene : report.scenes) {
-    nlohmann::json entry = {{"name", scene.name},
-                            {"file", scene.path},
-                            {"width", scene.width},
-                            {"height", scene.height},
-                            {"ground_truth", scene.has_ground_truth},
-                            {"min_points", scene.min_points},
-                            {"methods", nlohmann::json::object()}};
-    for (const MethodResult& result : scene.methods) {
-      entry["methods"][result.method] = resultJson(scene, result);
-      means[result.method].add(scene, result);
-    }
-    for (const auto& [factor, result] : scene.resolutions) {
-      entry["resolutions"][std::to_string(factor)] = resultJson(scene, result);
-    }
-    if (scene.phases) {
-      nlohmann::json phases;
-      const double total = scene.phases->median.total();
-      for (const auto& [key, member] : kPhases) {
-        phases["median_ms"][key] = scene.phases->median.*member;
-        phases["share"][key] = number(total > 0.0 ? (scene.phases->median.*member) / total : kNaN);
-      }
-      phases["phases_total_ms"] = total;
-      phases["call_median_ms"] = scene.phases->call_median_ms;
-      entry["phases"] = phases;
-    }
-    json["scenes"].push_back(entry);
-  }
-  json["means"] = nlohmann::json::object();
-  for (const auto& [method, row] : means) {
-    json["means"][method] = {{"scenes", row.scenes},
-                             {"scenes_with_ground_truth", row.scored},
-                             {"median_ms", number(row.time(row.median_ms))},
-                             {"min_ms", number(row.time(row.min_ms))},
-                             {"ratio_to_floodplane", number(row.ratio())},
-                             {"mean_iou", number(row.accuracy(row.mean_iou))},
-                             {"weighted_iou", number(row.accuracy(row.weighted_iou))},
-                             {"hoover",
-                              {{"correct", number(row.accuracy(row.correct))},
-                               {"over", number(row.accuracy(row.over))},
-                               {"under", number(row.accuracy(row.under))},
-                               {"missed", number(row.accuracy(row.missed))},
-                               {"noise", number(row.accuracy(row.noise))}}}};
-  }
+  for (const SceneResult& scene : report.scenes) json["scenes"].push_back(sceneJson(scene));
+  const Means means = methodMeans(report);
+  json["means"] = meansJson(means.overall);
+  json["means_by_sensor"] = nlohmann::json::object();
+  for (const auto& [sensor, rows] : means.by_sensor) json["means_by_sensor"][sensor] = meansJson(rows);
   json["failed"] = report.failed;
   return json.dump(2) + "\n";
 }

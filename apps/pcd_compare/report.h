@@ -35,10 +35,13 @@ struct PhaseResult {
 struct SceneResult {
   std::string name;
   std::string path;
+  /// The sensor model named in the file name (<scene>.<sensor>.pcd), empty when none is:
+  /// scenes with one are also averaged per sensor model.
+  std::string sensor;
   std::size_t width = 0;
   std::size_t height = 0;
   bool has_ground_truth = false;
-  std::uint32_t min_points = 0;  ///< the metrics' size rule at this resolution
+  std::uint32_t min_points = 0;       ///< the metrics' size rule at this resolution
   std::vector<MethodResult> methods;  ///< in --methods order
   /// floodplane at sub-sampling 1, 2, 4, 8 (--resolutions), with the factor.
   std::vector<std::pair<int, MethodResult>> resolutions;
@@ -52,8 +55,8 @@ struct Report {
   std::vector<std::string> failed;  ///< files that could not be compared
 };
 
-/// The tables: one row per scene and method plus a mean row per method, then the
-/// sub-sampling and phase tables when they were measured.
+/// The tables: one row per scene and method, a mean row per method, and a mean row per sensor
+/// model and method; then the sub-sampling and phase tables when they were measured.
 std::string markdownTables(const Report& report);
 /// The configuration as a Markdown list.
 std::string markdownConfiguration(const Report& report);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace floodplane::eval {
@@ -33,8 +34,7 @@ std::map<std::uint32_t, std::size_t> countLabels(const std::vector<std::uint32_t
 }
 
 // The regions at least `min_points` large, by ascending label, and each kept label's index.
-std::vector<Region> keptRegions(const std::map<std::uint32_t, std::size_t>& counts,
-                                std::uint32_t min_points,
+std::vector<Region> keptRegions(const std::map<std::uint32_t, std::size_t>& counts, std::uint32_t min_points,
                                 std::unordered_map<std::uint32_t, std::size_t>& index_of) {
   std::vector<Region> regions;
   for (const auto& [label, pixels] : counts) {
@@ -52,62 +52,55 @@ struct Overlap {
   std::size_t pixels = 0;
 };
 
-}  // namespace
+// The kept regions of both labellings and their overlaps, both ways, each list by ascending
+// index of the other side.
+struct Regions {
+  std::vector<Region> gt;
+  std::vector<Region> segments;
+  std::vector<std::vector<Overlap>> overlaps_of_gt;
+  std::vector<std::vector<Overlap>> overlaps_of_segment;
+};
 
-std::uint32_t defaultMinPoints(std::size_t width, std::size_t height) {
-  const double pixels = static_cast<double>(width) * static_cast<double>(height);
-  return static_cast<std::uint32_t>(std::lround(500.0 * pixels / (640.0 * 480.0)));
+void checkSizes(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
+                const std::vector<std::uint8_t>& valid, const char* function) {
+  if (predicted.size() != ground_truth.size() || valid.size() != ground_truth.size()) {
+    throw std::invalid_argument(std::string(function) + ": ground_truth, predicted and valid must have one size (got " +
+                                std::to_string(ground_truth.size()) + ", " + std::to_string(predicted.size()) + ", " +
+                                std::to_string(valid.size()) + ")");
+  }
 }
 
-SegmentationScores evaluateSegmentation(const std::vector<std::uint32_t>& ground_truth,
-                                        const std::vector<std::uint32_t>& predicted,
-                                        const std::vector<std::uint8_t>& valid,
-                                        const MetricsOptions& options) {
-  if (predicted.size() != ground_truth.size() || valid.size() != ground_truth.size()) {
-    throw std::invalid_argument(
-        "evaluateSegmentation: ground_truth, predicted and valid must have one size (got " +
-        std::to_string(ground_truth.size()) + ", " + std::to_string(predicted.size()) + ", " +
-        std::to_string(valid.size()) + ")");
-  }
-  if (!(options.tolerance > 0.5 && options.tolerance <= 1.0)) {
-    throw std::invalid_argument("evaluateSegmentation: tolerance must be in (0.5, 1], got " +
-                                std::to_string(options.tolerance));
-  }
-  const double tolerance = options.tolerance;
-
+Regions keptRegionsAndOverlaps(const std::vector<std::uint32_t>& ground_truth,
+                               const std::vector<std::uint32_t>& predicted, const std::vector<std::uint8_t>& valid,
+                               std::uint32_t min_points) {
+  Regions regions;
   std::unordered_map<std::uint32_t, std::size_t> gt_index;
   std::unordered_map<std::uint32_t, std::size_t> segment_index;
-  std::vector<Region> gt =
-      keptRegions(countLabels(ground_truth, valid), options.min_points, gt_index);
-  std::vector<Region> segments =
-      keptRegions(countLabels(predicted, valid), options.min_points, segment_index);
+  regions.gt = keptRegions(countLabels(ground_truth, valid), min_points, gt_index);
+  regions.segments = keptRegions(countLabels(predicted, valid), min_points, segment_index);
 
   // Overlaps between kept regions only: ignored regions take part in nothing, but their
   // pixels still count in the sizes |g| and |p| of the kept ones.
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> overlap_pixels;
   for (std::size_t i = 0; i < ground_truth.size(); ++i) {
-    if (valid[i] == 0) {
-      continue;
-    }
+    if (valid[i] == 0) continue;
     const auto g = gt_index.find(ground_truth[i]);
     const auto p = segment_index.find(predicted[i]);
-    if (g != gt_index.end() && p != segment_index.end()) {
-      ++overlap_pixels[{g->second, p->second}];
-    }
+    if (g != gt_index.end() && p != segment_index.end()) ++overlap_pixels[{g->second, p->second}];
   }
-  // Both directions, each list by ascending index of the other side (the map's order).
-  std::vector<std::vector<Overlap>> overlaps_of_gt(gt.size());
-  std::vector<std::vector<Overlap>> overlaps_of_segment(segments.size());
+  regions.overlaps_of_gt.resize(regions.gt.size());
+  regions.overlaps_of_segment.resize(regions.segments.size());
   for (const auto& [pair, pixels] : overlap_pixels) {
-    overlaps_of_gt[pair.first].push_back({pair.second, pixels});
-    overlaps_of_segment[pair.second].push_back({pair.first, pixels});
+    regions.overlaps_of_gt[pair.first].push_back({pair.second, pixels});
+    regions.overlaps_of_segment[pair.second].push_back({pair.first, pixels});
   }
+  return regions;
+}
 
-  SegmentationScores scores;
-  scores.predicted_segments = segments.size();
+// IoU (Table I): the best-matching kept segment of each kept plane, and the two averages.
+void scoreIou(const Regions& regions, SegmentationScores& scores) {
+  const std::vector<Region>& gt = regions.gt;
   scores.planes.resize(gt.size());
-
-  // IoU (Table I): the best-matching kept segment of each kept plane.
   double iou_sum = 0.0;
   double weighted_sum = 0.0;
   double weight_total = 0.0;
@@ -115,15 +108,15 @@ SegmentationScores evaluateSegmentation(const std::vector<std::uint32_t>& ground
     PlaneScore& plane = scores.planes[g];
     plane.label = gt[g].label;
     plane.pixels = gt[g].pixels;
-    for (const Overlap& overlap : overlaps_of_gt[g]) {
+    for (const Overlap& overlap : regions.overlaps_of_gt[g]) {
+      const Region& segment = regions.segments[overlap.other];
       const double intersection = static_cast<double>(overlap.pixels);
-      const double united = static_cast<double>(gt[g].pixels + segments[overlap.other].pixels) -
-                            intersection;
+      const double united = static_cast<double>(gt[g].pixels + segment.pixels) - intersection;
       const double iou = intersection / united;
       // Strictly greater: ties go to the lower predicted label, so results are reproducible.
       if (iou > plane.iou) {
         plane.iou = iou;
-        plane.best_segment = segments[overlap.other].label;
+        plane.best_segment = segment.label;
       }
     }
     iou_sum += plane.iou;
@@ -133,79 +126,149 @@ SegmentationScores evaluateSegmentation(const std::vector<std::uint32_t>& ground
   const double nan = std::numeric_limits<double>::quiet_NaN();
   scores.mean_iou = gt.empty() ? nan : iou_sum / static_cast<double>(gt.size());
   scores.weighted_iou = gt.empty() ? nan : weighted_sum / weight_total;
+}
 
-  // Hoover: correct detections first. With T > 0.5 a plane has at most one segment that
-  // covers more than T of it, so the pairs found here cannot compete.
-  const auto covers = [tolerance](std::size_t overlap, std::size_t size) {
-    return static_cast<double>(overlap) >= tolerance * static_cast<double>(size);
-  };
-  for (std::size_t g = 0; g < gt.size(); ++g) {
-    for (const Overlap& overlap : overlaps_of_gt[g]) {
-      Region& segment = segments[overlap.other];
-      if (!gt[g].classified && !segment.classified && covers(overlap.pixels, gt[g].pixels) &&
-          covers(overlap.pixels, segment.pixels)) {
-        gt[g].classified = true;
-        segment.classified = true;
-        scores.planes[g].hoover = HooverClass::correct;
-        ++scores.hoover.correct;
+// The Hoover et al. classification, one kind after the other. Each step classifies only
+// regions that no earlier step has classified.
+class HooverClassifier {
+ public:
+  HooverClassifier(Regions regions, double tolerance, SegmentationScores& scores)
+      : regions_(std::move(regions)), tolerance_(tolerance), scores_(scores) {}
+
+  void classify() {
+    findCorrectDetections();
+    findOverSegmentations();
+    findUnderSegmentations();
+    const auto unclassified = [](const Region& r) { return !r.classified; };
+    scores_.hoover.missed =
+        static_cast<std::size_t>(std::count_if(regions_.gt.begin(), regions_.gt.end(), unclassified));
+    scores_.hoover.noise =
+        static_cast<std::size_t>(std::count_if(regions_.segments.begin(), regions_.segments.end(), unclassified));
+  }
+
+ private:
+  bool covers(std::size_t overlap, std::size_t size) const {
+    return static_cast<double>(overlap) >= tolerance_ * static_cast<double>(size);
+  }
+
+  // With T > 0.5 a plane has at most one segment that covers more than T of it, so the pairs
+  // found here cannot compete.
+  void findCorrectDetections() {
+    std::vector<Region>& gt = regions_.gt;
+    for (std::size_t g = 0; g < gt.size(); ++g) {
+      for (const Overlap& overlap : regions_.overlaps_of_gt[g]) {
+        Region& segment = regions_.segments[overlap.other];
+        if (!gt[g].classified && !segment.classified && covers(overlap.pixels, gt[g].pixels) &&
+            covers(overlap.pixels, segment.pixels)) {
+          gt[g].classified = true;
+          segment.classified = true;
+          scores_.planes[g].hoover = HooverClass::correct;
+          ++scores_.hoover.correct;
+        }
       }
     }
   }
 
-  // Over-segmentation of g into p1..pk: every unclassified segment lying (by T) inside g is a
-  // candidate; taking all of them gives the largest sum, so if any k >= 2 subset qualifies,
-  // this set does.
-  for (std::size_t g = 0; g < gt.size(); ++g) {
-    if (gt[g].classified) {
-      continue;
-    }
+  // The unclassified regions on the other side of `overlaps` that lie (by T) inside the region
+  // of `size` pixels, if there are at least two and together they cover T of it. Taking all
+  // candidates gives the largest sum, so if any k >= 2 subset qualifies, this set does.
+  std::vector<std::size_t> coveringParts(const std::vector<Overlap>& overlaps, const std::vector<Region>& others,
+                                         std::size_t size) const {
     std::vector<std::size_t> parts;
     std::size_t covered = 0;
-    for (const Overlap& overlap : overlaps_of_gt[g]) {
-      const Region& segment = segments[overlap.other];
-      if (!segment.classified && covers(overlap.pixels, segment.pixels)) {
+    for (const Overlap& overlap : overlaps) {
+      const Region& other = others[overlap.other];
+      if (!other.classified && covers(overlap.pixels, other.pixels)) {
         parts.push_back(overlap.other);
         covered += overlap.pixels;
       }
     }
-    if (parts.size() >= 2 && covers(covered, gt[g].pixels)) {
-      gt[g].classified = true;
-      for (const std::size_t p : parts) {
-        segments[p].classified = true;
-      }
-      scores.planes[g].hoover = HooverClass::over_segmented;
-      ++scores.hoover.over;
+    return parts.size() >= 2 && covers(covered, size) ? parts : std::vector<std::size_t>();
+  }
+
+  // Each unclassified region of `wholes` that at least two unclassified regions of `pieces`
+  // split (coveringParts) is classified with its pieces; `found(whole, pieces)` counts it.
+  template <typename Found>
+  void findSplits(std::vector<Region>& wholes, const std::vector<std::vector<Overlap>>& overlaps_of_whole,
+                  std::vector<Region>& pieces, Found found) {
+    for (std::size_t w = 0; w < wholes.size(); ++w) {
+      if (wholes[w].classified) continue;
+      const std::vector<std::size_t> parts = coveringParts(overlaps_of_whole[w], pieces, wholes[w].pixels);
+      if (parts.empty()) continue;
+      wholes[w].classified = true;
+      for (const std::size_t p : parts) pieces[p].classified = true;
+      found(w, parts);
     }
+  }
+
+  // Over-segmentation of g into p1..pk.
+  void findOverSegmentations() {
+    findSplits(regions_.gt, regions_.overlaps_of_gt, regions_.segments,
+               [this](std::size_t g, const std::vector<std::size_t>&) {
+                 scores_.planes[g].hoover = HooverClass::over_segmented;
+                 ++scores_.hoover.over;
+               });
   }
 
   // Under-segmentation of g1..gk into p: the mirror image.
-  for (std::size_t p = 0; p < segments.size(); ++p) {
-    if (segments[p].classified) {
-      continue;
-    }
-    std::vector<std::size_t> parts;
-    std::size_t covered = 0;
-    for (const Overlap& overlap : overlaps_of_segment[p]) {
-      const Region& plane = gt[overlap.other];
-      if (!plane.classified && covers(overlap.pixels, plane.pixels)) {
-        parts.push_back(overlap.other);
-        covered += overlap.pixels;
-      }
-    }
-    if (parts.size() >= 2 && covers(covered, segments[p].pixels)) {
-      segments[p].classified = true;
-      for (const std::size_t g : parts) {
-        gt[g].classified = true;
-        scores.planes[g].hoover = HooverClass::under_segmented;
-      }
-      ++scores.hoover.under;
-    }
+  void findUnderSegmentations() {
+    findSplits(regions_.segments, regions_.overlaps_of_segment, regions_.gt,
+               [this](std::size_t, const std::vector<std::size_t>& planes) {
+                 for (const std::size_t g : planes) scores_.planes[g].hoover = HooverClass::under_segmented;
+                 ++scores_.hoover.under;
+               });
   }
 
-  scores.hoover.missed = static_cast<std::size_t>(
-      std::count_if(gt.begin(), gt.end(), [](const Region& r) { return !r.classified; }));
-  scores.hoover.noise = static_cast<std::size_t>(std::count_if(
-      segments.begin(), segments.end(), [](const Region& r) { return !r.classified; }));
+  Regions regions_;
+  double tolerance_;
+  SegmentationScores& scores_;
+};
+
+// The false-plane fraction over the kept segments of `segments` (labels, ascending).
+double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
+                          const std::vector<std::uint8_t>& valid, const std::vector<Region>& segments) {
+  std::unordered_set<std::uint32_t> kept;
+  for (const Region& segment : segments) kept.insert(segment.label);
+  std::size_t non_plane = 0;
+  std::size_t reported_as_plane = 0;
+  for (std::size_t i = 0; i < ground_truth.size(); ++i) {
+    if (valid[i] == 0 || ground_truth[i] != 0) continue;
+    ++non_plane;
+    if (kept.count(predicted[i]) != 0) ++reported_as_plane;
+  }
+  return non_plane == 0 ? std::numeric_limits<double>::quiet_NaN()
+                        : static_cast<double>(reported_as_plane) / static_cast<double>(non_plane);
+}
+
+}  // namespace
+
+std::uint32_t defaultMinPoints(std::size_t width, std::size_t height) {
+  const double pixels = static_cast<double>(width) * static_cast<double>(height);
+  return static_cast<std::uint32_t>(std::lround(500.0 * pixels / (640.0 * 480.0)));
+}
+
+double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
+                          const std::vector<std::uint8_t>& valid, std::uint32_t min_points) {
+  checkSizes(ground_truth, predicted, valid, "falsePlaneFraction");
+  std::unordered_map<std::uint32_t, std::size_t> unused_index;
+  return falsePlaneFraction(ground_truth, predicted, valid,
+                            keptRegions(countLabels(predicted, valid), min_points, unused_index));
+}
+
+SegmentationScores evaluateSegmentation(const std::vector<std::uint32_t>& ground_truth,
+                                        const std::vector<std::uint32_t>& predicted,
+                                        const std::vector<std::uint8_t>& valid, const MetricsOptions& options) {
+  checkSizes(ground_truth, predicted, valid, "evaluateSegmentation");
+  if (!(options.tolerance > 0.5 && options.tolerance <= 1.0)) {
+    throw std::invalid_argument("evaluateSegmentation: tolerance must be in (0.5, 1], got " +
+                                std::to_string(options.tolerance));
+  }
+  Regions regions = keptRegionsAndOverlaps(ground_truth, predicted, valid, options.min_points);
+  SegmentationScores scores;
+  scores.predicted_segments = regions.segments.size();
+  scores.false_plane_fraction = falsePlaneFraction(ground_truth, predicted, valid, regions.segments);
+  scoreIou(regions, scores);
+  HooverClassifier(std::move(regions), options.tolerance, scores).classify();
   return scores;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// Segmentation quality against ground truth, exactly as /work/shared/reference/metrics.md
-// defines it: per-plane IoU, mean and weighted IoU (the paper's Table I), and the Hoover et al.
-// 1996 classification (SegComp). Plain arrays, no PCL, no I/O.
+// Segmentation quality against ground truth, exactly as the project's metrics definition
+// (metrics.md) gives it: per-plane IoU, mean and weighted IoU (the paper's Table I), the Hoover
+// et al. 1996 classification (SegComp), and the fraction of non-plane surface reported as
+// plane. Plain arrays, no PCL, no I/O.
 
 #include <cstddef>
 #include <cstdint>
@@ -27,10 +28,10 @@ enum class HooverClass { correct, over_segmented, under_segmented, missed };
 
 /// One kept ground-truth plane.
 struct PlaneScore {
-  std::uint32_t label = 0;            ///< its ground-truth label
-  std::size_t pixels = 0;             ///< |g|, valid pixels only
-  double iou = 0.0;                   ///< max over kept predicted segments of |g n p| / |g u p|
-  std::uint32_t best_segment = 0;     ///< the predicted label reaching `iou`; 0 if none overlaps
+  std::uint32_t label = 0;         ///< its ground-truth label
+  std::size_t pixels = 0;          ///< |g|, valid pixels only
+  double iou = 0.0;                ///< max over kept predicted segments of |g n p| / |g u p|
+  std::uint32_t best_segment = 0;  ///< the predicted label reaching `iou`; 0 if none overlaps
   HooverClass hoover = HooverClass::missed;
 };
 
@@ -46,14 +47,25 @@ struct HooverCounts {
 };
 
 struct SegmentationScores {
-  std::vector<PlaneScore> planes;        ///< kept ground-truth planes, by ascending label
-  std::size_t predicted_segments = 0;    ///< kept predicted segments
+  std::vector<PlaneScore> planes;      ///< kept ground-truth planes, by ascending label
+  std::size_t predicted_segments = 0;  ///< kept predicted segments
   /// Averages of PlaneScore::iou, plain and weighted by |g|. NaN when no plane is kept:
   /// there is nothing to average, and 0 would read as "found nothing".
   double mean_iou = 0.0;
   double weighted_iou = 0.0;
   HooverCounts hoover;
+  /// See falsePlaneFraction; NaN when the ground truth has no valid pixel of label 0.
+  double false_plane_fraction = 0.0;
 };
+
+/// The share of the valid pixels with ground-truth label 0 (a surface that is not a plane:
+/// a ball, a pipe, a person) that lie in a kept predicted segment (label != 0 and at least
+/// `min_points` valid pixels: smaller segments are ignored, as everywhere in these metrics).
+/// NaN when there is no valid pixel of ground-truth label 0: undefined, not 0, so that such
+/// clouds are left out of averages. IoU and the Hoover counts do not see these errors.
+/// Throws std::invalid_argument if the three vectors differ in size.
+double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
+                          const std::vector<std::uint8_t>& valid, std::uint32_t min_points);
 
 /// Compares `predicted` with `ground_truth`, both row-major label grids of one size, label 0
 /// meaning "not on a plane". `valid[i] != 0` marks the pixels that count; pass a pixel as

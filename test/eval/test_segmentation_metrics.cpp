@@ -16,6 +16,7 @@ namespace {
 
 using floodplane::eval::defaultMinPoints;
 using floodplane::eval::evaluateSegmentation;
+using floodplane::eval::falsePlaneFraction;
 using floodplane::eval::HooverClass;
 using floodplane::eval::MetricsOptions;
 using floodplane::eval::SegmentationScores;
@@ -55,8 +56,8 @@ SegmentationScores score(const std::vector<std::string>& gt, const std::vector<s
   return evaluateSegmentation(g, grid(pred), allValid(g.size()), options);
 }
 
-void expectCounts(const SegmentationScores& s, std::size_t correct, std::size_t over,
-                  std::size_t under, std::size_t missed, std::size_t noise) {
+void expectCounts(const SegmentationScores& s, std::size_t correct, std::size_t over, std::size_t under,
+                  std::size_t missed, std::size_t noise) {
   EXPECT_EQ(s.hoover.correct, correct);
   EXPECT_EQ(s.hoover.over, over);
   EXPECT_EQ(s.hoover.under, under);
@@ -223,10 +224,54 @@ TEST(SegmentationMetrics, ToleranceOutsideHooversRangeIsRejected) {
 }
 
 TEST(SegmentationMetrics, GridsOfDifferentSizesAreRejected) {
-  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"111"}), allValid(2)),
-               std::invalid_argument);
-  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"11"}), allValid(3)),
-               std::invalid_argument);
+  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"111"}), allValid(2)), std::invalid_argument);
+  EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"11"}), allValid(3)), std::invalid_argument);
+}
+
+TEST(SegmentationMetrics, FalsePlaneFractionIsTheShareOfNonPlanePixelsInASegment) {
+  // Ground truth 0 at columns 5-9 of both rows (a curved surface): 10 pixels. Segment 3 claims
+  // 3 of them in the first row, segment 4 one in the second: 4 / 10.
+  const std::vector<std::string> gt = {"11111.....", "11111....."};
+  const std::vector<std::string> pred = {"22222333..", "222224...."};
+  EXPECT_DOUBLE_EQ(score(gt, pred).false_plane_fraction, 0.4);
+  EXPECT_DOUBLE_EQ(falsePlaneFraction(grid(gt), grid(pred), allValid(20), 1), 0.4);
+  // Every non-plane pixel in a segment: 1.
+  EXPECT_DOUBLE_EQ(score({"11111....."}, {"2222233333"}).false_plane_fraction, 1.0);
+  // None: 0, not undefined.
+  EXPECT_DOUBLE_EQ(score({"11111....."}, {"22222....."}).false_plane_fraction, 0.0);
+}
+
+TEST(SegmentationMetrics, FalsePlaneFractionCountsOnlyValidPixelsAndKeptSegments) {
+  // Ground truth 0 at columns 5-10, of which 5 and 6 have no point: 4 valid non-plane pixels.
+  // Segment 3 claims columns 5, 6, 7 and 10 (2 of them valid), segment 4 column 8.
+  const auto gt = grid({"11111......"});
+  const auto pred = grid({"222223334.3"});
+  const auto valid = mask({".....xx...."});
+  EXPECT_DOUBLE_EQ(falsePlaneFraction(gt, pred, valid, 1), 3.0 / 4.0);
+  // Sizes count valid pixels: segment 3 has 2, segment 4 has 1. With a minimum size of 2
+  // segment 4 is ignored, with 3 both are.
+  EXPECT_DOUBLE_EQ(falsePlaneFraction(gt, pred, valid, 2), 2.0 / 4.0);
+  EXPECT_DOUBLE_EQ(falsePlaneFraction(gt, pred, valid, 3), 0.0);
+  MetricsOptions options;
+  options.min_points = 2;
+  EXPECT_DOUBLE_EQ(evaluateSegmentation(gt, pred, valid, options).false_plane_fraction, 2.0 / 4.0);
+}
+
+TEST(SegmentationMetrics, FalsePlaneFractionIsUndefinedWithoutNonPlanePixels) {
+  // No ground-truth 0 at all.
+  EXPECT_TRUE(std::isnan(score({"1111122222"}, {"3333333333"}).false_plane_fraction));
+  // Ground-truth 0 only where there is no point.
+  const auto gt = grid({"11111..."});
+  const auto pred = grid({"22222222"});
+  EXPECT_TRUE(std::isnan(falsePlaneFraction(gt, pred, mask({".....xxx"}), 1)));
+  EXPECT_TRUE(std::isnan(evaluateSegmentation(gt, pred, mask({".....xxx"}), keepAll()).false_plane_fraction));
+  // The IoU and Hoover counts are still there.
+  EXPECT_DOUBLE_EQ(evaluateSegmentation(gt, pred, mask({".....xxx"}), keepAll()).mean_iou, 1.0);
+}
+
+TEST(SegmentationMetrics, FalsePlaneFractionRejectsGridsOfDifferentSizes) {
+  EXPECT_THROW(falsePlaneFraction(grid({"11"}), grid({"111"}), allValid(2), 1), std::invalid_argument);
+  EXPECT_THROW(falsePlaneFraction(grid({"11"}), grid({"11"}), allValid(3), 1), std::invalid_argument);
 }
 
 TEST(SegmentationMetrics, DefaultMinimumSizeScalesWithThePixelCount) {

@@ -40,8 +40,8 @@ class PcdCompare : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("pcd_compare_test_" + std::string(info->name()) + "_" +
-                                        std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() /
+           ("pcd_compare_test_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -51,8 +51,8 @@ class PcdCompare : public ::testing::Test {
   Outcome run(const std::string& arguments) const {
     const fs::path out = dir_ / "stdout.txt";
     const fs::path err = dir_ / "stderr.txt";
-    const std::string command = quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" +
-                                quoted(out.string()) + " 2>" + quoted(err.string());
+    const std::string command =
+        quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
     const int status = std::system(command.c_str());
     Outcome outcome;
     outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -64,12 +64,26 @@ class PcdCompare : public ::testing::Test {
   fs::path dir_;
 };
 
+// A result's mean and weighted IoU are the plain and the size-weighted averages of the IoU of
+// its kept ground-truth planes.
+void expectIouAveragesOfThePlanes(const nlohmann::json& result, const std::string& what) {
+  const auto& planes = result["per_plane"];
+  ASSERT_FALSE(planes.empty()) << what;
+  double sum = 0.0, weighted = 0.0, pixels = 0.0;
+  for (const auto& plane : planes) {
+    sum += plane["iou"].get<double>();
+    weighted += plane["iou"].get<double>() * plane["pixels"].get<double>();
+    pixels += plane["pixels"].get<double>();
+  }
+  EXPECT_NEAR(result["mean_iou"].get<double>(), sum / static_cast<double>(planes.size()), 1e-12) << what;
+  EXPECT_NEAR(result["weighted_iou"].get<double>(), weighted / pixels, 1e-12) << what;
+}
+
 // Number of Markdown rows `| <scene> | <method> |`.
 int rowCount(const std::string& markdown, const std::string& scene, const std::string& method) {
   const std::string row = "| " + scene + " | " + method + " |";
   int count = 0;
-  for (std::size_t at = markdown.find(row); at != std::string::npos;
-       at = markdown.find(row, at + 1)) {
+  for (std::size_t at = markdown.find(row); at != std::string::npos; at = markdown.find(row, at + 1)) {
     ++count;
   }
   return count;
@@ -79,8 +93,7 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
   const fs::path json_file = dir_ / "out.json";
   const fs::path csv_file = dir_ / "out.csv";
   const Outcome outcome = run("--repeat 2 --json " + quoted(json_file.string()) + " --csv " +
-                              quoted(csv_file.string()) + " " + quoted(kTabletop) + " " +
-                              quoted(kStaircase));
+                              quoted(csv_file.string()) + " " + quoted(kTabletop) + " " + quoted(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   for (const std::string method : {"floodplane", "ransac", "omps"}) {
     EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", method), 1) << method;
@@ -102,9 +115,7 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
     ASSERT_EQ(scene["methods"].size(), 3u);
     for (const auto& [method, result] : scene["methods"].items()) {
       ASSERT_TRUE(result["mean_iou"].is_number()) << method;
-      const double mean_iou = result["mean_iou"].get<double>();
-      EXPECT_GE(mean_iou, 0.0) << method;
-      EXPECT_LE(mean_iou, 1.0) << method;
+      expectIouAveragesOfThePlanes(result, method);
       EXPECT_GT(result["median_ms"].get<double>(), 0.0) << method;
       EXPECT_LE(result["min_ms"].get<double>(), result["median_ms"].get<double>()) << method;
       // Every kept ground-truth plane is either matched or not: the Hoover classes of the
@@ -114,17 +125,33 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
       for (const auto& plane : result["per_plane"]) {
         classified += plane["hoover"] == "missed" ? 0 : 1;
       }
-      EXPECT_EQ(classified + hoover["missed"].get<std::size_t>(),
-                result["ground_truth_planes"].get<std::size_t>())
+      EXPECT_EQ(classified + hoover["missed"].get<std::size_t>(), result["ground_truth_planes"].get<std::size_t>())
           << method;
     }
     EXPECT_DOUBLE_EQ(scene["methods"]["floodplane"]["ratio_to_floodplane"].get<double>(), 1.0);
   }
+  // The mean rows average the scenes; the false-plane fraction only where it is defined:
+  // the tabletop has a curved object (ground truth 0), the staircase has none.
+  const auto& tabletop = json["scenes"][0]["name"] == "tabletop.kinect" ? json["scenes"][0] : json["scenes"][1];
+  const auto& staircase = json["scenes"][0]["name"] == "tabletop.kinect" ? json["scenes"][1] : json["scenes"][0];
+  ASSERT_EQ(staircase["name"], "staircase.none");
   for (const std::string method : {"floodplane", "ransac", "omps"}) {
-    const double mean_iou = json["means"][method]["mean_iou"].get<double>();
-    EXPECT_GE(mean_iou, 0.0);
-    EXPECT_LE(mean_iou, 1.0);
+    const auto& mean = json["means"][method];
+    EXPECT_DOUBLE_EQ(mean["mean_iou"].get<double>(), (tabletop["methods"][method]["mean_iou"].get<double>() +
+                                                      staircase["methods"][method]["mean_iou"].get<double>()) /
+                                                         2.0)
+        << method;
+    ASSERT_TRUE(tabletop["methods"][method]["false_plane_fraction"].is_number()) << method;
+    EXPECT_TRUE(staircase["methods"][method]["false_plane_fraction"].is_null()) << method;
+    EXPECT_EQ(mean["false_plane_fraction"], tabletop["methods"][method]["false_plane_fraction"]) << method;
+    EXPECT_EQ(mean["scenes_with_non_plane_ground_truth"], 1) << method;
+    // One mean per sensor model named in the file names, over that model's one scene here.
+    EXPECT_EQ(rowCount(outcome.out, "**mean kinect** (1 scenes)", method), 1) << method;
+    EXPECT_EQ(rowCount(outcome.out, "**mean none** (1 scenes)", method), 1) << method;
+    EXPECT_EQ(json["means_by_sensor"]["kinect"][method]["mean_iou"], tabletop["methods"][method]["mean_iou"]);
+    EXPECT_EQ(json["means_by_sensor"]["none"][method]["mean_iou"], staircase["methods"][method]["mean_iou"]);
   }
+  EXPECT_NE(outcome.out.find("| noise | false planes |"), std::string::npos);
 
   // CSV: a header and one line per scene and method.
   std::istringstream csv(readFile(csv_file));
@@ -134,6 +161,7 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
   }
   ASSERT_EQ(lines.size(), 7u);
   EXPECT_EQ(lines[0].rfind("scene,file,method,", 0), 0u);
+  EXPECT_EQ(lines[0].substr(lines[0].rfind(',') + 1), "false_plane_fraction");
 }
 
 TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
@@ -148,8 +176,7 @@ TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
 
 TEST_F(PcdCompare, MissingFileIsReportedByNameAndTheOtherFilesAreStillCompared) {
   const std::string missing = (dir_ / "no_such_scene.pcd").string();
-  const Outcome outcome =
-      run("--repeat 2 --methods floodplane " + quoted(missing) + " " + quoted(kStaircase));
+  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(missing) + " " + quoted(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
   EXPECT_NE(outcome.err.find(missing + ": no such file"), std::string::npos) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1) << outcome.out;
@@ -168,16 +195,12 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
   const fs::path no_xyz = dir_ / "labels_only.pcd";
   pcl::io::savePCDFileBinary(no_xyz.string(), labels_only);
 
-  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(text.string()) + " " +
-                              quoted(flat.string()) + " " + quoted(no_xyz.string()) + " " +
-                              quoted(kStaircase));
+  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(text.string()) + " " + quoted(flat.string()) +
+                              " " + quoted(no_xyz.string()) + " " + quoted(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
-  EXPECT_NE(outcome.err.find(text.string() + ": not a readable PCD file"), std::string::npos)
-      << outcome.err;
-  EXPECT_NE(outcome.err.find(flat.string() + ": not an organized cloud"), std::string::npos)
-      << outcome.err;
-  EXPECT_NE(outcome.err.find(no_xyz.string() + ": has no x, y, z fields"), std::string::npos)
-      << outcome.err;
+  EXPECT_NE(outcome.err.find(text.string() + ": not a PCD file"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find(flat.string() + ": unorganized cloud"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find(no_xyz.string() + ": the cloud has no x y z fields"), std::string::npos) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
 }
 
@@ -207,14 +230,15 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
 TEST_F(PcdCompare, OmpsOverAWholeSceneBatchFinishesAndEachSceneIsIndependent) {
   const fs::path alone_json = dir_ / "alone.json";
   const fs::path batch_json = dir_ / "batch.json";
-  const Outcome batch = run("--quiet --repeat 3 --methods omps --json " + quoted(batch_json.string()) +
-                            " " + quoted(FLOODPLANE_RENDERED_DIR));
+  const Outcome batch = run("--quiet --repeat 3 --methods omps --json " + quoted(batch_json.string()) + " " +
+                            quoted(FLOODPLANE_RENDERED_DIR));
   ASSERT_EQ(batch.exit_code, 0) << batch.err;
   const nlohmann::json scenes = nlohmann::json::parse(readFile(batch_json))["scenes"];
   ASSERT_GE(scenes.size(), 10u);
   const std::string last_scene = std::string(FLOODPLANE_RENDERED_DIR) + "/tabletop.none.pcd";
-  ASSERT_EQ(run("--quiet --repeat 3 --methods omps --json " + quoted(alone_json.string()) + " " +
-                quoted(last_scene)).exit_code, 0);
+  ASSERT_EQ(run("--quiet --repeat 3 --methods omps --json " + quoted(alone_json.string()) + " " + quoted(last_scene))
+                .exit_code,
+            0);
   const nlohmann::json alone = nlohmann::json::parse(readFile(alone_json))["scenes"][0];
   bool found = false;
   for (const auto& scene : scenes) {
@@ -235,8 +259,8 @@ TEST_F(PcdCompare, CloudWithoutLabelsGivesRuntimeOnly) {
   const fs::path file = dir_ / "unlabelled.pcd";
   pcl::io::savePCDFileBinary(file.string(), xyz);
   const fs::path json_file = dir_ / "out.json";
-  const Outcome outcome = run("--repeat 2 --methods floodplane,omps --json " +
-                              quoted(json_file.string()) + " " + quoted(file.string()));
+  const Outcome outcome =
+      run("--repeat 2 --methods floodplane,omps --json " + quoted(json_file.string()) + " " + quoted(file.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "unlabelled", "floodplane"), 1);
   EXPECT_EQ(outcome.out.find("mean IoU"), std::string::npos);
@@ -260,10 +284,25 @@ TEST_F(PcdCompare, DirectoryInputComparesItsPcdFilesInSortedOrder) {
   EXPECT_LT(first, second);
 }
 
+TEST_F(PcdCompare, AveragesPerSensorModelNamedInTheFileName) {
+  fs::copy_file(kStaircase, dir_ / "wall.scanner.pcd");
+  fs::copy_file(kStaircase, dir_ / "frame_1.250.pcd");  // a time stamp, not a sensor model
+  fs::copy_file(kStaircase, dir_ / "plain.pcd");
+  const fs::path json_file = dir_ / "out.json";
+  const Outcome outcome =
+      run("--repeat 2 --quiet --methods floodplane --json " + quoted(json_file.string()) + " " + quoted(dir_.string()));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_EQ(rowCount(outcome.out, "**mean** (3 scenes)", "floodplane"), 1) << outcome.out;
+  EXPECT_EQ(rowCount(outcome.out, "**mean scanner** (1 scenes)", "floodplane"), 1) << outcome.out;
+  const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+  ASSERT_EQ(json["means_by_sensor"].size(), 1u) << json["means_by_sensor"].dump();
+  EXPECT_EQ(json["means_by_sensor"]["scanner"]["floodplane"]["scenes"], 1);
+}
+
 TEST_F(PcdCompare, PngShowsGroundTruthAndEachMethodSideBySide) {
   const fs::path png_dir = dir_ / "images";
-  const Outcome outcome = run("--repeat 2 --quiet --methods floodplane,omps --png " +
-                              quoted(png_dir.string()) + " " + quoted(kStaircase));
+  const Outcome outcome =
+      run("--repeat 2 --quiet --methods floodplane,omps --png " + quoted(png_dir.string()) + " " + quoted(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::string png = readFile(png_dir / "staircase.none.png");
   ASSERT_GT(png.size(), 24u);
@@ -286,9 +325,7 @@ TEST_F(PcdCompare, ResolutionsAndPhasesAddTheirTables) {
   const auto& scene = json["scenes"][0];
   for (const std::string factor : {"1", "2", "4", "8"}) {
     ASSERT_TRUE(scene["resolutions"].contains(factor)) << factor;
-    const double iou = scene["resolutions"][factor]["mean_iou"].get<double>();
-    EXPECT_GE(iou, 0.0);
-    EXPECT_LE(iou, 1.0);
+    expectIouAveragesOfThePlanes(scene["resolutions"][factor], "sub-sampling " + factor);
   }
   double share_sum = 0.0;
   for (const auto& [phase, share] : scene["phases"]["share"].items()) {

@@ -1,57 +1,11 @@
 // The rules pcd_segment applies before and after segmenting, without running it.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-
-#include "inputs.h"
+#include "output_paths.h"
 #include "planes_json.h"
 
 namespace {
-
-namespace fs = std::filesystem;
-
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "pcd_segment_helpers.XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-void touch(const fs::path& path) { std::ofstream(path) << "x"; }
-
-TEST(ExpandInputs, ListsADirectorysPcdFilesSortedAndSkipsOthers) {
-  TempDir dir;
-  for (const char* name : {"c.pcd", "a.pcd", "b.pcd", "notes.txt", "d.pcd.bak"}) touch(dir.path() / name);
-  fs::create_directory(dir.path() / "sub.pcd");  // a directory is not a PCD file
-  const auto files = pcd_segment::expandInputs({dir.path().string()});
-  ASSERT_EQ(files.size(), 3u);
-  EXPECT_EQ(fs::path(files[0].path).filename(), "a.pcd");
-  EXPECT_EQ(fs::path(files[1].path).filename(), "b.pcd");
-  EXPECT_EQ(fs::path(files[2].path).filename(), "c.pcd");
-  for (const auto& file : files) EXPECT_TRUE(file.error.empty());
-}
-
-TEST(ExpandInputs, KeepsTheCommandLineOrderAndReportsBadInputsInPlace) {
-  TempDir dir;
-  touch(dir.path() / "z.pcd");
-  fs::create_directory(dir.path() / "empty");
-  const auto files = pcd_segment::expandInputs({(dir.path() / "z.pcd").string(), (dir.path() / "missing.pcd").string(),
-                                                (dir.path() / "empty").string()});
-  ASSERT_EQ(files.size(), 3u);
-  EXPECT_TRUE(files[0].error.empty());
-  EXPECT_NE(files[1].error.find("no such file"), std::string::npos);
-  EXPECT_NE(files[2].error.find("no .pcd files"), std::string::npos);
-}
 
 TEST(OutputPaths, PutsOutputsOfADirectoryRunUnderTheInputsName) {
   const auto paths = pcd_segment::outputPaths("/data/frame.7.pcd", "out", false);

@@ -1,0 +1,28 @@
+#pragma once
+// Where pcd_segment's outputs go. No PCL here: plain paths, so the rules can be tested
+// without running a segmentation.
+
+#include <string>
+
+namespace pcd_segment {
+
+/// The name outputs are derived from: the file name without its `.pcd` extension.
+std::string outputName(const std::string& input_path);
+
+/// The files written for one input.
+struct OutputPaths {
+  std::string pcd;
+  std::string png;
+  std::string json;
+};
+
+/// True when `output` names a PCD file rather than a directory (it ends in ".pcd").
+bool namesPcdFile(const std::string& output);
+
+/// The outputs for `input_path`. With `single_file` (one input and -o ending in .pcd) the PCD
+/// is `output` itself and the PNG and JSON sit next to it with the same stem (<stem>.png,
+/// <stem>.json); otherwise `output` is a directory receiving <name>.labels.pcd,
+/// <name>.labels.png, <name>.planes.json.
+OutputPaths outputPaths(const std::string& input_path, const std::string& output, bool single_file);
+
+}  // namespace pcd_segment

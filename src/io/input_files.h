@@ -1,0 +1,26 @@
+#pragma once
+// Which files a batch tool reads: the command line's files, and the input files inside the
+// directories it names. Plain paths, no PCL, so the rules can be tested without reading a file.
+
+#include <string>
+#include <vector>
+
+namespace floodplane::io {
+
+/// One command-line input after expansion: a file to read, or an input that could not be
+/// expanded (missing, or a directory without input files), kept so that it is reported in the
+/// order the user gave it.
+struct InputFile {
+  std::string path;
+  std::string error;  ///< empty for a file to read
+};
+
+/// Expands the command-line inputs: a file stays itself (whatever its extension: the reader
+/// decides whether it can read it), a directory becomes its files whose extension is one of
+/// `extensions` (not recursive), sorted by path so that batches run in a reproducible order.
+/// A missing input, a directory that cannot be listed and a directory without such files each
+/// become one entry with an error.
+std::vector<InputFile> expandInputs(const std::vector<std::string>& arguments,
+                                    const std::vector<std::string>& extensions = {".pcd"});
+
+}  // namespace floodplane::io

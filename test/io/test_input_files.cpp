@@ -1,0 +1,85 @@
+// Which files a batch reads: the command line's files, and the input files in its directories.
+
+#include "io/input_files.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using floodplane::io::expandInputs;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "floodplane_input_files.XXXXXX").string();
+    if (::mkdtemp(pattern.data()) != nullptr) path_ = pattern;
+  }
+  ~TempDir() {
+    if (!path_.empty()) fs::remove_all(path_);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+void touch(const fs::path& path) { std::ofstream(path) << "x"; }
+
+TEST(ExpandInputs, ListsADirectorysPcdFilesSortedAndSkipsOthers) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  for (const char* name : {"c.pcd", "a.pcd", "b.pcd", "notes.txt", "d.pcd.bak"}) touch(dir.path() / name);
+  fs::create_directory(dir.path() / "sub.pcd");  // a directory is not a PCD file
+  const auto files = expandInputs({dir.path().string()});
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(fs::path(files[0].path).filename(), "a.pcd");
+  EXPECT_EQ(fs::path(files[1].path).filename(), "b.pcd");
+  EXPECT_EQ(fs::path(files[2].path).filename(), "c.pcd");
+  for (const auto& file : files) EXPECT_TRUE(file.error.empty());
+}
+
+TEST(ExpandInputs, KeepsTheCommandLineOrderAndReportsBadInputsInPlace) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  touch(dir.path() / "z.pcd");
+  fs::create_directory(dir.path() / "empty");
+  const auto files = expandInputs(
+      {(dir.path() / "z.pcd").string(), (dir.path() / "missing.pcd").string(), (dir.path() / "empty").string()});
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_TRUE(files[0].error.empty());
+  EXPECT_NE(files[1].error.find("no such file"), std::string::npos);
+  EXPECT_NE(files[2].error.find("no .pcd files"), std::string::npos);
+}
+
+TEST(ExpandInputs, KeepsAFileOfAnyExtensionThatIsNamedOnTheCommandLine) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  touch(dir.path() / "frame.bin");
+  const auto files = expandInputs({(dir.path() / "frame.bin").string()});
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0].path, (dir.path() / "frame.bin").string());
+  EXPECT_TRUE(files[0].error.empty());
+}
+
+TEST(ExpandInputs, ListsTheExtensionsItIsGiven) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  for (const char* name : {"b.png", "a.pcd", "c.txt"}) touch(dir.path() / name);
+  const auto files = expandInputs({dir.path().string()}, {".png", ".pcd"});
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(fs::path(files[0].path).filename(), "a.pcd");
+  EXPECT_EQ(fs::path(files[1].path).filename(), "b.png");
+  const auto none = expandInputs({dir.path().string()}, {".ply"});
+  ASSERT_EQ(none.size(), 1u);
+  EXPECT_EQ(none[0].error, "directory contains no .ply files");
+}
+
+}  // namespace
