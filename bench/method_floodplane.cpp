@@ -6,6 +6,7 @@
 
 #include "bench_frames.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
+#include "io/params_json.h"
 #include "methods.h"
 
 namespace floodplane::bench {
@@ -59,12 +60,7 @@ void add(const std::string& name, FrameSource frame, int subsampling, bool phase
 }  // namespace
 
 std::string floodplaneConfiguration() {
-  const Params p;
-  std::ostringstream out;
-  out << "floodplane: segmentAndRefine, sigma_plane " << p.distance_threshold << " m, sigma_seed " << p.seed_size
-      << " m, theta " << p.angular_threshold << " rad, sigma_merge " << p.merge_distance << " m, min inliers "
-      << p.min_inliers << ", depth noise c " << p.depth_noise_coefficient << " /m";
-  return out.str();
+  return "floodplane: segmentAndRefine, " + floodplane::io::describeParams(Params());
 }
 
 void registerFloodplane() {

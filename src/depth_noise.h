@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "floodplane/params.h"
+#include "floodplane/segmenter.h"
 
 namespace floodplane {
 
@@ -17,9 +17,10 @@ struct DepthNoise {
   double constant = 0.0;   ///< sigma_0 [m]
   double quadratic = 0.0;  ///< c [1/m]; 0 with sigma_0 = 0: the paper's fixed thresholds
 
-  static DepthNoise fromParams(const Params& params) {
+  static DepthNoise of(const NoiseModel& model) {
     DepthNoise noise;
-    noise.quadratic = params.depth_noise_coefficient;
+    noise.constant = model.sigma_constant;
+    noise.quadratic = model.sigma_quadratic;
     return noise;
   }
 

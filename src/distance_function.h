@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "depth_noise.h"
-#include "floodplane/params.h"
+#include "tolerances.h"
 #include "simd.h"
 #include "vec3.h"
 
@@ -33,27 +33,30 @@ inline float noiseRangeSq(const Vec3& p, const Vec3& q) { return nearerRangeSq(p
 /// - sigma_euclidean(r): on a plane n.P + d = 0 the spacing of pixel neighbours is
 ///   alpha r^2 / |d| (alpha: angular pixel pitch), and |d| is the same for the whole plane,
 ///   so the spacing grows as r^2 with one constant per plane (Eq. 8 measures it at the seed).
-///   We allow twice that, plus the depth noise of both points (3 sqrt(2) c r^2). Both terms
-///   grow with r^2, so sigma_euclidean(r)^2 = K r^4. Without this, a seed's spacing would cut
-///   a floor into depth bands.
+///   We allow twice that, plus the depth noise of both points (3 sqrt(2) sigma(r)). Without
+///   this, a seed's spacing would cut a floor into depth bands.
 /// Thresholds are precomputed floats: the test runs once or twice per pixel of every flood.
 struct FloodCriterion {
-  Vec3 normal;                      ///< n of the current plane estimate (unit)
-  float offset = 0.f;               ///< d of the current plane estimate: n . P + d = 0
-  float plane_threshold = 0.f;      ///< sigma_plane [m]
-  float plane_noise_offset = 0.f;   ///< 3 sigma_0
-  float plane_noise_factor = 0.f;   ///< 3 c: plane tolerance grows as 3 c r^2
-  float euclidean_factor_sq = 0.f;  ///< K: sigma_euclidean(r)^2 = K r^4
+  Vec3 normal;                     ///< n of the current plane estimate (unit)
+  float offset = 0.f;              ///< d of the current plane estimate: n . P + d = 0
+  float plane_threshold = 0.f;     ///< sigma_plane [m]
+  float plane_noise_offset = 0.f;  ///< 3 sigma_0
+  float plane_noise_factor = 0.f;  ///< 3 c: plane tolerance grows as 3 c r^2
+  float euclidean_offset = 0.f;    ///< 3 sqrt(2) sigma_0
+  float euclidean_factor = 0.f;    ///< K: sigma_euclidean(r) = 3 sqrt(2) sigma_0 + K r^2
 
-  /// The criterion of a plane (normal, offset) whose neighbouring pixels are
-  /// `spacing_per_range_sq` r^2 metres apart at range r, under `params` and `noise`.
-  static FloodCriterion make(const Vec3& normal, float offset, double spacing_per_range_sq, const Params& params,
-                             const DepthNoise& noise);
+  /// The criterion of a plane (normal, offset) seen from range `range`, whose neighbouring
+  /// pixels are `spacing_per_range_sq` r^2 metres apart at range r.
+  static FloodCriterion make(const Vec3& normal, float offset, double range, double spacing_per_range_sq,
+                             const Tolerances& tolerances);
 
   float planeTolerance(float range_sq) const {
     return std::max(plane_threshold, plane_noise_offset + plane_noise_factor * range_sq);
   }
-  float euclideanToleranceSq(float range_sq) const { return euclidean_factor_sq * range_sq * range_sq; }
+  float euclideanToleranceSq(float range_sq) const {
+    const float tolerance = euclidean_offset + euclidean_factor * range_sq;
+    return tolerance * tolerance;
+  }
 
   /// Eqs. 1-3 for q reached from its neighbour p; `distance` gets q's plane distance when
   /// the Euclidean test (Eq. 3) passes. Written so that a hole (NaN) fails.
@@ -71,7 +74,8 @@ struct FloodCriterion {
                        Float4::broadcast(plane_noise_offset) + Float4::broadcast(plane_noise_factor) * range_sq);
   }
   Float4 euclideanToleranceSq(Float4 range_sq) const {
-    return (Float4::broadcast(euclidean_factor_sq) * range_sq) * range_sq;
+    const Float4 tolerance = Float4::broadcast(euclidean_offset) + Float4::broadcast(euclidean_factor) * range_sq;
+    return tolerance * tolerance;
   }
 #endif
 };

@@ -126,8 +126,8 @@ void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0) {
   int n = 0;
   for (int y = y0; y < y0 + kPatchSide * kPatchSpacing; y += kPatchSpacing) {
     for (int x = x0; x < x0 + kPatchSide * kPatchSpacing; x += kPatchSpacing) {
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
-                            static_cast<std::size_t>(x);
+      const std::size_t i =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
       const Vec3 p = Vec3::load(grid.point(i));
       if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) return;  // holes: no clean patch
       sums.add(p);
@@ -141,8 +141,7 @@ void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0) {
   if (!(incidence >= kSmallestIncidenceCosine)) return;
   Patch patch;
   patch.range = static_cast<float>(range);
-  patch.sigma = static_cast<float>(
-      std::sqrt(fit.eigenvalues(0) * kPatchPoints / kPatchDegreesOfFreedom) / incidence);
+  patch.sigma = static_cast<float>(std::sqrt(fit.eigenvalues(0) * kPatchPoints / kPatchDegreesOfFreedom) / incidence);
   patch.depth_gap = latticeStep(depths);
   patches_.push_back(patch);
 }
@@ -193,7 +192,8 @@ NoiseModel NoiseEstimator::estimate(const PointGrid& grid) {
   }
   fitQuadratic(noise_bins, scratch_, model.sigma_constant, model.sigma_quadratic);
   // Steps only where most of the frame shows them: a few quantized bins are chance.
-  if (2 * step_bins.size() >= noise_bins.size()) fitQuadratic(step_bins, scratch_, model.step_constant, model.step_quadratic);
+  if (2 * step_bins.size() >= noise_bins.size())
+    fitQuadratic(step_bins, scratch_, model.step_constant, model.step_quadratic);
   return model;
 }
 

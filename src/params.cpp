@@ -14,10 +14,16 @@ std::string positive(double value, const char* name, const char* unit) {
   if (std::isfinite(value) && value > 0.0) return {};
   return std::string(name) + " must be a finite number of " + unit + " > 0, got " + std::to_string(value);
 }
+std::string positive(const std::optional<double>& value, const char* name, const char* unit) {
+  return value ? positive(*value, name, unit) : std::string();
+}
 
 std::string nonNegative(double value, const char* name) {
   if (std::isfinite(value) && value >= 0.0) return {};
   return std::string(name) + " must be a finite number >= 0, got " + std::to_string(value);
+}
+std::string nonNegative(const std::optional<double>& value, const char* name) {
+  return value ? nonNegative(*value, name) : std::string();
 }
 
 }  // namespace
@@ -27,7 +33,8 @@ std::string Params::problem() const {
        {positive(distance_threshold, "distance_threshold", "metres"), positive(seed_size, "seed_size", "metres"),
         positive(angular_threshold, "angular_threshold", "radians"),
         positive(merge_distance, "merge_distance", "metres"), nonNegative(maximum_curvature, "maximum_curvature"),
-        nonNegative(depth_noise_coefficient, "depth_noise_coefficient")}) {
+        nonNegative(depth_noise_coefficient, "depth_noise_coefficient"),
+        nonNegative(depth_noise_constant, "depth_noise_constant")}) {
     if (!problem.empty()) return problem;
   }
   if (angular_threshold >= M_PI / 2)

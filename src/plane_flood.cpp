@@ -232,7 +232,7 @@ class FloodVisitor {
 }  // namespace
 
 std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                             const DepthNoise& noise, DistanceBuffer& buffer, std::vector<Segment>& segments,
+                             const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
                              std::vector<SegmentEdge>& edges) {
   if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
 
@@ -240,8 +240,8 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
   // Eq. 8's spacing at the seed, as metres per r^2 (see FloodCriterion).
   const double spacing_per_range_sq =
       static_cast<double>(seed.spacing) / std::max(static_cast<double>(seed.point.squaredNorm()), 1e-12);
-  segment.criterion =
-      FloodCriterion::make(seed.normal, -seed.normal.dot(seed.point), spacing_per_range_sq, params, noise);
+  segment.criterion = FloodCriterion::make(seed.normal, -seed.normal.dot(seed.point), seed.point.norm(),
+                                           spacing_per_range_sq, tolerances);
 
   buffer.claim(seed.index, label, 0.0f);
   segment.sums.add(seed.point);

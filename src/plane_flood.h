@@ -7,7 +7,7 @@
 
 #include "connected_components.h"
 #include "distance_buffer.h"
-#include "depth_noise.h"
+#include "tolerances.h"
 #include "distance_function.h"
 #include "floodplane/params.h"
 #include "plane_sums.h"
@@ -51,7 +51,7 @@ class PlaneFlood {
   /// Appends the segment's neighbour pairs to `edges`; returns the pixels it took from other
   /// segments under Eq. 4.
   std::size_t grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                   const DepthNoise& noise, DistanceBuffer& buffer, std::vector<Segment>& segments,
+                   const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
                    std::vector<SegmentEdge>& edges);
 
   /// Pixels examined (join attempts) by the last grow, for tests and statistics.

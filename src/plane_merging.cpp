@@ -14,11 +14,8 @@ double normalVariance(const PlaneSums& sums, const PlaneFit& fit) {
 
 }  // namespace
 
-MergeCriterion::MergeCriterion(const Params& params, const DepthNoise& noise)
-    : angle_(params.angular_threshold),
-      merge_distance_(params.merge_distance),
-      fit_tolerance_(0.5 * params.distance_threshold),
-      noise_(noise) {}
+MergeCriterion::MergeCriterion(const Params& params, const Tolerances& tolerances)
+    : angle_(params.angular_threshold), tolerances_(tolerances) {}
 
 bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b, const PlaneFit& fit_b,
                                double& cost) const {
@@ -33,7 +30,7 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
     // Written as !(>=) so that a NaN anywhere rejects the merge rather than skipping the test.
     if (!(fit_a.normal.dot(fit_b.normal) >= std::cos(allowed))) return false;
     // Eq. 9, second term, both ways.
-    const double tolerance = noise_.tolerance(merge_distance_, centroid.squaredNorm());
+    const double tolerance = tolerances_.mergeDistance(centroid.norm());
     const Eigen::Vector3d between = fit_a.centroid - fit_b.centroid;
     if (std::abs(between.dot(fit_a.normal)) >= tolerance) return false;
     if (std::abs(between.dot(fit_b.normal)) >= tolerance) return false;
@@ -43,10 +40,8 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
   both.merge(b);
   const PlaneFit merged = both.fit();
   if (!merged.valid) return false;
-  const double depth_sigma = noise_.sigma(merged.centroid.squaredNorm());
-
   // Each part fits the merged plane.
-  const double fit_tolerance = std::max(fit_tolerance_, 2.0 * depth_sigma);
+  const double fit_tolerance = tolerances_.mergeFit(merged.centroid.norm());
   const double worst = std::max(a.meanSquaredDistance(merged.normal, merged.offset),
                                 b.meanSquaredDistance(merged.normal, merged.offset));
   if (!(worst <= fit_tolerance * fit_tolerance)) return false;

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "depth_noise.h"
+#include "tolerances.h"
 #include "floodplane/params.h"
 #include "plane_sums.h"
 
@@ -18,11 +18,11 @@ namespace floodplane {
 /// centroids instead of the seeds' (the running sums make them exact and free), require both
 /// centroid distances (the paper's "or" lets a small segment's plane wave a big one through),
 /// and add one test the paper lacks: each part must fit the merged plane, its RMS distance to
-/// it at most max(sigma_plane / 2, 2 sigma_depth). Without it, a 2 cm board on a wall, whose
+/// it at most Tolerances::mergeFit. Without it, a 2 cm board on a wall, whose
 /// centroid is within 3 cm of the wall's plane, would merge into the wall.
 class MergeCriterion {
  public:
-  MergeCriterion(const Params& params, const DepthNoise& noise);
+  MergeCriterion(const Params& params, const Tolerances& tolerances);
 
   /// Whether segments a and b (sums and fits) may merge; when they may, `cost` is how
   /// tightly they fit one plane (lower merges first).
@@ -31,9 +31,7 @@ class MergeCriterion {
 
  private:
   double angle_;
-  double merge_distance_;
-  double fit_tolerance_;
-  DepthNoise noise_;
+  Tolerances tolerances_;
 };
 
 /// Agglomerative hierarchical clustering of the segment graph (Sec. III-D).

@@ -15,12 +15,13 @@ namespace {
 // A plane's thresholds for pixels that join it after merging. The Euclidean tolerance
 // follows from the plane itself: neighbouring pixels on n.P + d = 0 are alpha r^2 / |d| apart
 // (see FloodCriterion); |d| is bounded below where the plane is seen almost edge-on.
-FloodCriterion planeCriterion(const PlaneFit& fit, const Params& params, const DepthNoise& noise, float angular_pitch) {
-  const double distance = std::max(std::abs(fit.offset), 0.1 * fit.centroid.norm());
+FloodCriterion planeCriterion(const PlaneFit& fit, const Tolerances& tolerances, float angular_pitch) {
+  const double range = fit.centroid.norm();
+  const double distance = std::max(std::abs(fit.offset), 0.1 * range);
   const double spacing_per_range_sq = angular_pitch / std::max(distance, 1e-6);
   const Vec3 normal{static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
                     static_cast<float>(fit.normal.z())};
-  return FloodCriterion::make(normal, static_cast<float>(fit.offset), spacing_per_range_sq, params, noise);
+  return FloodCriterion::make(normal, static_cast<float>(fit.offset), range, spacing_per_range_sq, tolerances);
 }
 
 }  // namespace
@@ -68,9 +69,10 @@ void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, s
 // ---- RegionBuilder ---------------------------------------------------------------------
 
 void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int subsampling,
-                          const MergedSegments& merged, const Params& params, const DepthNoise& noise,
+                          const MergedSegments& merged, const Params& params, const Tolerances& tolerances,
                           float angular_pitch, bool refine, Segmentation& out) {
-  selectCandidates(subsampling, merged, params, noise, angular_pitch);
+  const std::uint32_t min_inliers = tolerances.minInliers();
+  selectCandidates(subsampling, merged, params, tolerances, angular_pitch);
   out.width = full.width;
   out.height = full.height;
   out.labels.resize(full.size());
@@ -82,13 +84,13 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
   bool renumbered = false;  // labels still to be renumbered by remap()
   if (subsampling == 1) {
     // Counts are known: number the planes by size before writing any label.
-    candidates_.sortBySize(params.min_inliers, nullptr);
+    candidates_.sortBySize(min_inliers, nullptr);
     for (std::size_t s = 1; s < merged.segment_count; ++s)
       candidate_of_segment_[s] = candidates_.remap(candidate_of_segment_[s]);
     labelFullResolution(full, segmented, subsampling, merged, out.labels);
   } else {
     labelFullResolution(full, segmented, subsampling, merged, out.labels);
-    renumbered = candidates_.sortBySize(params.min_inliers, refine ? nullptr : &params);
+    renumbered = candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
   }
   if (refine) {
     refinePlanes(full, out.labels, candidates_, renumbered, queue_);  // renumbers on its way
@@ -111,7 +113,7 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
 }
 
 void RegionBuilder::selectCandidates(int subsampling, const MergedSegments& merged, const Params& params,
-                                     const DepthNoise& noise, float angular_pitch) {
+                                     const Tolerances& tolerances, float angular_pitch) {
   std::vector<PlaneCandidate>& list = candidates_.list();
   list.clear();
   candidate_of_segment_.assign(merged.segment_count, 0);
@@ -119,11 +121,11 @@ void RegionBuilder::selectCandidates(int subsampling, const MergedSegments& merg
     if (merged.root[s] != static_cast<std::int32_t>(s)) continue;
     const PlaneSums& sums = merged.sums[s];
     // With s = 1 the counts are exact and refinement only adds pixels: drop small ones now.
-    if (subsampling == 1 && sums.count < params.min_inliers) continue;
+    if (subsampling == 1 && sums.count < tolerances.minInliers()) continue;
     const PlaneFit fit = sums.fit();
     if (!acceptablePlane(fit, params)) continue;
     PlaneCandidate candidate;
-    candidate.criterion = planeCriterion(fit, params, noise, angular_pitch);
+    candidate.criterion = planeCriterion(fit, tolerances, angular_pitch);
     if (subsampling == 1) candidate.sums = sums;  // otherwise counted at full resolution
     list.push_back(candidate);
     candidate_of_segment_[s] = static_cast<std::uint32_t>(list.size());

@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "depth_noise.h"
+#include "tolerances.h"
 #include "distance_function.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
@@ -77,12 +77,12 @@ class RegionBuilder {
   /// `full` is the input grid, `segmented` the grid that was segmented (the same when s = 1),
   /// `angular_pitch` that of `full`.
   void build(const PointGrid& full, const PointGrid& segmented, int subsampling, const MergedSegments& merged,
-             const Params& params, const DepthNoise& noise, float angular_pitch, bool refine, Segmentation& out);
+             const Params& params, const Tolerances& tolerances, float angular_pitch, bool refine, Segmentation& out);
 
  private:
   // One candidate per flat cluster; candidate_of_segment_ maps every segment to its cluster's.
-  void selectCandidates(int subsampling, const MergedSegments& merged, const Params& params, const DepthNoise& noise,
-                        float angular_pitch);
+  void selectCandidates(int subsampling, const MergedSegments& merged, const Params& params,
+                        const Tolerances& tolerances, float angular_pitch);
   void labelFullResolution(const PointGrid& full, const PointGrid& segmented, int subsampling,
                            const MergedSegments& merged, std::vector<std::uint32_t>& labels);
   // The cells of sample row gy (see Cell) and each pixel column's sample range.

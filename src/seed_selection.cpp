@@ -26,12 +26,13 @@ bool sameDirection(const Vec3& u, const Vec3& v, float cos_angle) {
 
 }  // namespace
 
-void SeedSelector::configure(const Params& params, const DepthNoise& noise, float angular_pitch, int width,
-                             int height) {
-  half_seed_ = static_cast<float>(params.seed_size) * 0.5f;
+void SeedSelector::configure(const Params& params, const Tolerances& tolerances, double scale, float angular_pitch,
+                             int width, int height) {
+  tolerances_ = &tolerances;
+  scale_ = scale;
   angle_ = static_cast<float>(params.angular_threshold);
   cos_angle_ = std::cos(angle_);
-  noise_ = noise;
+  noise_ = tolerances.noise();
   angular_pitch_ = angular_pitch;
   width_ = width;
   height_ = height;
@@ -40,8 +41,7 @@ void SeedSelector::configure(const Params& params, const DepthNoise& noise, floa
 }
 
 float SeedSelector::seedSizeAt(float range) const {
-  // The half side is at least the noise's 3-sigma tolerance.
-  return 2.0f * noise_.tolerance(half_seed_, range * range);
+  return static_cast<float>(2.0 * tolerances_->seedHalfSide(range, scale_));
 }
 
 int SeedSelector::rhoAt(float range) const {

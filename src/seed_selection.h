@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "depth_noise.h"
+#include "tolerances.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
 #include "vec3.h"
@@ -53,9 +53,11 @@ class SeedSelector {
  public:
   /// Prepares the tests for one grid. `angular_pitch` is the angle between the viewing rays
   /// of neighbouring pixels (1/f for a pinhole camera of focal length f pixels).
-  void configure(const Params& params, const DepthNoise& noise, float angular_pitch, int width, int height);
+  /// `scale` shrinks the seed cube's fixed part (the finer second pass: 1/2).
+  void configure(const Params& params, const Tolerances& tolerances, double scale, float angular_pitch, int width,
+                 int height);
 
-  /// The side of the seed cube at range r: max(sigma_seed, 6 sigma_depth(r)).
+  /// The side of the seed cube at range r: twice Tolerances::seedHalfSide.
   float seedSizeAt(float range) const;
   /// rho of Fig. 3: the pixel distance that the seed cube spans around a point at range
   /// `range`. Clamped to [2, max_rho()].
@@ -72,7 +74,8 @@ class SeedSelector {
   static float estimateAngularPitch(const PointGrid& grid, std::vector<float>& scratch, float fallback = 1.0f / 525.0f);
 
  private:
-  float half_seed_ = 0.03f;
+  const Tolerances* tolerances_ = nullptr;
+  double scale_ = 1.0;
   float cos_angle_ = 1.f;
   float angle_ = 0.1f;
   DepthNoise noise_;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "distance_buffer.h"
+#include "noise_estimation.h"
 #include "plane_flood.h"
 #include "plane_merging.h"
 #include "relabelling.h"
@@ -58,7 +59,7 @@ struct Frame {
   PointGrid grid;          // the grid that is segmented (sub-sampled when s > 1)
   float pitch = 0.f;       // its angular pixel pitch [rad]
   float full_pitch = 0.f;  // that of the full-resolution grid
-  DepthNoise noise;        // the sensor's depth noise
+  Tolerances tolerances;   // the sensor's depth noise and every length derived from it
 };
 
 }  // namespace
@@ -66,6 +67,7 @@ struct Frame {
 struct Segmenter::Workspace {
   std::vector<float> subsampled;  // x y z 0 of every s-th pixel when s > 1
   std::vector<float> pitch_scratch;
+  NoiseEstimator noise_estimator;
   DistanceBuffer buffer;
   SeedSelector selector;
   SeedSelector fine_selector;  // the second pass's smaller seed cube
@@ -79,17 +81,17 @@ struct Segmenter::Workspace {
 
   // The frame's grid (sub-sampled when s > 1), its angular pitch and noise model, and every
   // buffer reset for it.
-  Frame prepare(const PointGrid& full, const Params& params) {
+  Frame prepare(const PointGrid& full, const Params& params, NoiseModel& noise) {
     Frame frame;
     const int s = params.subsampling;
     frame.grid = sample(full, s);
     frame.pitch = SeedSelector::estimateAngularPitch(frame.grid, pitch_scratch, static_cast<float>(s) / 525.0f);
     frame.full_pitch = frame.pitch / static_cast<float>(s);
-    frame.noise = DepthNoise::fromParams(params);
-    selector.configure(params, frame.noise, frame.pitch, frame.grid.width, frame.grid.height);
-    Params fine = params;
-    fine.seed_size /= kFineSeedDivisor;
-    fine_selector.configure(fine, frame.noise, frame.pitch, frame.grid.width, frame.grid.height);
+    noise = noiseModel(full, params);
+    frame.tolerances = Tolerances(params, DepthNoise::of(noise), frame.pitch, full.size());
+    selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
+    fine_selector.configure(params, frame.tolerances, 1.0 / kFineSeedDivisor, frame.pitch, frame.grid.width,
+                            frame.grid.height);
     buffer.reset(frame.grid.size());
     segments.assign(1, Segment());  // label 0: no segment
     edges.clear();
@@ -119,7 +121,8 @@ struct Segmenter::Workspace {
           const std::int32_t label = static_cast<std::int32_t>(segments.size());
           segments.emplace_back();
           PhaseTimer timer(timed, flooding);
-          result.stats.pixels_taken_over += flood.grow(grid, seed, label, params, frame.noise, buffer, segments, edges);
+          result.stats.pixels_taken_over +=
+              flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
         }
       }
     }
@@ -136,6 +139,15 @@ struct Segmenter::Workspace {
     cluster_sums.resize(segments.size());
     for (std::size_t i = 0; i < segments.size(); ++i) cluster_sums[i] = segments[i].sums;
     merger.merge(cluster_sums, criterion);
+  }
+
+  // The noise model: measured on the full-resolution grid unless the parameters fix it.
+  NoiseModel noiseModel(const PointGrid& full, const Params& params) {
+    if (params.estimatesNoise()) return noise_estimator.estimate(full);
+    NoiseModel model;
+    model.sigma_constant = params.depth_noise_constant.value_or(0.0);
+    model.sigma_quadratic = params.depth_noise_coefficient.value_or(0.0);
+    return model;
   }
 
   // The grid to segment, every s-th pixel of every s-th row.
@@ -179,7 +191,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   Frame frame;
   {
     PhaseTimer timer(timed, result_.phases.seed_selection);
-    frame = ws.prepare(full, params_);
+    frame = ws.prepare(full, params_, result_.noise);
   }
   ws.seedAndFlood(frame, params_, timed, result_);
   {
@@ -189,7 +201,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   }
   {
     PhaseTimer timer(timed, result_.phases.merging);
-    ws.merge(MergeCriterion(params_, frame.noise));
+    ws.merge(MergeCriterion(params_, frame.tolerances));
     result_.stats.merges = ws.merger.mergeCount();
   }
   {
@@ -199,7 +211,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     merged.root = ws.merger.rootData();
     merged.sums = ws.cluster_sums.data();
     merged.segment_count = ws.segments.size();
-    ws.regions.build(full, frame.grid, params_.subsampling, merged, params_, frame.noise, frame.full_pitch,
+    ws.regions.build(full, frame.grid, params_.subsampling, merged, params_, frame.tolerances, frame.full_pitch,
                      options.refine, result_);
   }
   return result_;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
+#include "io/params_json.h"
 #include "method.h"
 
 namespace pcd_compare {
@@ -24,24 +25,15 @@ class FloodplaneMethod : public Method {
   }
 
   std::string parameters() const override {
-    const floodplane::Params& p = segmentation_.getParams();
-    std::ostringstream text;
-    text << "FloodFillPlaneSegmentation<PointXYZ>::segmentAndRefine, library defaults: "
-         << "distance threshold " << p.distance_threshold << " m, seed size " << p.seed_size
-         << " m, angular threshold " << p.angular_threshold << " rad, merge distance "
-         << p.merge_distance << " m, min inliers " << p.min_inliers << ", maximum curvature "
-         << p.maximum_curvature << ", depth noise coefficient " << p.depth_noise_coefficient
-         << " 1/m, sub-sampling " << p.subsampling
-         << (measure_phases_ ? ", phase timer on" : "");
-    return text.str();
+    return "FloodFillPlaneSegmentation<PointXYZ>::segmentAndRefine, library defaults: " +
+           floodplane::io::describeParams(segmentation_.getParams()) + (measure_phases_ ? ", phase timer on" : "");
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     segmentation_.setInputCloud(cloud);
-    segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels_, label_indices_,
-                                   boundaries_);
+    segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels_, label_indices_, boundaries_);
     const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
 
     MethodRun result;

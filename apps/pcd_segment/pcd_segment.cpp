@@ -59,18 +59,22 @@ void addInputOutputOptions(CLI::App& app, Options& options) {
       ->required();
 }
 
+// The paper's lengths are left out by default: then they follow the frame's noise and pixel
+// footprint (scale-free); given, they are fixed lengths as in the paper.
 void addParameterOptions(CLI::App& app, floodplane::Params& params) {
   app.add_option("--distance-threshold", params.distance_threshold,
-                 "sigma_plane [m]: largest point-to-plane distance in the flood (Eq. 2)")
-      ->capture_default_str();
-  app.add_option("--seed-size", params.seed_size, "sigma_seed [m]: side of the seed cube")->capture_default_str();
+                 "sigma_plane [m]: largest point-to-plane distance in the flood (Eq. 2); default: "
+                 "3 noise deviations (the paper: 0.01)");
+  app.add_option("--seed-size", params.seed_size,
+                 "sigma_seed [m]: side of the seed cube; default: from the noise and the pixel size (the paper: 0.06)");
   app.add_option("--angular-threshold", params.angular_threshold,
                  "theta_angle [rad]: largest angle between normals in the seed and merge tests")
       ->capture_default_str();
   app.add_option("--merge-distance", params.merge_distance,
-                 "sigma_plane-merge [m]: largest centroid-to-plane distance of merging planes")
-      ->capture_default_str();
-  app.add_option("--min-inliers", params.min_inliers, "Smallest number of points of a plane")->capture_default_str();
+                 "sigma_plane-merge [m]: largest centroid-to-plane distance of merging planes; default: "
+                 "3 noise deviations (the paper: 0.03)");
+  app.add_option("--min-inliers", params.min_inliers,
+                 "Smallest number of points of a plane; default: one pixel in a thousand");
   app.add_option("--subsample", params.subsampling,
                  "Segment every n-th pixel of every n-th row (1, 2, 4 or 8); labels stay full size")
       ->capture_default_str();
@@ -78,8 +82,9 @@ void addParameterOptions(CLI::App& app, floodplane::Params& params) {
                  "Largest curvature of a plane (1/3 accepts every plane)")
       ->capture_default_str();
   app.add_option("--depth-noise-coefficient", params.depth_noise_coefficient,
-                 "c [1/m] of the depth noise c r^2 (0: fixed thresholds, for exact data)")
-      ->capture_default_str();
+                 "c [1/m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
+  app.add_option("--depth-noise-constant", params.depth_noise_constant,
+                 "sigma_0 [m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
 }
 
 void addOutputFlags(CLI::App& app, Options& options) {
@@ -92,14 +97,15 @@ void addOutputFlags(CLI::App& app, Options& options) {
 // Feeds the options to the library's setters, which reject bad values with a message naming
 // the setter; the app reports that message rather than repeating the rules here.
 void applyParams(Segmentation& segmentation, const floodplane::Params& params) {
-  segmentation.setDistanceThreshold(params.distance_threshold);
-  segmentation.setSeedSize(params.seed_size);
+  if (params.distance_threshold) segmentation.setDistanceThreshold(*params.distance_threshold);
+  if (params.seed_size) segmentation.setSeedSize(*params.seed_size);
   segmentation.setAngularThreshold(params.angular_threshold);
-  segmentation.setMergeDistance(params.merge_distance);
-  segmentation.setMinInliers(params.min_inliers);
+  if (params.merge_distance) segmentation.setMergeDistance(*params.merge_distance);
+  if (params.min_inliers) segmentation.setMinInliers(*params.min_inliers);
   segmentation.setSubsampling(params.subsampling);
   segmentation.setMaximumCurvature(params.maximum_curvature);
-  segmentation.setDepthNoiseCoefficient(params.depth_noise_coefficient);
+  if (params.depth_noise_coefficient) segmentation.setDepthNoiseCoefficient(*params.depth_noise_coefficient);
+  if (params.depth_noise_constant) segmentation.setDepthNoiseConstant(*params.depth_noise_constant);
 }
 
 // Everything segmentAndRefine gives for one cloud, and the time it took.
@@ -110,6 +116,7 @@ struct Segmented {
   std::vector<pcl::PointIndices> label_indices;
   std::vector<pcl::PointIndices> boundaries;
   Segmentation::PointCloudLPtr labels;
+  floodplane::NoiseModel noise;
   double segmentation_ms = 0.0;
 };
 
@@ -121,6 +128,7 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
                                 out.boundaries);
   const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
   out.segmentation_ms = elapsed.count();
+  out.noise = segmentation.getLastSegmentation().noise;
   if (!out.labels || out.labels->size() != points->size()) {
     // The loader only passes organized clouds, so this is a library failure, not bad data.
     throw std::runtime_error("the segmentation returned no labels");
@@ -151,6 +159,7 @@ void writeReport(const std::string& path, const std::string& input, const Cloud&
   report.width = points.width;
   report.height = points.height;
   report.params = params;
+  report.noise = segmented.noise;
   report.segmentation_ms = segmented.segmentation_ms;
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);

@@ -1,5 +1,7 @@
 #include "planes_json.h"
 
+#include "io/params_json.h"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -26,10 +28,10 @@ PixelBox pixelBox(const std::vector<int>& indices, std::size_t width) {
 
 std::vector<PlaneRecord> planeRecords(
     const std::vector<pcl::ModelCoefficients>& coefficients,
-    const std::vector<pcl::PlanarRegion<pcl::PointXYZ>,
-                      Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>& regions,
-    const std::vector<pcl::PointIndices>& inliers,
-    const std::vector<pcl::PointIndices>& boundaries, std::size_t width) {
+    const std::vector<pcl::PlanarRegion<pcl::PointXYZ>, Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>&
+        regions,
+    const std::vector<pcl::PointIndices>& inliers, const std::vector<pcl::PointIndices>& boundaries,
+    std::size_t width) {
   const std::size_t count = coefficients.size();
   if (regions.size() != count || inliers.size() != count || boundaries.size() != count) {
     throw std::logic_error("planeRecords: the segmentation outputs disagree on the plane count");
@@ -71,15 +73,8 @@ nlohmann::ordered_json reportJson(const Report& report) {
       {"width", report.width},
       {"height", report.height},
       {"floodplane_version", FLOODPLANE_VERSION_STRING},
-      {"parameters",
-       {{"distance_threshold", p.distance_threshold},
-        {"seed_size", p.seed_size},
-        {"angular_threshold", p.angular_threshold},
-        {"merge_distance", p.merge_distance},
-        {"min_inliers", p.min_inliers},
-        {"subsampling", p.subsampling},
-        {"maximum_curvature", p.maximum_curvature},
-        {"depth_noise_coefficient", p.depth_noise_coefficient}}},
+      {"parameters", floodplane::io::paramsJson(p)},
+      {"noise", floodplane::io::noiseJson(report.noise)},
       {"segmentation_ms", report.segmentation_ms},
       {"plane_count", report.planes.size()},
       {"planes", planes},

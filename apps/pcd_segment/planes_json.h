@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "floodplane/params.h"
+#include "floodplane/segmenter.h"
 
 namespace pcd_segment {
 
@@ -30,9 +31,9 @@ PixelBox pixelBox(const std::vector<int>& indices, std::size_t width);
 
 /// What the report says about one plane.
 struct PlaneRecord {
-  std::uint32_t id = 0;   ///< its label: 1 for the largest plane
+  std::uint32_t id = 0;         ///< its label: 1 for the largest plane
   float normal[3] = {0, 0, 0};  ///< unit, towards the sensor
-  float d = 0;            ///< n . p + d = 0
+  float d = 0;                  ///< n . p + d = 0
   float centroid[3] = {0, 0, 0};
   std::size_t inliers = 0;
   PixelBox boundary_box;  ///< of the plane's outer boundary, which encloses all its inliers
@@ -42,10 +43,9 @@ struct PlaneRecord {
 /// (all vectors indexed by plane k-1 for label k).
 std::vector<PlaneRecord> planeRecords(
     const std::vector<pcl::ModelCoefficients>& coefficients,
-    const std::vector<pcl::PlanarRegion<pcl::PointXYZ>,
-                      Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>& regions,
-    const std::vector<pcl::PointIndices>& inliers,
-    const std::vector<pcl::PointIndices>& boundaries, std::size_t width);
+    const std::vector<pcl::PlanarRegion<pcl::PointXYZ>, Eigen::aligned_allocator<pcl::PlanarRegion<pcl::PointXYZ>>>&
+        regions,
+    const std::vector<pcl::PointIndices>& inliers, const std::vector<pcl::PointIndices>& boundaries, std::size_t width);
 
 /// Everything a report holds about one segmented file.
 struct Report {
@@ -53,11 +53,12 @@ struct Report {
   std::size_t width = 0;
   std::size_t height = 0;
   floodplane::Params params;
+  floodplane::NoiseModel noise;  ///< the depth noise the segmentation assumed
   double segmentation_ms = 0.0;  ///< segmentAndRefine alone, not reading or writing
   std::vector<PlaneRecord> planes;
 };
 
-/// The report, keys in reading order (input, size, parameters, time, planes).
+/// The report, keys in reading order (input, size, parameters, noise, time, planes).
 nlohmann::ordered_json reportJson(const Report& report);
 
 }  // namespace pcd_segment

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,20 +72,26 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   ~FloodFillPlaneSegmentation() override = default;
 
   // ---- OrganizedMultiPlaneSegmentation's parameters ----------------------------------------
-  /// Smallest number of inliers of a reported plane. Default 300.
-  void setMinInliers(unsigned min_inliers) { params_.min_inliers = min_inliers; }
-  unsigned getMinInliers() const { return params_.min_inliers; }
+  // Lengths left unset are derived from each frame's depth noise and pixel footprint (see
+  // Params); their getters then return 0.
+
+  /// Smallest number of inliers of a reported plane. Default: one pixel in a thousand.
+  void setMinInliers(unsigned min_inliers) {
+    setParam(&Params::min_inliers, std::optional<std::uint32_t>(min_inliers), "setMinInliers");
+  }
+  unsigned getMinInliers() const { return params_.min_inliers.value_or(0u); }
   /// theta_angle [rad]: the largest angle between normals in the seed tests (Eqs. 6, 7) and
   /// between merging planes (Eq. 9). Must be in (0, pi/2). Default 0.1.
   void setAngularThreshold(double angular_threshold) {
     setParam(&Params::angular_threshold, angular_threshold, "setAngularThreshold");
   }
   double getAngularThreshold() const { return params_.angular_threshold; }
-  /// sigma_plane [m]: the largest point-to-plane distance in the flood (Eq. 2). Default 0.01.
+  /// sigma_plane [m]: the largest point-to-plane distance in the flood (Eq. 2), widened to
+  /// three noise deviations where those are more. Default: derived (the paper's is 0.01).
   void setDistanceThreshold(double distance_threshold) {
-    setParam(&Params::distance_threshold, distance_threshold, "setDistanceThreshold");
+    setParam(&Params::distance_threshold, std::optional<double>(distance_threshold), "setDistanceThreshold");
   }
-  double getDistanceThreshold() const { return params_.distance_threshold; }
+  double getDistanceThreshold() const { return params_.distance_threshold.value_or(0.0); }
   /// Largest curvature lambda_0 / (lambda_0 + lambda_1 + lambda_2) of a reported plane, as
   /// in OMPS. Default 1/3, which accepts every plane (OMPS's 0.001 rejects far Kinect walls).
   void setMaximumCurvature(double maximum_curvature) {
@@ -96,22 +104,28 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   bool getProjectPoints() const { return params_.project_points; }
 
   // ---- the paper's parameters and floodplane's own --------------------------------------
-  /// sigma_seed [m]: side of the seed cube (Sec. III-C). Default 0.06.
-  void setSeedSize(double seed_size) { setParam(&Params::seed_size, seed_size, "setSeedSize"); }
-  double getSeedSize() const { return params_.seed_size; }
-  /// sigma_plane-merge [m] of Eq. 9. Default 0.03.
+  /// sigma_seed [m]: side of the seed cube (Sec. III-C). Default: derived (the paper's 0.06).
+  void setSeedSize(double seed_size) { setParam(&Params::seed_size, std::optional<double>(seed_size), "setSeedSize"); }
+  double getSeedSize() const { return params_.seed_size.value_or(0.0); }
+  /// sigma_plane-merge [m] of Eq. 9. Default: derived (the paper's 0.03).
   void setMergeDistance(double merge_distance) {
-    setParam(&Params::merge_distance, merge_distance, "setMergeDistance");
+    setParam(&Params::merge_distance, std::optional<double>(merge_distance), "setMergeDistance");
   }
-  double getMergeDistance() const { return params_.merge_distance; }
+  double getMergeDistance() const { return params_.merge_distance.value_or(0.0); }
   /// Sub-sampling factor: 1, 2, 4 or 8 (Table III). Labels are always full resolution.
   void setSubsampling(int factor) { setParam(&Params::subsampling, factor, "setSubsampling"); }
   int getSubsampling() const { return params_.subsampling; }
-  /// c [1/m] of the depth noise sigma(r) = c r^2; 0 for the paper's fixed thresholds.
+  /// c [1/m] of the depth noise sigma(r) = sigma_0 + c r^2. Setting it (or sigma_0) turns
+  /// the per-frame noise estimate off. Default: measured on each frame.
   void setDepthNoiseCoefficient(double coefficient) {
-    setParam(&Params::depth_noise_coefficient, coefficient, "setDepthNoiseCoefficient");
+    setParam(&Params::depth_noise_coefficient, std::optional<double>(coefficient), "setDepthNoiseCoefficient");
   }
-  double getDepthNoiseCoefficient() const { return params_.depth_noise_coefficient; }
+  double getDepthNoiseCoefficient() const { return params_.depth_noise_coefficient.value_or(0.0); }
+  /// sigma_0 [m] of the depth noise model (see setDepthNoiseCoefficient).
+  void setDepthNoiseConstant(double sigma_0) {
+    setParam(&Params::depth_noise_constant, std::optional<double>(sigma_0), "setDepthNoiseConstant");
+  }
+  double getDepthNoiseConstant() const { return params_.depth_noise_constant.value_or(0.0); }
   /// All parameters at once; throws std::invalid_argument naming the first bad one.
   void setParams(const Params& params);
   const Params& getParams() const { return params_; }

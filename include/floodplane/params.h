@@ -1,40 +1,52 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace floodplane {
 
-/// Every parameter of the segmentation, grouped by the stage that uses it. Defaults are the
-/// values of the paper's Sec. IV where the paper has one; the rest are stated with a reason.
-/// Lengths are metres, angles radians. `validate()` rejects values the method cannot use.
+/// Every parameter of the segmentation, grouped by the stage that uses it. Lengths are metres,
+/// angles radians.
+///
+/// The defaults are scale-free: the lengths the paper fixes in metres (sigma_plane,
+/// sigma_seed, sigma_plane-merge) are left unset and derived, frame by frame, from the
+/// sensor's depth noise (measured on the frame unless given) and the pixel footprint (range
+/// times the angle between neighbouring rays), so that one set of defaults serves a Kinect at
+/// 0.5-8 m, a structured-light scanner at 1 m with 0.5 mm pixels and exact data. Setting one
+/// of them gives it the paper's meaning, a fixed length (the noise still widens it where 3
+/// standard deviations are more). `problem()` names values the method cannot use.
 struct Params {
   // --- Sec. III-B, the distance function of the flood (Eqs. 1-4) ---
-  /// sigma_plane: largest point-to-plane distance of a pixel joining a flood (Eq. 2). [m]
-  double distance_threshold = 0.01;
+  /// sigma_plane [m]: largest point-to-plane distance of a pixel joining a flood (Eq. 2).
+  /// Unset: three standard deviations of the depth noise at the pixel's range, and at least
+  /// a quarter of the pixel footprint. The paper's value is 0.01.
+  std::optional<double> distance_threshold;
 
   // --- Sec. III-C, seed selection (Eqs. 5-8) ---
-  /// sigma_seed: side of the cube around a seed candidate that must be free of distance and
-  /// curvature discontinuities (Eq. 5-7). [m]
-  double seed_size = 0.06;
-  /// theta_angle: largest angle between normals in the seed tests (Eqs. 6, 7) and between
-  /// two planes that may merge (Eq. 9). [rad] The paper's 0.1 rad (about 6 degrees).
+  /// sigma_seed [m]: side of the cube around a seed candidate that must be free of distance
+  /// and curvature discontinuities (Eqs. 5-7). Unset: the larger of six noise standard
+  /// deviations and a few pixel footprints at the candidate's range. The paper's is 0.06.
+  std::optional<double> seed_size;
+  /// theta_angle [rad]: largest angle between normals in the seed tests (Eqs. 6, 7) and
+  /// between two planes that may merge (Eq. 9). The paper's 0.1 rad (about 6 degrees).
   double angular_threshold = 0.1;
 
   // --- Sec. III-D, plane merging (Eq. 9) ---
-  /// sigma_plane-merge: largest distance of one segment's centroid from the other's plane
-  /// for the two to merge (Eq. 9). [m]
-  double merge_distance = 0.03;
+  /// sigma_plane-merge [m]: largest distance of one segment's centroid from the other's
+  /// plane for the two to merge (Eq. 9). Unset: three noise standard deviations at the
+  /// segments' range, at least a pixel footprint. The paper's is 0.03.
+  std::optional<double> merge_distance;
 
   // --- output (OrganizedMultiPlaneSegmentation's parameters) ---
   /// Smallest number of points (at full resolution) a plane must have to be reported.
-  /// The paper gives none; 300 keeps table tops and stair steps at a few metres while
-  /// dropping the scraps that noise leaves at object borders.
-  std::uint32_t min_inliers = 300;
+  /// Unset: one pixel in a thousand of the frame (307 at 640 x 480), so that it scales with
+  /// the resolution.
+  std::optional<std::uint32_t> min_inliers;
   /// Largest surface curvature lambda_0 / (lambda_0 + lambda_1 + lambda_2) of a reported
   /// plane, as in OMPS. The default 1/3 (the largest possible value) accepts every plane:
-  /// the flood's distance test already bounds the thickness of a plane, and OMPS's default
-  /// of 0.001 rejects far, noisy walls.
+  /// the planarity test judges flatness against the noise instead, and OMPS's default of
+  /// 0.001 rejects far, noisy walls.
   double maximum_curvature = 1.0 / 3.0;
   /// Project each plane's boundary contour onto the plane along the viewing rays (as OMPS).
   bool project_points = false;
@@ -43,12 +55,16 @@ struct Params {
   /// Sub-sampling factor s in {1, 2, 4, 8}: segment every s-th pixel of every s-th row
   /// (Table III), then bring the labels back to full resolution, pixel by pixel.
   int subsampling = 1;
-  /// c in sigma_depth(r) = c * r^2: how fast the sensor's depth noise grows with range r.
-  /// The flood, seed and merge tolerances widen to 3 sigma_depth where that exceeds the
-  /// fixed thresholds above. The default fits a Kinect-class structured-light camera
-  /// (axial noise of Nguyen et al. 2012 plus 1/8-pixel disparity quantisation); 0 gives
-  /// the paper's fixed thresholds, right for noise-free or laser data.
-  double depth_noise_coefficient = 0.0019;
+  /// c [1/m] of the depth noise along a viewing ray, sigma(r) = sigma_0 + c r^2. Unset (and
+  /// depth_noise_constant unset): both are measured on each frame (self-calibration). Set
+  /// either to fix the model; the other is then 0 unless set too. A Kinect's is about 0.0015
+  /// (Nguyen et al. 2012); 0 with sigma_0 = 0 is exact data.
+  std::optional<double> depth_noise_coefficient;
+  /// sigma_0 [m] of the same model.
+  std::optional<double> depth_noise_constant;
+
+  /// Whether the noise model is measured on each frame (neither noise field set).
+  bool estimatesNoise() const { return !depth_noise_coefficient && !depth_noise_constant; }
 
   /// The first value the method cannot use, as a sentence naming its field
   /// ("seed_size must be a finite number of metres > 0, got -1.000000"); empty when all are

@@ -60,7 +60,7 @@ struct Segmentation {
   int height = 0;
   std::vector<std::uint32_t> labels;   ///< 0 = no plane, k = planes[k - 1]
   std::vector<SegmentedPlane> planes;  ///< largest first
-  NoiseModel noise;                     ///< the depth noise the segmentation assumed
+  NoiseModel noise;                    ///< the depth noise the segmentation assumed
   PhaseTimes phases;
   SegmentationStats stats;
 

@@ -91,11 +91,12 @@ TEST(DepthNoise, AddsSigmaZeroAtEveryRange) {
   EXPECT_DOUBLE_EQ(noise.tolerance(0.001, 1.0), 0.009);
 }
 
-TEST(DepthNoise, TakesItsCoefficientFromTheParameters) {
-  Params params;
-  params.depth_noise_coefficient = 0.0031;
-  EXPECT_DOUBLE_EQ(DepthNoise::fromParams(params).quadratic, 0.0031);
-  EXPECT_DOUBLE_EQ(DepthNoise::fromParams(params).constant, 0.0);
+TEST(DepthNoise, TakesBothTermsFromANoiseModel) {
+  NoiseModel model;
+  model.sigma_constant = 0.0004;
+  model.sigma_quadratic = 0.0031;
+  EXPECT_DOUBLE_EQ(DepthNoise::of(model).quadratic, 0.0031);
+  EXPECT_DOUBLE_EQ(DepthNoise::of(model).constant, 0.0004);
 }
 
 TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
@@ -110,11 +111,12 @@ TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
 // The plane z = 2 facing the camera, sigma_plane = 1 cm, neighbouring pixels 1 cm apart at the
 // seed's range of 2 m.
 FloodCriterion criterion(double noise_coefficient) {
-  Params params;
+  static Params params;
   params.distance_threshold = 0.01;
   DepthNoise noise;
   noise.quadratic = noise_coefficient;
-  return FloodCriterion::make({0, 0, -1}, 2.f, /*spacing_per_range_sq=*/0.01 / 4.0, params, noise);
+  const Tolerances tolerances(params, noise, 1.0 / 525.0, 640 * 480);
+  return FloodCriterion::make({0, 0, -1}, 2.f, 2.0, /*spacing_per_range_sq=*/0.01 / 4.0, tolerances);
 }
 
 TEST(FloodCriterion, PlaneToleranceIsTheMaximumOfSigmaPlaneAndThreeCRSquared) {
@@ -134,7 +136,7 @@ TEST(FloodCriterion, PlaneToleranceIsConstantWithoutDepthNoise) {
 TEST(FloodCriterion, EuclideanToleranceIsTwiceTheSeedSpacingAtTheSeedRange) {
   // No noise: K = 2 s0 / r0^2 = 2 * 0.01 / 4 = 0.005; sigma_e(r0) = K r0^2 = 0.02.
   const FloodCriterion c = criterion(0.f);
-  EXPECT_FLOAT_EQ(c.euclidean_factor_sq, 0.005f * 0.005f);
+  EXPECT_FLOAT_EQ(c.euclidean_factor, 0.005f);
   EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(4.f)), 0.02f, 1e-7f);
 }
 
@@ -150,20 +152,31 @@ TEST(FloodCriterion, EuclideanToleranceAddsTheDepthNoiseOfBothPoints) {
   // K = 2 s0 / r0^2 + 3 sqrt(2) c = 0.005 + 3 * 1.41421 * 0.002 = 0.0134853
   const FloodCriterion c = criterion(0.002f);
   const float k = 0.005f + 3.f * std::sqrt(2.f) * 0.002f;
-  EXPECT_NEAR(c.euclidean_factor_sq, k * k, 1e-9f);
+  EXPECT_NEAR(c.euclidean_factor, k, 1e-7f);
   EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(4.f)), 4.f * k, 1e-6f);  // 0.0539 at 2 m
   EXPECT_GT(c.euclideanToleranceSq(4.f), criterion(0.f).euclideanToleranceSq(4.f));
 }
 
-TEST(FloodCriterion, GrowsThePlaneToleranceBySigmaZeroToo) {
+TEST(FloodCriterion, GrowsBothTolerancesBySigmaZeroToo) {
   Params params;
   params.distance_threshold = 0.001;
   DepthNoise noise;
   noise.constant = 0.002;  // 3 sigma_0 = 6 mm
   noise.quadratic = 0.001;
-  const FloodCriterion c = FloodCriterion::make({0, 0, -1}, 2.f, 0.0025, params, noise);
+  const Tolerances tolerances(params, noise, 1.0 / 525.0, 640 * 480);
+  const FloodCriterion c = FloodCriterion::make({0, 0, -1}, 2.f, 2.0, 0.0025, tolerances);
   EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.009f);  // 3 (0.002 + 0.001)
   EXPECT_FLOAT_EQ(c.planeTolerance(4.f), 0.018f);  // 3 (0.002 + 0.004)
+  // sigma_e(r) = 3 sqrt(2) sigma(r) + 2 spacing(r): at 2 m 3 sqrt(2) 0.006 + 0.02.
+  EXPECT_NEAR(std::sqrt(c.euclideanToleranceSq(4.f)), 3.f * std::sqrt(2.f) * 0.006f + 0.02f, 1e-6f);
+}
+
+TEST(FloodCriterion, DerivesSigmaPlaneFromThePixelFootprintWhenItIsNotSet) {
+  const Params automatic;
+  const Tolerances tolerances(automatic, DepthNoise(), 0.002, 640 * 480);
+  // Half a footprint of 2 mrad at the seed's range: 2 mm at 2 m, 4 mm at 4 m.
+  EXPECT_FLOAT_EQ(FloodCriterion::make({0, 0, -1}, 2.f, 2.0, 0.001, tolerances).planeTolerance(4.f), 0.002f);
+  EXPECT_FLOAT_EQ(FloodCriterion::make({0, 0, -1}, 4.f, 4.0, 0.001, tolerances).planeTolerance(16.f), 0.004f);
 }
 
 TEST(FloodCriterion, AcceptsANeighbourOnThePlaneAndRejectsOneOffIt) {

@@ -243,20 +243,33 @@ TEST(FloodFillPlaneSegmentation, RejectsBadParametersInTheSetterThatTookThem) {
   Params bad;
   bad.seed_size = -1.0;
   EXPECT_NE(message([&] { seg.setParams(bad); }).find("seed_size"), std::string::npos);
-  // Nothing changed.
-  EXPECT_DOUBLE_EQ(seg.getDistanceThreshold(), 0.01);
+  EXPECT_NE(message([&] { seg.setDepthNoiseConstant(-0.001); }).find("setDepthNoiseConstant"), std::string::npos);
+  // Nothing changed: the lengths are still derived from each frame, the rest as before.
+  EXPECT_FALSE(seg.getParams().distance_threshold);
+  EXPECT_FALSE(seg.getParams().seed_size);
+  EXPECT_TRUE(seg.getParams().estimatesNoise());
   EXPECT_EQ(seg.getSubsampling(), 1);
-  EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.06);
+  EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);
 }
 
-TEST(FloodFillPlaneSegmentation, HasThePapersDefaults) {
-  const FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
-  EXPECT_DOUBLE_EQ(seg.getDistanceThreshold(), 0.01);  // sigma_plane
-  EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.06);           // sigma_seed
-  EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);    // theta_angle
-  EXPECT_DOUBLE_EQ(seg.getMergeDistance(), 0.03);      // sigma_plane-merge
+TEST(FloodFillPlaneSegmentation, DerivesThePapersLengthsFromEachFrameUnlessTheyAreSet) {
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  EXPECT_DOUBLE_EQ(seg.getDistanceThreshold(), 0.0);  // sigma_plane: derived
+  EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.0);           // sigma_seed: derived
+  EXPECT_DOUBLE_EQ(seg.getMergeDistance(), 0.0);      // sigma_plane-merge: derived
+  EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);   // theta_angle, the paper's
   EXPECT_EQ(seg.getSubsampling(), 1);
   EXPECT_FALSE(seg.getProjectPoints());
+  EXPECT_TRUE(seg.getParams().estimatesNoise());
+  // Set, they are the paper's fixed lengths.
+  seg.setDistanceThreshold(0.01);
+  seg.setSeedSize(0.06);
+  seg.setMergeDistance(0.03);
+  seg.setDepthNoiseCoefficient(0.0);
+  EXPECT_DOUBLE_EQ(seg.getDistanceThreshold(), 0.01);
+  EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.06);
+  EXPECT_DOUBLE_EQ(seg.getMergeDistance(), 0.03);
+  EXPECT_FALSE(seg.getParams().estimatesNoise());
 }
 
 TEST(FloodFillPlaneSegmentation, GivesTheSameResultWhenCloudAndSensorMoveTogether) {

@@ -40,7 +40,8 @@ TEST(NoiseEstimator, FindsNoNoiseOnExactData) {
 
 TEST(NoiseEstimator, RecoversAQuadraticNoiseCoefficientWithinTwentyPercent) {
   for (const double c : {0.001, 0.0019, 0.004}) {
-    const RenderedGrid scene = test::render(vga(), test::roomCorner(), [c](double r) { return c * r * r; }, 3);
+    const RenderedGrid scene = test::render(
+        vga(), test::roomCorner(), [c](double r) { return c * r * r; }, 3);
     const NoiseModel model = estimate(scene);
     for (const double range : {1.5, 3.0, 4.5})
       EXPECT_NEAR(model.sigma(range), c * range * range, 0.2 * c * range * range) << "c = " << c << ", r = " << range;
@@ -50,7 +51,8 @@ TEST(NoiseEstimator, RecoversAQuadraticNoiseCoefficientWithinTwentyPercent) {
 
 TEST(NoiseEstimator, SeparatesAConstantFromAQuadraticTerm) {
   const double sigma_0 = 0.003, c = 0.001;
-  const RenderedGrid scene = test::render(vga(), test::roomCorner(), [&](double r) { return sigma_0 + c * r * r; }, 5);
+  const RenderedGrid scene = test::render(
+      vga(), test::roomCorner(), [&](double r) { return sigma_0 + c * r * r; }, 5);
   const NoiseModel model = estimate(scene);
   for (const double range : {1.2, 2.5, 4.5})
     EXPECT_NEAR(model.sigma(range), sigma_0 + c * range * range, 0.2 * (sigma_0 + c * range * range)) << range;
@@ -59,7 +61,8 @@ TEST(NoiseEstimator, SeparatesAConstantFromAQuadraticTerm) {
 TEST(NoiseEstimator, FindsTheStepOfQuantizedDepths) {
   // Depths rounded to 2 mm after 0.8 mm of noise, as a scanner that reports whole steps.
   const double step = 0.002;
-  RenderedGrid scene = test::render(vga(), test::roomCorner(), [](double) { return 0.0008; }, 9);
+  RenderedGrid scene = test::render(
+      vga(), test::roomCorner(), [](double) { return 0.0008; }, 9);
   for (std::size_t i = 0; i < scene.xyz.size(); i += 3) {
     const float z = scene.xyz[i + 2];
     if (!std::isfinite(z)) continue;
@@ -81,7 +84,8 @@ TEST(NoiseEstimator, IgnoresCurvedSurfacesAndEdgesUnlessTheyAreMostOfTheFrame) {
   bumps.contains = [](const Eigen::Vector3d& p) { return p.x() < -0.3; };
   std::vector<test::ScenePlane> planes = test::roomCorner();
   planes.push_back(bumps);
-  RenderedGrid scene = test::render(vga(), planes, [c](double r) { return c * r * r; }, 11);
+  RenderedGrid scene = test::render(
+      vga(), planes, [c](double r) { return c * r * r; }, 11);
   for (std::size_t i = 0; i < scene.truth.size(); ++i) {
     if (scene.truth[i] != 9) continue;
     const float x = scene.xyz[3 * i];

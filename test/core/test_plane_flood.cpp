@@ -65,6 +65,7 @@ struct Flood {
   DepthNoise noise;  // none: the paper's fixed thresholds
 
   explicit Flood(const Grid& g) {
+    params.distance_threshold = 0.01;  // the paper's sigma_plane
     buffer.reset(static_cast<std::size_t>(g.width * g.height));
     segments.assign(1, Segment());
     flood.beginFrame();
@@ -84,7 +85,8 @@ struct Flood {
   std::size_t grow(const Grid& g, const Seed& seed) {
     const std::int32_t label = static_cast<std::int32_t>(segments.size());
     segments.emplace_back();
-    return flood.grow(g.grid(), seed, label, params, noise, buffer, segments, edges);
+    const Tolerances tolerances(params, noise, 1.0 / kFocal, static_cast<std::size_t>(g.width * g.height));
+    return flood.grow(g.grid(), seed, label, params, tolerances, buffer, segments, edges);
   }
   std::size_t count(std::int32_t label) const {
     std::size_t n = 0;

@@ -43,13 +43,20 @@ PlaneSums smallPatch(float cx, float cz, float tilt, float roughness = kRoughnes
   return sums;
 }
 
+// The paper's fixed thresholds, no noise.
 Params exactParams() {
   Params params;
-  params.depth_noise_coefficient = 0.0;  // the paper's fixed thresholds
+  params.distance_threshold = 0.01;
+  params.merge_distance = 0.03;
+  params.depth_noise_coefficient = 0.0;
   return params;
 }
 
-MergeCriterion criterionFor(const Params& params) { return MergeCriterion(params, DepthNoise::fromParams(params)); }
+MergeCriterion criterionFor(const Params& params) {
+  DepthNoise noise;
+  noise.quadratic = params.depth_noise_coefficient.value_or(0.0);
+  return MergeCriterion(params, Tolerances(params, noise, 1.0 / 525.0, 640 * 480));
+}
 
 bool mergeable(const MergeCriterion& criterion, const PlaneSums& a, const PlaneSums& b, double* cost = nullptr) {
   double c = -1.0;

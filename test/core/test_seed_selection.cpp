@@ -25,24 +25,40 @@ Pinhole camera() {
 // The pixel column of a point.
 double column(const Eigen::Vector3d& p) { return camera().focal * p.x() / p.z() + camera().cx(); }
 
+// The paper's tests exactly: its seed cube of 6 cm, no noise.
 Params exactParams() {
   Params p;
-  p.depth_noise_coefficient = 0.0;  // noise-free scenes: the paper's tests exactly
+  p.seed_size = 0.06;
+  p.depth_noise_coefficient = 0.0;
   return p;
 }
 
-SeedSelector selectorFor(const test::RenderedGrid& scene, const Params& params) {
+// A selector with what it refers to.
+struct Selector {
+  Params params;
+  Tolerances tolerances;
   SeedSelector selector;
-  selector.configure(params, DepthNoise::fromParams(params), 1.0f / static_cast<float>(camera().focal), scene.width,
-                     scene.height);
-  return selector;
+
+  Selector(const Params& p, int width, int height, float angular_pitch, double noise_coefficient = 0.0,
+           double scale = 1.0)
+      : params(p) {
+    DepthNoise noise;
+    noise.quadratic = noise_coefficient;
+    tolerances = Tolerances(params, noise, angular_pitch, static_cast<std::size_t>(width * height));
+    selector.configure(params, tolerances, scale, angular_pitch, width, height);
+  }
+  Selector(const Selector&) = delete;
+};
+
+Selector selectorFor(const test::RenderedGrid& scene, const Params& params, double noise_coefficient = 0.0) {
+  return Selector(params, scene.width, scene.height, 1.0f / static_cast<float>(camera().focal), noise_coefficient);
 }
 
 constexpr int kX = 160, kY = 120;  // a seed candidate at the image centre (pixel 159.5 + 0.5)
 
 TEST(SeedSelector, ProjectsTheSeedCubeToRhoPixels) {
-  SeedSelector selector;
-  selector.configure(exactParams(), DepthNoise::fromParams(exactParams()), 1.0f / 525.0f, 640, 480);
+  const Selector fixture(exactParams(), 640, 480, 1.0f / 525.0f);
+  const SeedSelector& selector = fixture.selector;
   // rho = f (sigma_seed / 2) / (r + sigma_seed / 2)
   EXPECT_EQ(selector.rhoAt(1.0f), 15);  // 15.29
   EXPECT_EQ(selector.rhoAt(3.0f), 5);   // 5.20
@@ -51,26 +67,35 @@ TEST(SeedSelector, ProjectsTheSeedCubeToRhoPixels) {
 }
 
 TEST(SeedSelector, GrowsTheSeedCubeWithTheDepthNoise) {
-  Params params;
-  params.depth_noise_coefficient = 0.0019;
-  SeedSelector selector;
-  selector.configure(params, DepthNoise::fromParams(params), 1.0f / 525.0f, 640, 480);
-  EXPECT_FLOAT_EQ(selector.seedSizeAt(1.0f), 0.06f);              // 6 sigma = 1.1 cm < 6 cm
-  EXPECT_NEAR(selector.seedSizeAt(5.0f), 6 * 0.0019 * 25, 1e-6);  // 6 sigma = 28.5 cm
+  const Selector fixture(exactParams(), 640, 480, 1.0f / 525.0f, 0.0019);
+  EXPECT_FLOAT_EQ(fixture.selector.seedSizeAt(1.0f), 0.06f);              // 6 sigma = 1.1 cm < 6 cm
+  EXPECT_NEAR(fixture.selector.seedSizeAt(5.0f), 6 * 0.0019 * 25, 1e-6);  // 6 sigma = 28.5 cm
+}
+
+TEST(SeedSelector, DerivesTheSeedCubeFromThePixelFootprintWhenItIsNotSet) {
+  // Six footprints either side: 12 * 2 mrad * r, the same number of pixels at any range.
+  const Params automatic;
+  const Selector fixture(automatic, 640, 480, 0.002f);
+  EXPECT_NEAR(fixture.selector.seedSizeAt(1.0f), 0.024, 1e-7);
+  EXPECT_NEAR(fixture.selector.seedSizeAt(3.0f), 0.072, 1e-7);
+  EXPECT_EQ(fixture.selector.rhoAt(1.0f), fixture.selector.rhoAt(3.0f));
+  // The second, finer pass: half the fixed part.
+  const Selector fine(automatic, 640, 480, 0.002f, 0.0, 0.5);
+  EXPECT_NEAR(fine.selector.seedSizeAt(2.0f), 0.024, 1e-7);
 }
 
 TEST(SeedSelector, FitsTheGridItIsGiven) {
-  SeedSelector selector;
-  selector.configure(exactParams(), DepthNoise::fromParams(exactParams()), 1.0f / 525.0f, 4, 40);
-  EXPECT_EQ(selector.maxRho(), 0);  // a 4-pixel-wide grid has no room for a cross of rho 2
-  selector.configure(exactParams(), DepthNoise::fromParams(exactParams()), 1.0f / 525.0f, 5, 5);
-  EXPECT_EQ(selector.maxRho(), 2);
-  EXPECT_EQ(selector.rhoAt(1.0f), 2);
+  const Selector narrow(exactParams(), 4, 40, 1.0f / 525.0f);
+  EXPECT_EQ(narrow.selector.maxRho(), 0);  // a 4-pixel-wide grid has no room for a cross of rho 2
+  const Selector tiny(exactParams(), 5, 5, 1.0f / 525.0f);
+  EXPECT_EQ(tiny.selector.maxRho(), 2);
+  EXPECT_EQ(tiny.selector.rhoAt(1.0f), 2);
 }
 
 TEST(SeedSelector, AcceptsAFlatPatchWithItsNormalAndSpacing) {
   const test::RenderedGrid scene = test::render(camera(), {test::frontalPlane(1.0)});
-  const SeedSelector selector = selectorFor(scene, exactParams());
+  const Selector fixture = selectorFor(scene, exactParams());
+  const SeedSelector& selector = fixture.selector;
   Seed seed;
   ASSERT_EQ(selector.test(scene.grid(), kX, kY, seed), SeedVerdict::kAccepted);
   EXPECT_EQ(seed.index, static_cast<std::size_t>(kY) * scene.width + kX);
@@ -88,7 +113,8 @@ TEST(SeedSelector, RejectsADepthJumpInsideTheSeedCube) {
   near.contains = [](const Eigen::Vector3d& p) { return column(p) < kX + 4; };
   const test::RenderedGrid scene = test::render(camera(), {near, test::frontalPlane(1.6, 2)});
   Seed seed;
-  EXPECT_EQ(selectorFor(scene, exactParams()).test(scene.grid(), kX, kY, seed), SeedVerdict::kDistanceDiscontinuity);
+  EXPECT_EQ(selectorFor(scene, exactParams()).selector.test(scene.grid(), kX, kY, seed),
+            SeedVerdict::kDistanceDiscontinuity);
 }
 
 TEST(SeedSelector, RejectsACreaseThroughTheCandidate) {
@@ -104,7 +130,7 @@ TEST(SeedSelector, RejectsACreaseThroughTheCandidate) {
   right.id = 2;
   const test::RenderedGrid scene = test::render(camera(), {left, right});
   Seed seed;
-  EXPECT_EQ(selectorFor(scene, exactParams()).test(scene.grid(), kX, kY, seed), SeedVerdict::kCoarseCurvature);
+  EXPECT_EQ(selectorFor(scene, exactParams()).selector.test(scene.grid(), kX, kY, seed), SeedVerdict::kCoarseCurvature);
 }
 
 TEST(SeedSelector, RejectsARidgeOnOneArmThatTheEndpointsMiss) {
@@ -114,14 +140,15 @@ TEST(SeedSelector, RejectsARidgeOnOneArmThatTheEndpointsMiss) {
   ridge.contains = [](const Eigen::Vector3d& p) { return std::abs(column(p) - (kX + 4)) < 1.5; };
   const test::RenderedGrid scene = test::render(camera(), {ridge, test::frontalPlane(1.0, 1)});
   Seed seed;
-  EXPECT_EQ(selectorFor(scene, exactParams()).test(scene.grid(), kX, kY, seed), SeedVerdict::kFineCurvature);
+  EXPECT_EQ(selectorFor(scene, exactParams()).selector.test(scene.grid(), kX, kY, seed), SeedVerdict::kFineCurvature);
 }
 
 TEST(SeedSelector, RejectsAHoleOnAnArmOrAtTheCandidate) {
   ScenePlane holed = test::frontalPlane(1.0);
   holed.contains = [](const Eigen::Vector3d& p) { return std::abs(column(p) - (kX + 3)) > 0.5; };
   const test::RenderedGrid scene = test::render(camera(), {holed});
-  const SeedSelector selector = selectorFor(scene, exactParams());
+  const Selector fixture = selectorFor(scene, exactParams());
+  const SeedSelector& selector = fixture.selector;
   Seed seed;
   EXPECT_EQ(selector.test(scene.grid(), kX, kY, seed), SeedVerdict::kHole);
   EXPECT_EQ(selector.test(scene.grid(), kX + 3, kY, seed), SeedVerdict::kHole);
@@ -129,7 +156,8 @@ TEST(SeedSelector, RejectsAHoleOnAnArmOrAtTheCandidate) {
 
 TEST(SeedSelector, RejectsCandidatesWhoseCrossLeavesTheGrid) {
   const test::RenderedGrid scene = test::render(camera(), {test::frontalPlane(1.0)});
-  const SeedSelector selector = selectorFor(scene, exactParams());
+  const Selector fixture = selectorFor(scene, exactParams());
+  const SeedSelector& selector = fixture.selector;
   Seed seed;
   // rho is 7 px at the edges of the image, where the wall is 1.1 to 1.2 m from the sensor.
   EXPECT_EQ(selector.test(scene.grid(), 6, kY, seed), SeedVerdict::kNearBorder);
@@ -142,10 +170,9 @@ TEST(SeedSelector, ToleratesDepthNoiseOnlyWhenItIsModelled) {
   // seed tests see a plane; with the paper's fixed tolerances they see curvature everywhere.
   const double c = 0.0019;
   const test::RenderedGrid scene = test::render(camera(), {test::frontalPlane(3.0)}, c * 9.0, 7);
-  Params modelled;
-  modelled.depth_noise_coefficient = c;
-  const auto acceptedFraction = [&](const Params& params) {
-    const SeedSelector selector = selectorFor(scene, params);
+  const auto acceptedFraction = [&](double noise_coefficient) {
+    const Selector fixture = selectorFor(scene, exactParams(), noise_coefficient);
+    const SeedSelector& selector = fixture.selector;
     int accepted = 0, tested = 0;
     Seed seed;
     for (int y = 30; y < scene.height - 30; y += 4) {
@@ -156,8 +183,8 @@ TEST(SeedSelector, ToleratesDepthNoiseOnlyWhenItIsModelled) {
     }
     return static_cast<double>(accepted) / tested;
   };
-  const double with_model = acceptedFraction(modelled);
-  const double without_model = acceptedFraction(exactParams());
+  const double with_model = acceptedFraction(c);
+  const double without_model = acceptedFraction(0.0);
   EXPECT_GT(with_model, 0.5);
   EXPECT_LT(without_model, 0.2);
 }

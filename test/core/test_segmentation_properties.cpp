@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -128,9 +129,9 @@ bool finite(const pcl::PointXYZ& p) { return std::isfinite(p.x) && std::isfinite
   for (std::size_t k = 0; k < k_planes; ++k) {
     const std::uint32_t label = static_cast<std::uint32_t>(k + 1);
     const std::vector<int>& indices = out.inliers[k].indices;
-    if (indices.size() < params.min_inliers || indices.size() < 3)
+    if (indices.size() < params.min_inliers.value_or(3u) || indices.size() < 3)
       return fail() << "plane " << label << " has " << indices.size() << " inliers, min_inliers is "
-                    << params.min_inliers;
+                    << params.min_inliers.value_or(0u);
     if (k > 0 && out.inliers[k - 1].indices.size() < indices.size())
       return fail() << "planes are not ordered by size at plane " << label;
     if (labelled[label] != indices.size())
@@ -350,11 +351,13 @@ RandomCloud randomCloud(std::mt19937& rng, int width, int height) {
   out.params.min_inliers = min_inliers[rng() % 4];
   out.params.subsampling = subsampling[rng() % 5];
   out.params.maximum_curvature = curvature[rng() % 4];
-  out.params.depth_noise_coefficient = u01(rng) < 0.5 ? 0.0 : 0.0019;
+  const double noise_choice = u01(rng);  // estimated, exact or a Kinect's
+  if (noise_choice > 1.0 / 3.0) out.params.depth_noise_coefficient = noise_choice < 2.0 / 3.0 ? 0.0 : 0.0019;
   out.params.project_points = u01(rng) < 0.3;
-  description << "; min_inliers " << out.params.min_inliers << ", subsampling " << out.params.subsampling
+  description << "; min_inliers " << *out.params.min_inliers << ", subsampling " << out.params.subsampling
               << ", max curvature " << out.params.maximum_curvature << ", noise coefficient "
-              << out.params.depth_noise_coefficient;
+              << (out.params.depth_noise_coefficient ? std::to_string(*out.params.depth_noise_coefficient)
+                                                     : std::string("estimated"));
   out.description = description.str();
   return out;
 }
@@ -822,13 +825,13 @@ int planeAlong(const Output& out, const Eigen::Vector3f& normal) {
 
 // One pixel of the floor pushed along its ray to 1e2 ... 1e5 m: the floor (and the wall when
 // there is one) must still be found, the outlier in no plane.
-void expectOneFarOutlierLeavesTheFloorAlone(double depth_noise_coefficient) {
+void expectOneFarOutlierLeavesTheFloorAlone(std::optional<double> depth_noise_coefficient) {
   for (const bool wall : {true, false}) {
     for (const float range : {1e2f, 1e3f, 1e4f, 1e5f}) {
       SCOPED_TRACE(std::string(wall ? "floor and wall" : "floor") + ", outlier at " + std::to_string(range) + " m");
       const Cloud::Ptr cloud = floorWithOnePixelAt(wall, range * floorPixelRay());
       Seg seg;
-      seg.setDepthNoiseCoefficient(depth_noise_coefficient);
+      if (depth_noise_coefficient) seg.setDepthNoiseCoefficient(*depth_noise_coefficient);
       const Output out = segmentAndRefine(seg, cloud);
       ASSERT_TRUE(satisfiesInvariants(*cloud, out, seg.getParams()));
       EXPECT_EQ(out.planes(), wall ? 2u : 1u);

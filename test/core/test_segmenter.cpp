@@ -284,6 +284,9 @@ TEST(Segmenter, FindsNothingInAnEmptyOrTinyGrid) {
   EXPECT_TRUE(result.planes.empty());
   EXPECT_EQ(std::count(result.labels.begin(), result.labels.end(), 0u), static_cast<long>(result.labels.size()));
 
+  Params params;
+  params.min_inliers = 300;
+  segmenter.setParams(params);
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1, 1}, {1, 30}, {30, 1}, {5, 5}, {2, 2}}) {
     Pinhole tiny;
     tiny.width = w;

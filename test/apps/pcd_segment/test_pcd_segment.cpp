@@ -620,15 +620,17 @@ TEST_F(PcdSegment, HelpShowsTheLibraryDefaultsAndVersionPrintsTheVersion) {
     return text.str();
   };
   for (const auto& [option, value] :
-       std::vector<std::pair<std::string, std::string>>{{"--distance-threshold", shown(defaults.distance_threshold)},
-                                                        {"--seed-size", shown(defaults.seed_size)},
-                                                        {"--angular-threshold", shown(defaults.angular_threshold)},
-                                                        {"--merge-distance", shown(defaults.merge_distance)},
-                                                        {"--min-inliers", std::to_string(defaults.min_inliers)},
+       std::vector<std::pair<std::string, std::string>>{{"--angular-threshold", shown(defaults.angular_threshold)},
                                                         {"--subsample", std::to_string(defaults.subsampling)}}) {
     EXPECT_TRUE(contains(help.out, option + " ")) << option;
     EXPECT_TRUE(contains(help.out, "=" + value)) << option << " default " << value;
   }
+  // The paper's lengths and the noise are derived from each frame unless given.
+  for (const std::string option : {"--distance-threshold", "--seed-size", "--merge-distance", "--min-inliers",
+                                   "--depth-noise-coefficient", "--depth-noise-constant"}) {
+    EXPECT_TRUE(contains(help.out, option + " ")) << option;
+  }
+  EXPECT_TRUE(contains(help.out, "measured on each frame"));
   const Result version = run({"--version"});
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_TRUE(contains(version.out, FLOODPLANE_VERSION_STRING));

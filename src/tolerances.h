@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "depth_noise.h"
+#include "floodplane/params.h"
+
+namespace floodplane {
+
+/// Every length tolerance of the method at a range r, in one place: the paper's fixed
+/// lengths where Params sets them, otherwise the scale-free defaults, derived from the depth
+/// noise sigma(r) and the pixel footprint alpha r (alpha: the angle between neighbouring
+/// viewing rays). Three standard deviations of the noise widen every tolerance, as before.
+class Tolerances {
+ public:
+  Tolerances() = default;
+  Tolerances(const Params& params, const DepthNoise& noise, double angular_pitch, std::size_t pixels);
+
+  const DepthNoise& noise() const { return noise_; }
+  double angularPitch() const { return angular_pitch_; }
+  /// The width of a pixel's footprint at range r [m].
+  double footprint(double range) const { return angular_pitch_ * range; }
+
+  /// The fixed part of sigma_plane (Eq. 2) for a flood seeded at range r: the parameter, or a
+  /// fraction of the pixel footprint (exact data need only the float round-off covered).
+  double planeFloor(double range) const;
+  /// Half the side of the seed cube (Sec. III-C) at range r; `scale` shrinks its fixed part
+  /// (the finer second seeding pass), not the noise's.
+  double seedHalfSide(double range, double scale = 1.0) const;
+  /// sigma_plane-merge (Eq. 9) at range r.
+  double mergeDistance(double range) const;
+  /// The largest RMS distance of a part from the plane of a merge (see MergeCriterion).
+  double mergeFit(double range) const;
+  /// The smallest plane reported.
+  std::uint32_t minInliers() const { return min_inliers_; }
+
+ private:
+  // The paper's fixed lengths where Params sets them.
+  std::optional<double> distance_threshold_;
+  std::optional<double> seed_size_;
+  std::optional<double> merge_distance_;
+  DepthNoise noise_;
+  double angular_pitch_ = 0.0;
+  std::uint32_t min_inliers_ = 0;
+};
+
+}  // namespace floodplane
