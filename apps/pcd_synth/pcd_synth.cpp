@@ -61,25 +61,22 @@ void renderSceneFile(const std::string& scene_file, const Options& options) {
     const std::chrono::duration<double> render_time = std::chrono::steady_clock::now() - start;
 
     const std::string stem =
-        (fs::path(options.output_dir) / (scene.name + "." + synth::sensorModelName(sensor)))
-            .string();
+        (fs::path(options.output_dir) / (scene.name + "." + synth::sensorModelName(sensor))).string();
     floodplane::io::savePcd(stem + ".pcd", synth::toPointCloud(frame));
     floodplane::io::writeBytesAtomically(stem + ".planes.json", synth::groundTruthJson(frame));
     if (options.png) {
-      floodplane::io::writePng(stem + ".labels.png",
-                               floodplane::io::labelImage(frame.labels, frame.intrinsics.width,
-                                                          frame.intrinsics.height));
+      floodplane::io::writePng(stem + ".labels.png", floodplane::io::labelImage(frame.labels, frame.intrinsics.width,
+                                                                                frame.intrinsics.height));
     }
     if (!options.quiet) {
       std::size_t seen = 0;
       for (const auto& plane : frame.planes) {
         seen += plane.pixel_count > 0 ? 1 : 0;
       }
-      std::cout << scene.name << " (" << synth::sensorModelName(sensor)
-                << "): " << frame.intrinsics.width << "x" << frame.intrinsics.height << ", "
-                << frame.planes.size() << " planes (" << seen << " visible), rendered in "
-                << static_cast<long>(render_time.count() * 1000.0 + 0.5) << " ms -> " << stem
-                << ".pcd\n";
+      std::cout << scene.name << " (" << synth::sensorModelName(sensor) << "): " << frame.intrinsics.width << "x"
+                << frame.intrinsics.height << ", " << frame.planes.size() << " planes (" << seen
+                << " visible), rendered in " << static_cast<long>(render_time.count() * 1000.0 + 0.5) << " ms -> "
+                << stem << ".pcd\n";
     }
   }
 }
@@ -97,21 +94,17 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", FLOODPLANE_VERSION_STRING);
   // No existence check here: a missing file is reported with the others at the end.
   app.add_option("scenes", options.scene_files, "Scene files to render")->required();
-  app.add_option("-o,--output-dir", options.output_dir,
-                 "Directory for the outputs (created if missing)")
-      ->required();
+  app.add_option("-o,--output-dir", options.output_dir, "Directory for the outputs (created if missing)")->required();
   app.add_option("--sensor", options.sensor, "Sensor model: none (exact), kinect, or both")
       ->check(CLI::IsMember({"none", "kinect", "both"}))
       ->capture_default_str();
-  app.add_option("--seed", options.seed, "Seed of the kinect model's noise")
-      ->capture_default_str();
+  app.add_option("--seed", options.seed, "Seed of the kinect model's noise")->capture_default_str();
   auto* width = app.add_option("--width", options.width,
                                "Render at this width instead of the scene's (intrinsics scale "
                                "with the resolution)")
                     ->check(CLI::Range(1, 32768));
-  auto* height =
-      app.add_option("--height", options.height, "Render at this height instead of the scene's")
-          ->check(CLI::Range(1, 32768));
+  auto* height = app.add_option("--height", options.height, "Render at this height instead of the scene's")
+                     ->check(CLI::Range(1, 32768));
   width->needs(height);
   height->needs(width);
   app.add_flag("--png", options.png, "Also write <scene>.<sensor>.labels.png (ground truth)");
@@ -154,8 +147,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!failed.empty()) {
-    std::cerr << "pcd_synth: " << failed.size() << " of " << options.scene_files.size()
-              << " scene files failed:";
+    std::cerr << "pcd_synth: " << failed.size() << " of " << options.scene_files.size() << " scene files failed:";
     for (const auto& file : failed) {
       std::cerr << " " << file;
     }

@@ -30,10 +30,10 @@ std::string formatNumber(double value) {
 // geometry; used with std::visit.
 class SurfaceBuilder {
  public:
-  SurfaceBuilder(const Eigen::Isometry3d& camera_from_world, std::string where,
-                 std::string label, std::vector<PolygonSurface>& polygons,
-                 std::vector<BoxSurface>& boxes, std::vector<SphereSurface>& spheres,
-                 std::vector<CylinderSurface>& cylinders, std::vector<GroundTruthPlane>& planes)
+  SurfaceBuilder(const Eigen::Isometry3d& camera_from_world, std::string where, std::string label,
+                 std::vector<PolygonSurface>& polygons, std::vector<BoxSurface>& boxes,
+                 std::vector<SphereSurface>& spheres, std::vector<CylinderSurface>& cylinders,
+                 std::vector<GroundTruthPlane>& planes)
       : camera_from_world_(camera_from_world),
         where_(std::move(where)),
         label_(std::move(label)),
@@ -51,8 +51,8 @@ class SurfaceBuilder {
     }
     const double cosine = rectangle.edge_u.dot(rectangle.edge_v) / (length_u * length_v);
     if (std::abs(cosine) > kPerpendicularTolerance) {
-      fail("edge_u and edge_v must be perpendicular, they are " +
-           formatNumber(std::acos(cosine) * kDegreesPerRadian) + " degrees apart");
+      fail("edge_u and edge_v must be perpendicular, they are " + formatNumber(std::acos(cosine) * kDegreesPerRadian) +
+           " degrees apart");
     }
     const Eigen::Vector3d half_u = rectangle.edge_u / 2.0;
     const Eigen::Vector3d half_v = rectangle.edge_v / 2.0;
@@ -86,8 +86,7 @@ class SurfaceBuilder {
       for (int side = 0; side < 2; ++side) {
         const double sign = side == 0 ? 1.0 : -1.0;
         const Eigen::Vector3d outward = sign * camera_from_box.linear().col(axis);
-        const Eigen::Vector3d face_center =
-            camera_from_box.translation() + half_size[axis] * outward;
+        const Eigen::Vector3d face_center = camera_from_box.translation() + half_size[axis] * outward;
         const std::size_t face = 2 * static_cast<std::size_t>(axis) + static_cast<std::size_t>(side);
         face_ids[face] = addPlane(outward, face_center, face_names[face], false);
       }
@@ -131,8 +130,8 @@ class SurfaceBuilder {
 
   // Adds a plane through `point` with normal `normal` (for a solid's face, pointing out of
   // the solid) and returns its id. The stored normal is turned towards the camera.
-  std::uint32_t addPlane(const Eigen::Vector3d& normal, const Eigen::Vector3d& point,
-                         const char* face, bool two_sided) const {
+  std::uint32_t addPlane(const Eigen::Vector3d& normal, const Eigen::Vector3d& point, const char* face,
+                         bool two_sided) const {
     GroundTruthPlane plane;
     plane.id = static_cast<std::uint32_t>(planes_.size() + 1);
     plane.normal = normal.normalized();
@@ -151,8 +150,7 @@ class SurfaceBuilder {
 
   void addPolygon(const std::vector<Eigen::Vector3d>& world_vertices) const {
     if (world_vertices.size() < 3) {
-      fail("a polygon needs at least 3 vertices, it has " +
-           std::to_string(world_vertices.size()));
+      fail("a polygon needs at least 3 vertices, it has " + std::to_string(world_vertices.size()));
     }
     std::vector<Eigen::Vector3d> vertices;
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -174,8 +172,8 @@ class SurfaceBuilder {
     for (std::size_t i = 0; i < vertices.size(); ++i) {
       const double off_plane = std::abs(normal.dot(vertices[i] - centroid));
       if (off_plane > kPlanarityTolerance) {
-        fail("the polygon is not planar: vertex " + std::to_string(i) + " is " +
-             formatNumber(off_plane * 1000.0) + " mm off the plane of the others");
+        fail("the polygon is not planar: vertex " + std::to_string(i) + " is " + formatNumber(off_plane * 1000.0) +
+             " mm off the plane of the others");
       }
     }
     const std::uint32_t id = addPlane(normal, centroid, "", true);
@@ -205,11 +203,10 @@ RayCaster::RayCaster(const Scene& scene) {
   const Eigen::Isometry3d camera_from_world = scene.world_from_camera.inverse();
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& primitive = scene.primitives[i];
-    const std::string description =
-        describePrimitive(i, shapeTypeName(primitive.shape), primitive.name);
+    const std::string description = describePrimitive(i, shapeTypeName(primitive.shape), primitive.name);
     std::visit(SurfaceBuilder(camera_from_world, scene.source + ": " + description,
-                              primitive.name.empty() ? description : primitive.name, polygons_,
-                              boxes_, spheres_, cylinders_, planes_),
+                              primitive.name.empty() ? description : primitive.name, polygons_, boxes_, spheres_,
+                              cylinders_, planes_),
                primitive.shape);
   }
 }

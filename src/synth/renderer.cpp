@@ -13,16 +13,13 @@ void checkIntrinsics(const Scene& scene) {
   const CameraIntrinsics& intrinsics = scene.intrinsics;
   // 2^15 pixels a side is far beyond any depth camera and keeps width * height well in range.
   constexpr int kMaxSide = 1 << 15;
-  if (intrinsics.width < 1 || intrinsics.height < 1 || intrinsics.width > kMaxSide ||
-      intrinsics.height > kMaxSide) {
-    throw SceneError(scene.source + ": camera: image size " + std::to_string(intrinsics.width) +
-                     "x" + std::to_string(intrinsics.height) + " is out of range");
+  if (intrinsics.width < 1 || intrinsics.height < 1 || intrinsics.width > kMaxSide || intrinsics.height > kMaxSide) {
+    throw SceneError(scene.source + ": camera: image size " + std::to_string(intrinsics.width) + "x" +
+                     std::to_string(intrinsics.height) + " is out of range");
   }
   if (!(intrinsics.fx > 0.0) || !(intrinsics.fy > 0.0) || !std::isfinite(intrinsics.fx) ||
-      !std::isfinite(intrinsics.fy) || !std::isfinite(intrinsics.cx) ||
-      !std::isfinite(intrinsics.cy)) {
-    throw SceneError(scene.source +
-                     ": camera: fx and fy must be positive, and cx, cy finite numbers");
+      !std::isfinite(intrinsics.fy) || !std::isfinite(intrinsics.cx) || !std::isfinite(intrinsics.cy)) {
+    throw SceneError(scene.source + ": camera: fx and fy must be positive, and cx, cy finite numbers");
   }
 }
 
@@ -40,8 +37,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
   frame.seed = settings.seed;
   frame.intrinsics = intrinsics;
   frame.planes = caster.planes();
-  const auto pixel_count =
-      static_cast<std::size_t>(intrinsics.width) * static_cast<std::size_t>(intrinsics.height);
+  const auto pixel_count = static_cast<std::size_t>(intrinsics.width) * static_cast<std::size_t>(intrinsics.height);
   const Eigen::Vector3f no_point = Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN());
   frame.points.assign(pixel_count, no_point);
   frame.labels.assign(pixel_count, 0);

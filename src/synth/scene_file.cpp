@@ -55,9 +55,7 @@ class SceneObject {
 
   double number(const char* key) const { return toNumber(required(key), key); }
 
-  double number(const char* key, double fallback) const {
-    return has(key) ? number(key) : fallback;
-  }
+  double number(const char* key, double fallback) const { return has(key) ? number(key) : fallback; }
 
   int integer(const char* key, int fallback) const {
     if (!has(key)) {
@@ -101,8 +99,7 @@ class SceneObject {
   }
 
   SceneObject object(const char* key, std::initializer_list<const char*> allowed_keys) const {
-    return SceneObject(required(key), context_.empty() ? key : context_ + "." + key, source_,
-                       allowed_keys);
+    return SceneObject(required(key), context_.empty() ? key : context_ + "." + key, source_, allowed_keys);
   }
 
  private:
@@ -152,8 +149,7 @@ Eigen::Matrix3d parseRotation(const SceneObject& primitive) {
   if (axis.norm() < 1e-12) {
     rotation.fail("\"axis\" must not be zero");
   }
-  return Eigen::AngleAxisd(degreesToRadians(rotation.number("angle_deg")), axis.normalized())
-      .toRotationMatrix();
+  return Eigen::AngleAxisd(degreesToRadians(rotation.number("angle_deg")), axis.normalized()).toRotationMatrix();
 }
 
 Shape parseShape(const json& value, const std::string& context, const std::string& source) {
@@ -164,18 +160,15 @@ Shape parseShape(const json& value, const std::string& context, const std::strin
   }
   const std::string type = value.at("type").get<std::string>();
   if (type == "rectangle") {
-    const SceneObject object(value, context, source,
-                             {"type", "name", "center", "edge_u", "edge_v"});
-    return Rectangle{object.vector3("center"), object.vector3("edge_u"),
-                     object.vector3("edge_v")};
+    const SceneObject object(value, context, source, {"type", "name", "center", "edge_u", "edge_v"});
+    return Rectangle{object.vector3("center"), object.vector3("edge_u"), object.vector3("edge_v")};
   }
   if (type == "polygon") {
     const SceneObject object(value, context, source, {"type", "name", "vertices"});
     return Polygon{object.vector3List("vertices")};
   }
   if (type == "box") {
-    const SceneObject object(value, context, source,
-                             {"type", "name", "center", "size", "rotation"});
+    const SceneObject object(value, context, source, {"type", "name", "center", "size", "rotation"});
     return Box{object.vector3("center"), object.vector3("size"), parseRotation(object)};
   }
   if (type == "sphere") {
@@ -183,18 +176,17 @@ Shape parseShape(const json& value, const std::string& context, const std::strin
     return Sphere{object.vector3("center"), object.number("radius")};
   }
   if (type == "cylinder") {
-    const SceneObject object(value, context, source,
-                             {"type", "name", "base", "axis", "radius", "height"});
-    return Cylinder{object.vector3("base"), object.vector3("axis", Eigen::Vector3d::UnitZ()),
-                    object.number("radius"), object.number("height")};
+    const SceneObject object(value, context, source, {"type", "name", "base", "axis", "radius", "height"});
+    return Cylinder{object.vector3("base"), object.vector3("axis", Eigen::Vector3d::UnitZ()), object.number("radius"),
+                    object.number("height")};
   }
   throw SceneError(source + ": " + context + ": unknown type \"" + type +
                    "\" (expected rectangle, polygon, box, sphere or cylinder)");
 }
 
 void parseCamera(const SceneObject& root, Scene& scene) {
-  const SceneObject camera = root.object(
-      "camera", {"position", "look_at", "up", "width", "height", "fx", "fy", "cx", "cy"});
+  const SceneObject camera =
+      root.object("camera", {"position", "look_at", "up", "width", "height", "fx", "fy", "cx", "cy"});
   CameraIntrinsics& intrinsics = scene.intrinsics;
   intrinsics.width = camera.integer("width", intrinsics.width);
   intrinsics.height = camera.integer("height", intrinsics.height);
@@ -204,8 +196,8 @@ void parseCamera(const SceneObject& root, Scene& scene) {
   intrinsics.cx = camera.number("cx", (intrinsics.width - 1) / 2.0);
   intrinsics.cy = camera.number("cy", (intrinsics.height - 1) / 2.0);
   try {
-    scene.world_from_camera = lookAt(camera.vector3("position"), camera.vector3("look_at"),
-                                     camera.vector3("up", Eigen::Vector3d::UnitZ()));
+    scene.world_from_camera =
+        lookAt(camera.vector3("position"), camera.vector3("look_at"), camera.vector3("up", Eigen::Vector3d::UnitZ()));
   } catch (const std::invalid_argument& error) {
     camera.fail(error.what());
   }

@@ -49,9 +49,9 @@ struct KinectParams {
   double sigma_quadratic = 0.0019;  ///< metres per square metre
   double sigma_offset = 0.4;        ///< metres
   // Disparity quantization.
-  double baseline = 0.075;           ///< projector-camera baseline b, metres
-  double focal_length = 525.0;       ///< f of the disparity, pixels
-  double disparity_step = 1.0 / 8.0; ///< pixels; 0 turns quantization off
+  double baseline = 0.075;            ///< projector-camera baseline b, metres
+  double focal_length = 525.0;        ///< f of the disparity, pixels
+  double disparity_step = 1.0 / 8.0;  ///< pixels; 0 turns quantization off
   // Range and dropouts.
   double min_range = 0.45;             ///< metres; nearer returns are lost
   double max_range = 8.0;              ///< metres; farther returns are lost
@@ -67,7 +67,6 @@ double quantizeDepth(double z, const KinectParams& params);
 
 /// The depth the Kinect model reports for a surface at exact depth `z` (metres), or nothing
 /// when the return is lost (out of range or dropped). Draws from `random` as listed above.
-std::optional<double> measureKinectDepth(double z, const KinectParams& params,
-                                         PixelRandom& random);
+std::optional<double> measureKinectDepth(double z, const KinectParams& params, PixelRandom& random);
 
 }  // namespace floodplane::synth

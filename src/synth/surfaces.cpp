@@ -13,10 +13,9 @@ constexpr double kParallelEpsilon = 1e-12;
 
 }  // namespace
 
-PolygonSurface::PolygonSurface(const Eigen::Vector3d& normal, double d,
-                               const Eigen::Vector3d& origin, const Eigen::Vector3d& axis_u,
-                               const Eigen::Vector3d& axis_v, std::vector<Eigen::Vector2d> outline,
-                               std::uint32_t plane_id)
+PolygonSurface::PolygonSurface(const Eigen::Vector3d& normal, double d, const Eigen::Vector3d& origin,
+                               const Eigen::Vector3d& axis_u, const Eigen::Vector3d& axis_v,
+                               std::vector<Eigen::Vector2d> outline, std::uint32_t plane_id)
     : normal_(normal),
       d_(d),
       origin_(origin),
@@ -50,8 +49,7 @@ void PolygonSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nea
 // Even-odd rule: count the outline edges crossed by a ray from `point` towards +u. Works for
 // convex and non-convex simple polygons (a staircase's side, an L-shaped panel).
 bool PolygonSurface::contains(const Eigen::Vector2d& point) const {
-  if ((point.array() < outline_min_.array()).any() ||
-      (point.array() > outline_max_.array()).any()) {
+  if ((point.array() < outline_min_.array()).any() || (point.array() > outline_max_.array()).any()) {
     return false;
   }
   bool inside = false;
@@ -109,8 +107,7 @@ void BoxSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest
   nearest = {t_enter, face_ids_[entry_face]};
 }
 
-SphereSurface::SphereSurface(const Eigen::Vector3d& center, double radius)
-    : center_(center), radius_(radius) {}
+SphereSurface::SphereSurface(const Eigen::Vector3d& center, double radius) : center_(center), radius_(radius) {}
 
 void SphereSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const {
   // |t d - c|^2 = r^2  <=>  (d.d) t^2 - 2 (d.c) t + (c.c - r^2) = 0; the smaller root is the
@@ -128,15 +125,9 @@ void SphereSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& near
   }
 }
 
-CylinderSurface::CylinderSurface(const Eigen::Vector3d& base, const Eigen::Vector3d& axis,
-                                 double radius, double height, std::uint32_t top_id,
-                                 std::uint32_t bottom_id)
-    : base_(base),
-      axis_(axis),
-      radius_(radius),
-      height_(height),
-      top_id_(top_id),
-      bottom_id_(bottom_id) {}
+CylinderSurface::CylinderSurface(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double radius, double height,
+                                 std::uint32_t top_id, std::uint32_t bottom_id)
+    : base_(base), axis_(axis), radius_(radius), height_(height), top_id_(top_id), bottom_id_(bottom_id) {}
 
 void CylinderSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const {
   // The side: the ray's components across the axis must have length r. With w the ray origin
@@ -162,9 +153,8 @@ void CylinderSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& ne
   intersectCap(direction, base_, bottom_id_, nearest);
 }
 
-void CylinderSurface::intersectCap(const Eigen::Vector3d& direction,
-                                   const Eigen::Vector3d& cap_center, std::uint32_t cap_id,
-                                   SurfaceHit& nearest) const {
+void CylinderSurface::intersectCap(const Eigen::Vector3d& direction, const Eigen::Vector3d& cap_center,
+                                   std::uint32_t cap_id, SurfaceHit& nearest) const {
   const double denominator = axis_.dot(direction);
   if (std::abs(denominator) < kParallelEpsilon) {
     return;

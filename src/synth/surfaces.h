@@ -21,9 +21,8 @@ struct SurfaceHit {
 /// and its outline in that basis.
 class PolygonSurface {
  public:
-  PolygonSurface(const Eigen::Vector3d& normal, double d, const Eigen::Vector3d& origin,
-                 const Eigen::Vector3d& axis_u, const Eigen::Vector3d& axis_v,
-                 std::vector<Eigen::Vector2d> outline, std::uint32_t plane_id);
+  PolygonSurface(const Eigen::Vector3d& normal, double d, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis_u,
+                 const Eigen::Vector3d& axis_v, std::vector<Eigen::Vector2d> outline, std::uint32_t plane_id);
   void intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const;
 
  private:
@@ -68,13 +67,13 @@ class SphereSurface {
 /// A solid capped cylinder; `axis` has unit length. The side has no plane id.
 class CylinderSurface {
  public:
-  CylinderSurface(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double radius,
-                  double height, std::uint32_t top_id, std::uint32_t bottom_id);
+  CylinderSurface(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double radius, double height,
+                  std::uint32_t top_id, std::uint32_t bottom_id);
   void intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const;
 
  private:
-  void intersectCap(const Eigen::Vector3d& direction, const Eigen::Vector3d& cap_center,
-                    std::uint32_t cap_id, SurfaceHit& nearest) const;
+  void intersectCap(const Eigen::Vector3d& direction, const Eigen::Vector3d& cap_center, std::uint32_t cap_id,
+                    SurfaceHit& nearest) const;
 
   Eigen::Vector3d base_;
   Eigen::Vector3d axis_;
