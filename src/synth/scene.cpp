@@ -7,7 +7,7 @@ namespace floodplane::synth {
 
 const char* shapeTypeName(const Shape& shape) {
   // In the order of the alternatives of Shape.
-  static constexpr std::array<const char*, 5> names{"rectangle", "polygon", "box", "sphere", "cylinder"};
+  static constexpr std::array<const char*, 6> names{"rectangle", "polygon", "box", "sphere", "cylinder", "prism"};
   static_assert(std::variant_size_v<Shape> == names.size());
   return names[shape.index()];
 }

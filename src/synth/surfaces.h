@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -15,14 +16,19 @@ namespace floodplane::synth {
 struct SurfaceHit {
   double t = std::numeric_limits<double>::infinity();  ///< depth of the hit; infinity: none
   std::uint32_t plane_id = 0;                          ///< 0 for a non-planar surface
+  /// The surface normal at the hit, unit length, either orientation: the scanner model needs
+  /// the angles of incidence, and curved surfaces have no ground-truth plane to take it from.
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 };
 
 /// A flat polygon (rectangles are polygons too): its plane, an orthonormal basis in the plane
-/// and its outline in that basis.
+/// and its outline in that basis: one ring, or the outer ring followed by its holes, every ring
+/// ending where `ring_ends` says (one past its last vertex).
 class PolygonSurface {
  public:
   PolygonSurface(const Eigen::Vector3d& normal, double d, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis_u,
-                 const Eigen::Vector3d& axis_v, std::vector<Eigen::Vector2d> outline, std::uint32_t plane_id);
+                 const Eigen::Vector3d& axis_v, std::vector<Eigen::Vector2d> outline,
+                 std::vector<std::size_t> ring_ends, std::uint32_t plane_id);
   void intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const;
 
  private:
@@ -34,6 +40,7 @@ class PolygonSurface {
   Eigen::Vector3d axis_u_;
   Eigen::Vector3d axis_v_;
   std::vector<Eigen::Vector2d> outline_;
+  std::vector<std::size_t> ring_ends_;
   Eigen::Vector2d outline_min_;  // bounding rectangle of the outline, for a quick reject
   Eigen::Vector2d outline_max_;
   std::uint32_t plane_id_;
@@ -81,6 +88,18 @@ class CylinderSurface {
   double height_;
   std::uint32_t top_id_;
   std::uint32_t bottom_id_;
+};
+
+/// A solid prism as its flat faces, behind a bounding sphere that most rays miss.
+class PrismSurface {
+ public:
+  PrismSurface(std::vector<PolygonSurface> faces, const Eigen::Vector3d& bounding_center, double bounding_radius);
+  void intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const;
+
+ private:
+  std::vector<PolygonSurface> faces_;
+  Eigen::Vector3d bounding_center_;
+  double bounding_radius_squared_;
 };
 
 }  // namespace floodplane::synth
