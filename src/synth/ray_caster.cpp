@@ -122,11 +122,12 @@ struct SurfaceLists {
 class SurfaceBuilder {
  public:
   SurfaceBuilder(const Eigen::Isometry3d& camera_from_world, std::string viewpoint, std::string where,
-                 std::string label, const SurfaceLists& lists)
+                 std::string label, std::uint32_t primitive, const SurfaceLists& lists)
       : camera_from_world_(camera_from_world),
         viewpoint_(std::move(viewpoint)),
         where_(std::move(where)),
         label_(std::move(label)),
+        primitive_(primitive),
         lists_(lists) {}
 
   void operator()(const Rectangle& rectangle) const {
@@ -178,7 +179,7 @@ class SurfaceBuilder {
         face_ids[face] = addPlane(outward, face_center, face_names[face], false);
       }
     }
-    lists_.boxes.emplace_back(camera_from_box, half_size, face_ids);
+    lists_.boxes.emplace_back(camera_from_box, half_size, face_ids, primitive_);
   }
 
   void operator()(const Sphere& sphere) const {
@@ -189,7 +190,7 @@ class SurfaceBuilder {
     if (center.norm() <= sphere.radius) {
       fail("the " + viewpoint_ + " is inside this sphere");
     }
-    lists_.spheres.emplace_back(center, sphere.radius);
+    lists_.spheres.emplace_back(center, sphere.radius, primitive_);
   }
 
   void operator()(const Cylinder& cylinder) const {
@@ -209,7 +210,7 @@ class SurfaceBuilder {
     }
     const std::uint32_t top = addPlane(axis, base + cylinder.height * axis, "top", false);
     const std::uint32_t bottom = addPlane(-axis, base, "bottom", false);
-    lists_.cylinders.emplace_back(base, axis, cylinder.radius, cylinder.height, top, bottom);
+    lists_.cylinders.emplace_back(base, axis, cylinder.radius, cylinder.height, top, bottom, primitive_);
   }
 
   void operator()(const Prism& prism) const {
@@ -328,8 +329,8 @@ class SurfaceBuilder {
 
   // A PolygonSurface on `plane` (its normal already turned towards the viewpoint) through
   // `origin`, with the rings' vertices expressed in a basis of the plane.
-  static PolygonSurface ringSurface(const GroundTruthPlane& plane, const Eigen::Vector3d& origin,
-                                    const std::vector<std::vector<Eigen::Vector3d>>& rings, std::uint32_t id) {
+  PolygonSurface ringSurface(const GroundTruthPlane& plane, const Eigen::Vector3d& origin,
+                             const std::vector<std::vector<Eigen::Vector3d>>& rings, std::uint32_t id) const {
     const Eigen::Vector3d axis_u = plane.normal.unitOrthogonal();
     const Eigen::Vector3d axis_v = plane.normal.cross(axis_u);
     std::vector<Eigen::Vector2d> outline;
@@ -340,7 +341,7 @@ class SurfaceBuilder {
       }
       ring_ends.push_back(outline.size());
     }
-    return {plane.normal, plane.d, origin, axis_u, axis_v, std::move(outline), std::move(ring_ends), id};
+    return {plane.normal, plane.d, origin, axis_u, axis_v, std::move(outline), std::move(ring_ends), id, primitive_};
   }
 
   void addPolygon(const std::vector<Eigen::Vector3d>& world_vertices,
@@ -370,6 +371,7 @@ class SurfaceBuilder {
   std::string viewpoint_;
   std::string where_;
   std::string label_;
+  std::uint32_t primitive_;
   SurfaceLists lists_;
 };
 
@@ -383,9 +385,10 @@ RayCaster::RayCaster(const Scene& scene, const Eigen::Isometry3d& world_from_vie
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& primitive = scene.primitives[i];
     const std::string description = describePrimitive(i, shapeTypeName(primitive.shape), primitive.name);
-    std::visit(SurfaceBuilder(camera_from_world, viewpoint, scene.source + ": " + description,
-                              primitive.name.empty() ? description : primitive.name, lists),
-               primitive.shape);
+    std::visit(
+        SurfaceBuilder(camera_from_world, viewpoint, scene.source + ": " + description,
+                       primitive.name.empty() ? description : primitive.name, static_cast<std::uint32_t>(i), lists),
+        primitive.shape);
   }
 }
 

@@ -80,9 +80,16 @@ using Shape = std::variant<Rectangle, Polygon, Box, Sphere, Cylinder, Prism>;
 /// The name of a shape's type as written in scene files ("rectangle", "box", ...).
 const char* shapeTypeName(const Shape& shape);
 
+/// The shape moved by the rigid transform `pose` (points mapped, directions turned): how the
+/// scene generators place objects built in their own frame.
+Shape transformShape(const Shape& shape, const Eigen::Isometry3d& pose);
+
 struct Primitive {
   std::string name;  ///< for messages and the ground-truth listing; may be empty
   Shape shape;
+  /// The share of the light falling on the surface that it sends back, in (0, 1]: 1 for white
+  /// matte, 0.2 for a dark surface. Only the scanner model uses it: dark surfaces return less.
+  double albedo = 1.0;
 };
 
 /// How messages refer to a primitive: `primitives[3] (box "crate")`, index counted from 0 as

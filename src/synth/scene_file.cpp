@@ -198,28 +198,28 @@ Shape parseShape(const json& value, const std::string& context, const std::strin
   }
   const std::string type = value.at("type").get<std::string>();
   if (type == "rectangle") {
-    const SceneObject object(value, context, source, {"type", "name", "center", "edge_u", "edge_v"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "center", "edge_u", "edge_v"});
     return Rectangle{object.vector3("center"), object.vector3("edge_u"), object.vector3("edge_v")};
   }
   if (type == "polygon") {
-    const SceneObject object(value, context, source, {"type", "name", "vertices", "holes"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "vertices", "holes"});
     return Polygon{object.vector3List("vertices"), object.vector3Lists("holes")};
   }
   if (type == "box") {
-    const SceneObject object(value, context, source, {"type", "name", "center", "size", "rotation"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "center", "size", "rotation"});
     return Box{object.vector3("center"), object.vector3("size"), parseRotation(object)};
   }
   if (type == "sphere") {
-    const SceneObject object(value, context, source, {"type", "name", "center", "radius"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "center", "radius"});
     return Sphere{object.vector3("center"), object.number("radius")};
   }
   if (type == "cylinder") {
-    const SceneObject object(value, context, source, {"type", "name", "base", "axis", "radius", "height"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "base", "axis", "radius", "height"});
     return Cylinder{object.vector3("base"), object.vector3("axis", Eigen::Vector3d::UnitZ()), object.number("radius"),
                     object.number("height")};
   }
   if (type == "prism") {
-    const SceneObject object(value, context, source, {"type", "name", "base", "extrusion"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "base", "extrusion"});
     return Prism{object.vector3List("base"), object.vector3("extrusion")};
   }
   throw SceneError(source + ": " + context + ": unknown type \"" + type +
@@ -303,6 +303,13 @@ Scene parseScene(std::string_view json_text, const std::string& source) {
       described = describePrimitive(i, value.at("type").get<std::string>(), primitive.name);
     }
     primitive.shape = parseShape(value, described, source);
+    if (value.contains("albedo")) {
+      const json& albedo = value.at("albedo");
+      if (!albedo.is_number() || !(albedo.get<double>() > 0.0 && albedo.get<double>() <= 1.0)) {
+        throw SceneError(source + ": " + described + ": \"albedo\" must be a number above 0 and at most 1");
+      }
+      primitive.albedo = albedo.get<double>();
+    }
     scene.primitives.push_back(std::move(primitive));
   }
   return scene;

@@ -99,6 +99,9 @@ std::string sceneJson(const Scene& scene) {
       object["name"] = primitive.name;
     }
     std::visit(ShapeWriter{object}, primitive.shape);
+    if (primitive.albedo != 1.0) {
+      object["albedo"] = primitive.albedo;
+    }
     text += (i == 0 ? "\n    " : ",\n    ") + object.dump();
   }
   return text + "\n  ]\n}\n";

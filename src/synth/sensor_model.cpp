@@ -12,6 +12,8 @@ const char* sensorModelName(SensorModel model) {
       return "none";
     case SensorModel::kinect:
       return "kinect";
+    case SensorModel::scanner:
+      return "scanner";
   }
   return "unknown";
 }
@@ -22,6 +24,9 @@ std::optional<SensorModel> sensorModelFromName(std::string_view name) {
   }
   if (name == "kinect") {
     return SensorModel::kinect;
+  }
+  if (name == "scanner") {
+    return SensorModel::scanner;
   }
   return std::nullopt;
 }

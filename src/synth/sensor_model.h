@@ -2,6 +2,7 @@
 // Sensor models: what a depth camera measures where a ray hits a surface.
 //
 // `none`: the exact point.
+// `scanner`: a close-range structured-light scanner with projector shadows (scanner_model.h).
 // `kinect`: a structured-light sensor (Kinect v1 / Asus Xtion), in this order per pixel:
 //   1. Axial noise. A Gaussian depth error along the ray: the whole point is scaled so its z
 //      changes by the sampled amount. The target spread is the axial model of Nguyen, Izadi
@@ -34,12 +35,12 @@
 
 namespace floodplane::synth {
 
-enum class SensorModel { none, kinect };
+enum class SensorModel { none, kinect, scanner };
 
-/// "none" or "kinect", as used in file names and on the command line.
+/// "none", "kinect" or "scanner", as used in file names and on the command line.
 const char* sensorModelName(SensorModel model);
 
-/// The model called `name` ("none", "kinect"), or nothing.
+/// The model called `name` ("none", "kinect", "scanner"), or nothing.
 std::optional<SensorModel> sensorModelFromName(std::string_view name);
 
 struct KinectParams {

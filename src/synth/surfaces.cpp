@@ -16,7 +16,7 @@ constexpr double kParallelEpsilon = 1e-12;
 PolygonSurface::PolygonSurface(const Eigen::Vector3d& normal, double d, const Eigen::Vector3d& origin,
                                const Eigen::Vector3d& axis_u, const Eigen::Vector3d& axis_v,
                                std::vector<Eigen::Vector2d> outline, std::vector<std::size_t> ring_ends,
-                               std::uint32_t plane_id)
+                               std::uint32_t plane_id, std::uint32_t primitive)
     : normal_(normal),
       d_(d),
       origin_(origin),
@@ -26,7 +26,8 @@ PolygonSurface::PolygonSurface(const Eigen::Vector3d& normal, double d, const Ei
       ring_ends_(std::move(ring_ends)),
       outline_min_(outline_.front()),
       outline_max_(outline_.front()),
-      plane_id_(plane_id) {
+      plane_id_(plane_id),
+      primitive_(primitive) {
   for (const auto& vertex : outline_) {
     outline_min_ = outline_min_.cwiseMin(vertex);
     outline_max_ = outline_max_.cwiseMax(vertex);
@@ -44,7 +45,7 @@ void PolygonSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nea
   }
   const Eigen::Vector3d offset = t * direction - origin_;
   if (contains({offset.dot(axis_u_), offset.dot(axis_v_)})) {
-    nearest = {t, plane_id_, normal_};
+    nearest = {t, plane_id_, normal_, primitive_};
   }
 }
 
@@ -74,11 +75,12 @@ bool PolygonSurface::contains(const Eigen::Vector2d& point) const {
 }
 
 BoxSurface::BoxSurface(const Eigen::Isometry3d& camera_from_box, const Eigen::Vector3d& half_size,
-                       const std::array<std::uint32_t, 6>& face_ids)
+                       const std::array<std::uint32_t, 6>& face_ids, std::uint32_t primitive)
     : box_from_camera_rotation_(camera_from_box.linear().transpose()),
       camera_in_box_(camera_from_box.inverse().translation()),
       half_size_(half_size),
-      face_ids_(face_ids) {}
+      face_ids_(face_ids),
+      primitive_(primitive) {}
 
 // The slab method: the ray is inside the box where it is inside all three slabs; it enters
 // through the face of the slab it enters last.
@@ -113,10 +115,11 @@ void BoxSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest
   }
   // Row `axis` of box_from_camera is the box's axis in camera coordinates.
   const auto axis = static_cast<Eigen::Index>(entry_face / 2);
-  nearest = {t_enter, face_ids_[entry_face], box_from_camera_rotation_.row(axis).transpose()};
+  nearest = {t_enter, face_ids_[entry_face], box_from_camera_rotation_.row(axis).transpose(), primitive_};
 }
 
-SphereSurface::SphereSurface(const Eigen::Vector3d& center, double radius) : center_(center), radius_(radius) {}
+SphereSurface::SphereSurface(const Eigen::Vector3d& center, double radius, std::uint32_t primitive)
+    : center_(center), radius_(radius), primitive_(primitive) {}
 
 void SphereSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const {
   // |t d - c|^2 = r^2  <=>  (d.d) t^2 - 2 (d.c) t + (c.c - r^2) = 0; the smaller root is the
@@ -130,13 +133,19 @@ void SphereSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& near
   }
   const double t = (b - std::sqrt(discriminant)) / a;
   if (t > 0.0 && t < nearest.t) {
-    nearest = {t, 0, (t * direction - center_) / radius_};
+    nearest = {t, 0, (t * direction - center_) / radius_, primitive_};
   }
 }
 
 CylinderSurface::CylinderSurface(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double radius, double height,
-                                 std::uint32_t top_id, std::uint32_t bottom_id)
-    : base_(base), axis_(axis), radius_(radius), height_(height), top_id_(top_id), bottom_id_(bottom_id) {}
+                                 std::uint32_t top_id, std::uint32_t bottom_id, std::uint32_t primitive)
+    : base_(base),
+      axis_(axis),
+      radius_(radius),
+      height_(height),
+      top_id_(top_id),
+      bottom_id_(bottom_id),
+      primitive_(primitive) {}
 
 void CylinderSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& nearest) const {
   // The side: the ray's components across the axis must have length r. With w the ray origin
@@ -154,7 +163,7 @@ void CylinderSurface::intersect(const Eigen::Vector3d& direction, SurfaceHit& ne
       const Eigen::Vector3d from_base = w + t * direction;
       const double along_axis = from_base.dot(axis_);
       if (t > 0.0 && t < nearest.t && along_axis >= 0.0 && along_axis <= height_) {
-        nearest = {t, 0, (from_base - along_axis * axis_) / radius_};
+        nearest = {t, 0, (from_base - along_axis * axis_) / radius_, primitive_};
       }
     }
   }
@@ -174,7 +183,7 @@ void CylinderSurface::intersectCap(const Eigen::Vector3d& direction, const Eigen
     return;
   }
   if ((t * direction - cap_center).squaredNorm() <= radius_ * radius_) {
-    nearest = {t, cap_id, axis_};
+    nearest = {t, cap_id, axis_, primitive_};
   }
 }
 
