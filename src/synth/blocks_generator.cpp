@@ -89,6 +89,7 @@ Scene generateBlocksScene(std::uint64_t seed) {
   requirements.min_coverage = 0.98;
   requirements.min_planes = 5;
   requirements.min_plane_fraction = 0.005;
+  requirements.max_plane_fraction = 0.85;  // the table fills much of the view
   requirements.max_centre_depth = 1.5;
   for (int layout_attempt = 0; layout_attempt < kLayoutAttempts; ++layout_attempt) {
     const BlocksLayout layout = placeBlocks(random);

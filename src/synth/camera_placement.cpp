@@ -1,5 +1,6 @@
 #include "synth/camera_placement.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "synth/renderer.h"
@@ -25,7 +26,9 @@ ViewSummary summarizeView(const Scene& scene, const ViewRequirements& requiremen
   const auto pixels = static_cast<double>(frame.points.size());
   summary.coverage = static_cast<double>(hits) / pixels;
   for (const GroundTruthPlane& plane : frame.planes) {
-    summary.planes += static_cast<double>(plane.pixel_count) >= requirements.min_plane_fraction * pixels ? 1 : 0;
+    const double fraction = static_cast<double>(plane.pixel_count) / pixels;
+    summary.planes += fraction >= requirements.min_plane_fraction ? 1 : 0;
+    summary.largest_plane = std::max(summary.largest_plane, fraction);
   }
   const auto centre =
       static_cast<std::size_t>(requirements.preview_height / 2) * static_cast<std::size_t>(requirements.preview_width) +
@@ -38,8 +41,8 @@ ViewSummary summarizeView(const Scene& scene, const ViewRequirements& requiremen
 bool meetsRequirements(const ViewSummary& summary, const ViewRequirements& requirements) {
   return !summary.inside_solid && summary.clearance >= requirements.min_clearance &&
          summary.clearance <= requirements.max_clearance && summary.coverage >= requirements.min_coverage &&
-         summary.planes >= requirements.min_planes && summary.centre_depth >= requirements.min_centre_depth &&
-         summary.centre_depth <= requirements.max_centre_depth;
+         summary.planes >= requirements.min_planes && summary.largest_plane <= requirements.max_plane_fraction &&
+         summary.centre_depth >= requirements.min_centre_depth && summary.centre_depth <= requirements.max_centre_depth;
 }
 
 }  // namespace floodplane::synth

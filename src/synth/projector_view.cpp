@@ -16,9 +16,9 @@ constexpr double kOccluderMargin = 1e-7;
 ProjectorView::ProjectorView(const Scene& scene, const ScannerParams& params)
     : position_(params.baseline, 0.0, 0.0),
       // Turning by atan(b / c) about y brings the projector's axis onto (0, 0, c) - position.
-      projector_from_camera_(Eigen::AngleAxisd(std::atan2(params.baseline, params.convergence_distance),
-                                               Eigen::Vector3d::UnitY())
-                                 .toRotationMatrix()),
+      projector_from_camera_(
+          Eigen::AngleAxisd(std::atan2(params.baseline, params.convergence_distance), Eigen::Vector3d::UnitY())
+              .toRotationMatrix()),
       half_width_(params.projector_half_width),
       half_height_(params.projector_half_height),
       // The caster keeps the camera's axes: only the projector's position matters for shadows.

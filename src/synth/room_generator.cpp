@@ -31,6 +31,13 @@ double degrees(double value) { return value * kPi / 180.0; }
 
 enum class RoomKind { office, hall, storage };
 
+// "1 box", "2 boxes", "2 shelves".
+std::string plural(const std::string& noun, int number) {
+  if (number == 1) return noun;
+  if (noun == "shelf") return "shelves";
+  return noun + (noun.back() == 'x' || noun.back() == 's' ? "es" : "s");
+}
+
 const char* roomKindName(RoomKind kind) {
   switch (kind) {
     case RoomKind::office:
@@ -151,11 +158,7 @@ class RoomLayout {
   std::string contents() const {
     std::string text;
     for (const auto& [kind, number] : counts_) {
-      const bool sibilant = kind.back() == 'x' || kind.back() == 's';
-      text += (text.empty() ? "" : ", ") + std::to_string(number) + " " + kind +
-              (number == 1 ? ""
-               : sibilant  ? "es"
-                           : "s");
+      text += (text.empty() ? "" : ", ") + std::to_string(number) + " " + plural(kind, number);
     }
     return text;
   }
@@ -278,7 +281,7 @@ void furnishStorage(RoomLayout& layout, RandomSource& random) {
   if (random.chance(0.4)) addTables(layout, 1, random);
 }
 
-// A camera 0.7-5 m from an object of the room, 0.7-2.3 m above the floor, looking at it from
+// A camera 0.6-5 m from an object of the room, 0.7-2.3 m above the floor, looking at it from
 // 3 degrees above to 45 degrees below the horizontal, rolled by up to 5 degrees, until the view
 // meets the requirements.
 bool placeCamera(Scene& scene, const Assembly& room, const RoomShell& shell, RandomSource& random) {
@@ -286,7 +289,8 @@ bool placeCamera(Scene& scene, const Assembly& room, const RoomShell& shell, Ran
   for (int attempt = 0; attempt < kPoseAttempts; ++attempt) {
     const Eigen::Vector3d jitter(random.gaussian(), random.gaussian(), random.gaussian());
     const Eigen::Vector3d target = random.pick(room.interest) + 0.1 * jitter;
-    const double distance = random.uniform(0.7, 5.0);
+    // Mostly 1-5 m (a view of a part of the room), sometimes a close-up.
+    const double distance = random.chance(0.15) ? random.uniform(0.6, 1.0) : random.uniform(1.0, 5.0);
     const double azimuth = random.uniform(0, 2 * kPi);
     const double pitch = degrees(random.uniform(-3, 45));
     const Eigen::Vector3d forward(std::cos(pitch) * std::cos(azimuth), std::cos(pitch) * std::sin(azimuth),
