@@ -233,8 +233,9 @@ int main(int argc, char** argv) {
                  "Render N generated scenes, seeds S to S + N - 1, instead of scene files")
       ->check(CLI::Range(1, kMaxRandomScenes));
   app.add_option("--sensor", options.sensor,
-                 "Sensor model: none (exact), kinect, scanner (structured light, 512x512), both (none and "
-                 "kinect) or all; default both for scene files, all for --random")
+                 "Sensor model: none (exact), kinect, scanner (close-range structured light; random scanner "
+                 "scenes are 512x512), both (none and kinect) or all; default both for scene files, all for "
+                 "--random")
       ->check(CLI::IsMember({"none", "kinect", "scanner", "both", "all"}));
   app.add_option("--seed", options.seed, "Seed of the sensor noise; with --random also of the first scene (S)")
       ->capture_default_str();

@@ -1,6 +1,7 @@
 #include "synth/camera_placement.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "synth/renderer.h"

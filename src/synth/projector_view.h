@@ -31,13 +31,10 @@ class ProjectorView {
   /// `normal` (unit, turned towards the camera).
   Illumination illuminate(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) const;
 
-  /// The projector's position in the camera frame.
-  const Eigen::Vector3d& position() const { return position_; }
-
-  /// Whether the direction `to_point` (camera axes, from the projector) is inside its field.
+ private:
+  // Whether the direction `to_point` (camera axes, from the projector) is inside its field.
   bool inField(const Eigen::Vector3d& to_point) const;
 
- private:
   Eigen::Vector3d position_;
   Eigen::Matrix3d projector_from_camera_;  // turns camera axes into the projector's aimed axes
   double half_width_;
