@@ -140,7 +140,7 @@ Assembly makeStairs(double max_height, RandomSource& random) {
   }
   stairs.half_size = Eigen::Vector2d(width / 2, depth / 2);
   stairs.height = steps * rise;
-    // Three points (foot, middle, landing): a camera in a hall looks at the stairs more often
+  // Three points (foot, middle, landing): a camera in a hall looks at the stairs more often
   // than at any one other object.
   stairs.interest.emplace_back(0.0, front - run, rise);
   stairs.interest.emplace_back(0.0, 0.0, stairs.height / 2);

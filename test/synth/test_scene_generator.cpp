@@ -158,7 +158,7 @@ TEST(RandomScenes, CameraIsHalfAMetreToSixMetresFromTheNearestSurface) {
       small.intrinsics = scene.intrinsics.scaledTo(scene.intrinsics.width / 4, scene.intrinsics.height / 4);
       const RenderedFrame frame = render(small, SensorModel::none, seed);
       for (const Eigen::Vector3f& point : frame.points) {
-                if (!isNaN(point)) {
+        if (!isNaN(point)) {
           ASSERT_GE(point.norm(), 0.5F);
         }
       }
