@@ -7,8 +7,8 @@ namespace floodplane::synth {
 
 CameraIntrinsics CameraIntrinsics::scaledTo(int new_width, int new_height) const {
   if (new_width < 1 || new_height < 1) {
-    throw std::invalid_argument("CameraIntrinsics::scaledTo: size " + std::to_string(new_width) +
-                                "x" + std::to_string(new_height) + " is not positive");
+    throw std::invalid_argument("CameraIntrinsics::scaledTo: size " + std::to_string(new_width) + "x" +
+                                std::to_string(new_height) + " is not positive");
   }
   const double scale_x = static_cast<double>(new_width) / width;
   const double scale_y = static_cast<double>(new_height) / height;
@@ -22,8 +22,7 @@ CameraIntrinsics CameraIntrinsics::scaledTo(int new_width, int new_height) const
   return scaled;
 }
 
-Eigen::Isometry3d lookAt(const Eigen::Vector3d& position, const Eigen::Vector3d& target,
-                         const Eigen::Vector3d& up) {
+Eigen::Isometry3d lookAt(const Eigen::Vector3d& position, const Eigen::Vector3d& target, const Eigen::Vector3d& up) {
   const Eigen::Vector3d forward = target - position;
   if (forward.norm() < 1e-9) {
     throw std::invalid_argument("lookAt: the target is the camera position");

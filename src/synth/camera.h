@@ -19,9 +19,7 @@ struct CameraIntrinsics {
 
   /// The ray through the centre of pixel (u, v), scaled so its z component is 1: a point at
   /// parameter t along it has depth z = t.
-  Eigen::Vector3d rayThroughPixel(int u, int v) const {
-    return {(u - cx) / fx, (v - cy) / fy, 1.0};
-  }
+  Eigen::Vector3d rayThroughPixel(int u, int v) const { return {(u - cx) / fx, (v - cy) / fy, 1.0}; }
 
   /// The same camera at another resolution, seeing the same field of view: fx and cx scale
   /// with new_width / width, fy and cy with new_height / height. The principal point is
@@ -35,7 +33,6 @@ struct CameraIntrinsics {
 /// pointing up in the image: the transform from camera to world coordinates.
 /// Throws std::invalid_argument if target equals position or up is parallel to the
 /// viewing direction.
-Eigen::Isometry3d lookAt(const Eigen::Vector3d& position, const Eigen::Vector3d& target,
-                         const Eigen::Vector3d& up);
+Eigen::Isometry3d lookAt(const Eigen::Vector3d& position, const Eigen::Vector3d& target, const Eigen::Vector3d& up);
 
 }  // namespace floodplane::synth

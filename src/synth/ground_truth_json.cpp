@@ -10,7 +10,7 @@ std::string groundTruthJson(const RenderedFrame& frame) {
   document["scene"] = frame.scene_name;
   document["description"] = frame.scene_description;
   document["sensor"] = sensorModelName(frame.sensor);
-  if (frame.sensor == SensorModel::kinect) {
+  if (frame.sensor != SensorModel::none) {
     document["seed"] = frame.seed;
   }
   document["camera"] = {{"width", frame.intrinsics.width}, {"height", frame.intrinsics.height},

@@ -8,7 +8,7 @@
 namespace floodplane::synth {
 
 /// The frame's plane listing as JSON text (format in data/scenes/README.md): the scene,
-/// sensor model, seed (kinect only) and camera intrinsics, then one entry per plane with its
+/// sensor model, seed (noisy sensors only) and camera intrinsics, then one entry per plane with its
 /// id, primitive, face, unit normal (towards the camera), d (n . P + d = 0, camera frame,
 /// metres), pixel count and whether it faces the camera.
 std::string groundTruthJson(const RenderedFrame& frame);

@@ -14,8 +14,7 @@ namespace floodplane::synth {
 
 class PixelRandom {
  public:
-  PixelRandom(std::uint64_t seed, std::uint64_t pixel_index)
-      : state_(mix(mix(seed) + pixel_index)) {}
+  PixelRandom(std::uint64_t seed, std::uint64_t pixel_index) : state_(mix(mix(seed) + pixel_index)) {}
 
   /// Uniform in [0, 1), 53 random bits.
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }

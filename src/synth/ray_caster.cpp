@@ -1,7 +1,9 @@
 #include "ray_caster.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -18,6 +20,9 @@ constexpr double kPerpendicularTolerance = 1e-3;
 // Smaller lengths (metres) count as zero.
 constexpr double kLengthEpsilon = 1e-9;
 constexpr double kDegreesPerRadian = 57.29577951308232;
+// A prism's extrusion must leave its base's plane by more than this angle (sine, ~0.06
+// degrees): flatter, the prism has no volume to speak of.
+constexpr double kExtrusionSineTolerance = 1e-3;
 
 std::string formatNumber(double value) {
   std::ostringstream text;
@@ -26,22 +31,104 @@ std::string formatNumber(double value) {
   return text.str();
 }
 
-// Turns one primitive into camera-frame surfaces and ground-truth planes, checking its
+// Where a point lies relative to a simple polygon in 2D, by the even-odd rule (as
+// PolygonSurface::contains, without its bounding-box shortcut).
+bool insidePolygon2d(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vector2d& point) {
+  bool inside = false;
+  for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+    const Eigen::Vector2d& a = outline[i];
+    const Eigen::Vector2d& b = outline[j];
+    if ((a.y() > point.y()) != (b.y() > point.y()) &&
+        point.x() < a.x() + (point.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double cross2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// True when the closed segments ab and cd share a point (collinear overlaps included).
+bool segmentsTouch(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                   const Eigen::Vector2d& d) {
+  const double side_c = cross2d(b - a, c - a);
+  const double side_d = cross2d(b - a, d - a);
+  const double side_a = cross2d(d - c, a - c);
+  const double side_b = cross2d(d - c, b - c);
+  if (((side_c > 0.0 && side_d < 0.0) || (side_c < 0.0 && side_d > 0.0)) &&
+      ((side_a > 0.0 && side_b < 0.0) || (side_a < 0.0 && side_b > 0.0))) {
+    return true;
+  }
+  const auto on_segment = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    return r.x() >= std::min(p.x(), q.x()) && r.x() <= std::max(p.x(), q.x()) && r.y() >= std::min(p.y(), q.y()) &&
+           r.y() <= std::max(p.y(), q.y());
+  };
+  return (side_c == 0.0 && on_segment(a, b, c)) || (side_d == 0.0 && on_segment(a, b, d)) ||
+         (side_a == 0.0 && on_segment(c, d, a)) || (side_b == 0.0 && on_segment(c, d, b));
+}
+
+// The index of an edge that crosses or touches a non-adjacent edge of the closed polygon, or
+// nothing when the polygon is simple.
+std::optional<std::size_t> selfIntersectingEdge(const std::vector<Eigen::Vector2d>& outline) {
+  const std::size_t n = outline.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) {
+        continue;  // adjacent through the closing edge
+      }
+      if (segmentsTouch(outline[i], outline[(i + 1) % n], outline[j], outline[(j + 1) % n])) {
+        return i;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// The plane of a polygon's vertices: centroid, unit normal by Newell's method (the sum of edge
+// cross products is the normal scaled by twice the area, robust for non-convex polygons; it
+// points to where the vertices run counter-clockwise), and twice the area.
+struct PolygonPlane {
+  Eigen::Vector3d centroid;
+  Eigen::Vector3d normal;
+  double twice_area;
+};
+
+PolygonPlane polygonPlane(const std::vector<Eigen::Vector3d>& vertices) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& vertex : vertices) {
+    centroid += vertex;
+  }
+  centroid /= static_cast<double>(vertices.size());
+  Eigen::Vector3d area_normal = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    area_normal += (vertices[i] - centroid).cross(vertices[(i + 1) % vertices.size()] - centroid);
+  }
+  const double twice_area = area_normal.norm();
+  return {centroid, twice_area > 0.0 ? Eigen::Vector3d(area_normal / twice_area) : Eigen::Vector3d::Zero(), twice_area};
+}
+
+// The surfaces a scene's primitives turn into, in the order RayCaster::cast tests them.
+struct SurfaceLists {
+  std::vector<PolygonSurface>& polygons;
+  std::vector<BoxSurface>& boxes;
+  std::vector<SphereSurface>& spheres;
+  std::vector<CylinderSurface>& cylinders;
+  std::vector<PrismSurface>& prisms;
+  std::vector<GroundTruthPlane>& planes;
+};
+
+// Turns one primitive into viewpoint-frame surfaces and ground-truth planes, checking its
 // geometry; used with std::visit.
 class SurfaceBuilder {
  public:
-  SurfaceBuilder(const Eigen::Isometry3d& camera_from_world, std::string where,
-                 std::string label, std::vector<PolygonSurface>& polygons,
-                 std::vector<BoxSurface>& boxes, std::vector<SphereSurface>& spheres,
-                 std::vector<CylinderSurface>& cylinders, std::vector<GroundTruthPlane>& planes)
+  SurfaceBuilder(const Eigen::Isometry3d& camera_from_world, std::string viewpoint, std::string where,
+                 std::string label, std::uint32_t primitive, const SurfaceLists& lists)
       : camera_from_world_(camera_from_world),
+        viewpoint_(std::move(viewpoint)),
         where_(std::move(where)),
         label_(std::move(label)),
-        polygons_(polygons),
-        boxes_(boxes),
-        spheres_(spheres),
-        cylinders_(cylinders),
-        planes_(planes) {}
+        primitive_(primitive),
+        lists_(lists) {}
 
   void operator()(const Rectangle& rectangle) const {
     const double length_u = rectangle.edge_u.norm();
@@ -51,16 +138,17 @@ class SurfaceBuilder {
     }
     const double cosine = rectangle.edge_u.dot(rectangle.edge_v) / (length_u * length_v);
     if (std::abs(cosine) > kPerpendicularTolerance) {
-      fail("edge_u and edge_v must be perpendicular, they are " +
-           formatNumber(std::acos(cosine) * kDegreesPerRadian) + " degrees apart");
+      fail("edge_u and edge_v must be perpendicular, they are " + formatNumber(std::acos(cosine) * kDegreesPerRadian) +
+           " degrees apart");
     }
     const Eigen::Vector3d half_u = rectangle.edge_u / 2.0;
     const Eigen::Vector3d half_v = rectangle.edge_v / 2.0;
     addPolygon({rectangle.center - half_u - half_v, rectangle.center + half_u - half_v,
-                rectangle.center + half_u + half_v, rectangle.center - half_u + half_v});
+                rectangle.center + half_u + half_v, rectangle.center - half_u + half_v},
+               {});
   }
 
-  void operator()(const Polygon& polygon) const { addPolygon(polygon.vertices); }
+  void operator()(const Polygon& polygon) const { addPolygon(polygon.vertices, polygon.holes); }
 
   void operator()(const Box& box) const {
     if ((box.size.array() <= 0.0).any()) {
@@ -78,7 +166,7 @@ class SurfaceBuilder {
     const Eigen::Vector3d half_size = box.size / 2.0;
     const Eigen::Vector3d camera_in_box = camera_from_box.inverse().translation();
     if ((camera_in_box.array().abs() < half_size.array()).all()) {
-      fail("the camera is inside this box");
+      fail("the " + viewpoint_ + " is inside this box");
     }
     static constexpr std::array<const char*, 6> face_names{"+x", "-x", "+y", "-y", "+z", "-z"};
     std::array<std::uint32_t, 6> face_ids{};
@@ -86,13 +174,12 @@ class SurfaceBuilder {
       for (int side = 0; side < 2; ++side) {
         const double sign = side == 0 ? 1.0 : -1.0;
         const Eigen::Vector3d outward = sign * camera_from_box.linear().col(axis);
-        const Eigen::Vector3d face_center =
-            camera_from_box.translation() + half_size[axis] * outward;
+        const Eigen::Vector3d face_center = camera_from_box.translation() + half_size[axis] * outward;
         const std::size_t face = 2 * static_cast<std::size_t>(axis) + static_cast<std::size_t>(side);
         face_ids[face] = addPlane(outward, face_center, face_names[face], false);
       }
     }
-    boxes_.emplace_back(camera_from_box, half_size, face_ids);
+    lists_.boxes.emplace_back(camera_from_box, half_size, face_ids, primitive_);
   }
 
   void operator()(const Sphere& sphere) const {
@@ -101,9 +188,9 @@ class SurfaceBuilder {
     }
     const Eigen::Vector3d center = camera_from_world_ * sphere.center;
     if (center.norm() <= sphere.radius) {
-      fail("the camera is inside this sphere");
+      fail("the " + viewpoint_ + " is inside this sphere");
     }
-    spheres_.emplace_back(center, sphere.radius);
+    lists_.spheres.emplace_back(center, sphere.radius, primitive_);
   }
 
   void operator()(const Cylinder& cylinder) const {
@@ -119,11 +206,62 @@ class SurfaceBuilder {
     const double along_axis = camera_from_base.dot(axis);
     const double across_axis = (camera_from_base - along_axis * axis).norm();
     if (along_axis >= 0.0 && along_axis <= cylinder.height && across_axis <= cylinder.radius) {
-      fail("the camera is inside this cylinder");
+      fail("the " + viewpoint_ + " is inside this cylinder");
     }
     const std::uint32_t top = addPlane(axis, base + cylinder.height * axis, "top", false);
     const std::uint32_t bottom = addPlane(-axis, base, "bottom", false);
-    cylinders_.emplace_back(base, axis, cylinder.radius, cylinder.height, top, bottom);
+    lists_.cylinders.emplace_back(base, axis, cylinder.radius, cylinder.height, top, bottom, primitive_);
+  }
+
+  void operator()(const Prism& prism) const {
+    std::vector<Eigen::Vector3d> base;
+    for (const auto& vertex : prism.base) {
+      base.push_back(camera_from_world_ * vertex);
+    }
+    const Eigen::Vector3d extrusion = camera_from_world_.linear() * prism.extrusion;
+    const PolygonPlane plane = checkedPlane(base, "base", "the base");
+    // sign(extrusion . normal) turns the base's winding into "outward": the prism lies on the
+    // extrusion's side of its base.
+    const double rise = extrusion.dot(plane.normal);
+    if (std::abs(rise) < kExtrusionSineTolerance * extrusion.norm() || extrusion.norm() < kLengthEpsilon) {
+      fail("extrusion must leave the base's plane (it is zero or lies in the plane)");
+    }
+    const double orientation = rise > 0.0 ? 1.0 : -1.0;
+    const Eigen::Vector3d axis_u = plane.normal.unitOrthogonal();
+    const Eigen::Vector3d axis_v = plane.normal.cross(axis_u);
+    std::vector<Eigen::Vector2d> outline;
+    for (const auto& vertex : base) {
+      outline.emplace_back((vertex - plane.centroid).dot(axis_u), (vertex - plane.centroid).dot(axis_v));
+    }
+    if (const auto edge = selfIntersectingEdge(outline)) {
+      fail("the base is not a simple polygon: edge " + std::to_string(*edge) + " crosses or touches another edge");
+    }
+    // The viewpoint is inside when its shadow along the extrusion falls inside the base, between
+    // the base and the top.
+    const double sweep = -plane.normal.dot(plane.centroid) / rise;  // origin = base point + sweep * extrusion
+    const Eigen::Vector3d on_base = -sweep * extrusion - plane.centroid;
+    if (sweep > 0.0 && sweep < 1.0 && insidePolygon2d(outline, {on_base.dot(axis_u), on_base.dot(axis_v)})) {
+      fail("the " + viewpoint_ + " is inside this prism");
+    }
+
+    std::vector<PolygonSurface> faces;
+    std::vector<Eigen::Vector3d> top;
+    for (const auto& vertex : base) {
+      top.push_back(vertex + extrusion);
+    }
+    faces.push_back(facePolygon(top, orientation * plane.normal, "top"));
+    faces.push_back(facePolygon(base, -orientation * plane.normal, "bottom"));
+    Eigen::Vector3d bounding_center = plane.centroid + 0.5 * extrusion;
+    double bounding_radius = 0.0;
+    for (std::size_t i = 0; i < base.size(); ++i) {
+      const Eigen::Vector3d& a = base[i];
+      const Eigen::Vector3d& b = base[(i + 1) % base.size()];
+      faces.push_back(facePolygon({a, b, b + extrusion, a + extrusion}, orientation * (b - a).cross(extrusion),
+                                  "side " + std::to_string(i)));
+      bounding_radius = std::max({bounding_radius, (a - bounding_center).norm(), (top[i] - bounding_center).norm()});
+    }
+    // A margin of a micrometre keeps rays that touch a vertex from being rejected by round-off.
+    lists_.prisms.emplace_back(std::move(faces), bounding_center, bounding_radius + 1e-6);
   }
 
  private:
@@ -131,10 +269,10 @@ class SurfaceBuilder {
 
   // Adds a plane through `point` with normal `normal` (for a solid's face, pointing out of
   // the solid) and returns its id. The stored normal is turned towards the camera.
-  std::uint32_t addPlane(const Eigen::Vector3d& normal, const Eigen::Vector3d& point,
-                         const char* face, bool two_sided) const {
+  std::uint32_t addPlane(const Eigen::Vector3d& normal, const Eigen::Vector3d& point, std::string face,
+                         bool two_sided) const {
     GroundTruthPlane plane;
-    plane.id = static_cast<std::uint32_t>(planes_.size() + 1);
+    plane.id = static_cast<std::uint32_t>(lists_.planes.size() + 1);
     plane.normal = normal.normalized();
     plane.d = -plane.normal.dot(point);
     // The camera (the origin) is on the side `normal` points to exactly when d > 0.
@@ -144,73 +282,113 @@ class SurfaceBuilder {
       plane.d = -plane.d;
     }
     plane.primitive = label_;
-    plane.face = face;
-    planes_.push_back(plane);
+    plane.face = std::move(face);
+    lists_.planes.push_back(plane);
     return plane.id;
   }
 
-  void addPolygon(const std::vector<Eigen::Vector3d>& world_vertices) const {
-    if (world_vertices.size() < 3) {
-      fail("a polygon needs at least 3 vertices, it has " +
-           std::to_string(world_vertices.size()));
+  // The plane of a polygon's vertices (viewpoint frame), after checking there are enough of
+  // them, that they span an area and lie on one plane. `what` names the vertex list in
+  // messages ("vertices", "holes[0]", "base"), `whole` the polygon ("the polygon", "the base").
+  PolygonPlane checkedPlane(const std::vector<Eigen::Vector3d>& vertices, const std::string& what,
+                            const std::string& whole) const {
+    if (vertices.size() < 3) {
+      fail(whole + " needs at least 3 vertices, it has " + std::to_string(vertices.size()));
     }
-    std::vector<Eigen::Vector3d> vertices;
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (const auto& vertex : world_vertices) {
-      vertices.push_back(camera_from_world_ * vertex);
-      centroid += vertices.back();
+    const PolygonPlane plane = polygonPlane(vertices);
+    if (plane.twice_area < kLengthEpsilon) {
+      fail(whole + " has no area (its vertices are collinear or repeated)");
     }
-    centroid /= static_cast<double>(vertices.size());
-    // Newell's method: the sum of edge cross products is the normal scaled by twice the area,
-    // robust for non-convex polygons.
-    Eigen::Vector3d area_normal = Eigen::Vector3d::Zero();
+    checkOnPlane(vertices, plane, what, whole);
+    return plane;
+  }
+
+  void checkOnPlane(const std::vector<Eigen::Vector3d>& vertices, const PolygonPlane& plane, const std::string& what,
+                    const std::string& whole) const {
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-      area_normal += (vertices[i] - centroid).cross(vertices[(i + 1) % vertices.size()] - centroid);
-    }
-    if (area_normal.norm() < kLengthEpsilon) {
-      fail("the polygon has no area (its vertices are collinear or repeated)");
-    }
-    const Eigen::Vector3d normal = area_normal.normalized();
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      const double off_plane = std::abs(normal.dot(vertices[i] - centroid));
+      const double off_plane = std::abs(plane.normal.dot(vertices[i] - plane.centroid));
       if (off_plane > kPlanarityTolerance) {
-        fail("the polygon is not planar: vertex " + std::to_string(i) + " is " +
-             formatNumber(off_plane * 1000.0) + " mm off the plane of the others");
+        fail(whole + " is not planar: " + what + "[" + std::to_string(i) + "] is " + formatNumber(off_plane * 1000.0) +
+             " mm off the plane of the outline");
       }
     }
-    const std::uint32_t id = addPlane(normal, centroid, "", true);
-    const GroundTruthPlane& plane = planes_.back();
+  }
+
+  // One flat ring (vertices in the viewpoint frame) drawn on its own plane, with the given
+  // outward normal and plane listing: a prism's face.
+  PolygonSurface facePolygon(const std::vector<Eigen::Vector3d>& vertices, const Eigen::Vector3d& outward,
+                             std::string face) const {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const auto& vertex : vertices) {
+      centroid += vertex;
+    }
+    centroid /= static_cast<double>(vertices.size());
+    const std::uint32_t id = addPlane(outward, centroid, std::move(face), false);
+    return ringSurface(lists_.planes.back(), centroid, {vertices}, id);
+  }
+
+  // A PolygonSurface on `plane` (its normal already turned towards the viewpoint) through
+  // `origin`, with the rings' vertices expressed in a basis of the plane.
+  PolygonSurface ringSurface(const GroundTruthPlane& plane, const Eigen::Vector3d& origin,
+                             const std::vector<std::vector<Eigen::Vector3d>>& rings, std::uint32_t id) const {
     const Eigen::Vector3d axis_u = plane.normal.unitOrthogonal();
     const Eigen::Vector3d axis_v = plane.normal.cross(axis_u);
     std::vector<Eigen::Vector2d> outline;
-    for (const auto& vertex : vertices) {
-      outline.emplace_back((vertex - centroid).dot(axis_u), (vertex - centroid).dot(axis_v));
+    std::vector<std::size_t> ring_ends;
+    for (const auto& ring : rings) {
+      for (const auto& vertex : ring) {
+        outline.emplace_back((vertex - origin).dot(axis_u), (vertex - origin).dot(axis_v));
+      }
+      ring_ends.push_back(outline.size());
     }
-    polygons_.emplace_back(plane.normal, plane.d, centroid, axis_u, axis_v, std::move(outline), id);
+    return {plane.normal, plane.d, origin, axis_u, axis_v, std::move(outline), std::move(ring_ends), id, primitive_};
+  }
+
+  void addPolygon(const std::vector<Eigen::Vector3d>& world_vertices,
+                  const std::vector<std::vector<Eigen::Vector3d>>& world_holes) const {
+    std::vector<std::vector<Eigen::Vector3d>> rings(1);
+    for (const auto& vertex : world_vertices) {
+      rings[0].push_back(camera_from_world_ * vertex);
+    }
+    const PolygonPlane plane = checkedPlane(rings[0], "vertices", "the polygon");
+    for (std::size_t h = 0; h < world_holes.size(); ++h) {
+      const std::string name = "holes[" + std::to_string(h) + "]";
+      if (world_holes[h].size() < 3) {
+        fail("hole " + std::to_string(h) + " needs at least 3 vertices, it has " +
+             std::to_string(world_holes[h].size()));
+      }
+      rings.emplace_back();
+      for (const auto& vertex : world_holes[h]) {
+        rings.back().push_back(camera_from_world_ * vertex);
+      }
+      checkOnPlane(rings.back(), plane, name, "the polygon");
+    }
+    const std::uint32_t id = addPlane(plane.normal, plane.centroid, "", true);
+    lists_.polygons.push_back(ringSurface(lists_.planes.back(), plane.centroid, rings, id));
   }
 
   const Eigen::Isometry3d& camera_from_world_;
+  std::string viewpoint_;
   std::string where_;
   std::string label_;
-  std::vector<PolygonSurface>& polygons_;
-  std::vector<BoxSurface>& boxes_;
-  std::vector<SphereSurface>& spheres_;
-  std::vector<CylinderSurface>& cylinders_;
-  std::vector<GroundTruthPlane>& planes_;
+  std::uint32_t primitive_;
+  SurfaceLists lists_;
 };
 
 }  // namespace
 
-RayCaster::RayCaster(const Scene& scene) {
-  const Eigen::Isometry3d camera_from_world = scene.world_from_camera.inverse();
+RayCaster::RayCaster(const Scene& scene) : RayCaster(scene, scene.world_from_camera, "camera") {}
+
+RayCaster::RayCaster(const Scene& scene, const Eigen::Isometry3d& world_from_viewpoint, const std::string& viewpoint) {
+  const Eigen::Isometry3d camera_from_world = world_from_viewpoint.inverse();
+  const SurfaceLists lists{polygons_, boxes_, spheres_, cylinders_, prisms_, planes_};
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& primitive = scene.primitives[i];
-    const std::string description =
-        describePrimitive(i, shapeTypeName(primitive.shape), primitive.name);
-    std::visit(SurfaceBuilder(camera_from_world, scene.source + ": " + description,
-                              primitive.name.empty() ? description : primitive.name, polygons_,
-                              boxes_, spheres_, cylinders_, planes_),
-               primitive.shape);
+    const std::string description = describePrimitive(i, shapeTypeName(primitive.shape), primitive.name);
+    std::visit(
+        SurfaceBuilder(camera_from_world, viewpoint, scene.source + ": " + description,
+                       primitive.name.empty() ? description : primitive.name, static_cast<std::uint32_t>(i), lists),
+        primitive.shape);
   }
 }
 
@@ -227,6 +405,9 @@ SurfaceHit RayCaster::cast(const Eigen::Vector3d& direction) const {
   }
   for (const auto& cylinder : cylinders_) {
     cylinder.intersect(direction, nearest);
+  }
+  for (const auto& prism : prisms_) {
+    prism.intersect(direction, nearest);
   }
   return nearest;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // A scene turned into camera-frame surfaces, with its ground-truth planes, ready to cast rays.
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
 #include <vector>
 
 #include "synth/rendered_frame.h"
@@ -17,7 +18,13 @@ class RayCaster {
   /// perpendicular, a polygon that is degenerate or not planar, a camera inside a solid.
   explicit RayCaster(const Scene& scene);
 
-  /// The nearest surface along the ray from the camera centre in `direction` (z = 1).
+  /// The same scene seen from another viewpoint (a structured-light projector): surfaces and
+  /// planes in the frame `world_from_viewpoint` maps to world coordinates; `viewpoint` names it
+  /// in messages ("the projector is inside this box").
+  RayCaster(const Scene& scene, const Eigen::Isometry3d& world_from_viewpoint, const std::string& viewpoint);
+
+  /// The nearest surface along the ray from the viewpoint in `direction`: at t * direction.
+  /// Through a pixel (direction z = 1) t is the depth.
   SurfaceHit cast(const Eigen::Vector3d& direction) const;
 
   /// Every ground-truth plane (pixel counts still 0), ordered by id from 1.
@@ -28,6 +35,7 @@ class RayCaster {
   std::vector<BoxSurface> boxes_;
   std::vector<SphereSurface> spheres_;
   std::vector<CylinderSurface> cylinders_;
+  std::vector<PrismSurface> prisms_;
   std::vector<GroundTruthPlane> planes_;
 };
 

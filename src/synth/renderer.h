@@ -5,17 +5,21 @@
 
 #include "synth/rendered_frame.h"
 #include "synth/scene.h"
+#include "synth/scanner_model.h"
 #include "synth/sensor_model.h"
 
 namespace floodplane::synth {
 
 struct RenderSettings {
   SensorModel sensor = SensorModel::none;
-  std::uint64_t seed = 1;  ///< the kinect model's noise; the same seed gives the same frame
+  std::uint64_t seed = 1;  ///< the noise of kinect and scanner; the same seed gives the same frame
   KinectParams kinect;     ///< used when sensor == SensorModel::kinect
+  ScannerParams scanner;   ///< used when sensor == SensorModel::scanner
 };
 
-/// Renders `scene` through its camera (scene.intrinsics, scene.world_from_camera).
+/// Renders `scene` through its camera (scene.intrinsics, scene.world_from_camera). The scanner
+/// model renders through the scene's camera too (generated scanner scenes use
+/// scannerIntrinsics()), with its projector at the camera's right.
 /// Deterministic: the same scene and settings give an identical frame, bit for bit.
 /// Throws SceneError for invalid intrinsics or geometry (see RayCaster).
 RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings);

@@ -31,10 +31,13 @@ struct Rectangle {
 };
 
 /// A flat, simple (not self-intersecting) polygon, convex or not, given by its vertices in
-/// order. The vertices must lie on one plane within 0.1 mm. Seen from both sides.
-/// One ground-truth plane.
+/// order, optionally with holes (a wall with a door or a niche in it), each a simple polygon
+/// inside the outline. All vertices must lie on one plane within 0.1 mm. A point is inside
+/// when it is inside the outline and in no hole (the even-odd rule over all rings). Seen from
+/// both sides. One ground-truth plane.
 struct Polygon {
   std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<Eigen::Vector3d>> holes;
 };
 
 /// A solid box with any pose: `rotation` turns the box's axes into world axes and `size`
@@ -62,14 +65,31 @@ struct Cylinder {
   double height = 0.0;
 };
 
-using Shape = std::variant<Rectangle, Polygon, Box, Sphere, Cylinder>;
+/// A solid prism: the flat polygon `base` (simple, convex or not, vertices in order) swept
+/// along `extrusion`, which must not lie in the base's plane (it may be oblique). Every face is
+/// a ground-truth plane: the base's copy at base + extrusion ("top") first, then the base
+/// ("bottom"), then one side per base edge, "side 0" from vertex 0 to vertex 1 and so on.
+/// Wedges, ramps, hexagonal blocks and roof-shaped blocks are prisms.
+struct Prism {
+  std::vector<Eigen::Vector3d> base;
+  Eigen::Vector3d extrusion = Eigen::Vector3d::Zero();
+};
+
+using Shape = std::variant<Rectangle, Polygon, Box, Sphere, Cylinder, Prism>;
 
 /// The name of a shape's type as written in scene files ("rectangle", "box", ...).
 const char* shapeTypeName(const Shape& shape);
 
+/// The shape moved by the rigid transform `pose` (points mapped, directions turned): how the
+/// scene generators place objects built in their own frame.
+Shape transformShape(const Shape& shape, const Eigen::Isometry3d& pose);
+
 struct Primitive {
   std::string name;  ///< for messages and the ground-truth listing; may be empty
   Shape shape;
+  /// The share of the light falling on the surface that it sends back, in (0, 1]: 1 for white
+  /// matte, 0.2 for a dark surface. Only the scanner model uses it: dark surfaces return less.
+  double albedo = 1.0;
 };
 
 /// How messages refer to a primitive: `primitives[3] (box "crate")`, index counted from 0 as

@@ -55,9 +55,7 @@ class SceneObject {
 
   double number(const char* key) const { return toNumber(required(key), key); }
 
-  double number(const char* key, double fallback) const {
-    return has(key) ? number(key) : fallback;
-  }
+  double number(const char* key, double fallback) const { return has(key) ? number(key) : fallback; }
 
   int integer(const char* key, int fallback) const {
     if (!has(key)) {
@@ -88,21 +86,40 @@ class SceneObject {
   }
 
   // A list of 3-vectors, e.g. a polygon's vertices.
-  std::vector<Eigen::Vector3d> vector3List(const char* key) const {
-    const json& value = required(key);
+  std::vector<Eigen::Vector3d> vector3List(const char* key) const { return toVector3List(required(key), key); }
+
+  // A list of lists of 3-vectors, e.g. a polygon's holes; empty when the key is missing.
+  std::vector<std::vector<Eigen::Vector3d>> vector3Lists(const char* key) const {
+    std::vector<std::vector<Eigen::Vector3d>> lists;
+    if (!has(key)) {
+      return lists;
+    }
+    const json& value = value_.at(key);
     if (!value.is_array()) {
-      fail(std::string("\"") + key + "\" must be an array of [x, y, z] points");
+      fail(std::string("\"") + key + "\" must be an array of lists of [x, y, z] points");
     }
-    std::vector<Eigen::Vector3d> points;
     for (std::size_t i = 0; i < value.size(); ++i) {
-      points.push_back(toVector3(value[i], std::string(key) + "[" + std::to_string(i) + "]"));
+      lists.push_back(toVector3List(value[i], std::string(key) + "[" + std::to_string(i) + "]"));
     }
-    return points;
+    return lists;
+  }
+
+  // A 3x3 matrix given as three rows of 3 numbers.
+  Eigen::Matrix3d matrix3(const char* key) const {
+    const json& value = required(key);
+    if (!value.is_array() || value.size() != 3) {
+      fail(std::string("\"") + key + "\" must be an array of 3 rows of 3 numbers");
+    }
+    Eigen::Matrix3d matrix;
+    for (Eigen::Index row = 0; row < 3; ++row) {
+      const std::string name = std::string(key) + "[" + std::to_string(row) + "]";
+      matrix.row(row) = toVector3(value[static_cast<std::size_t>(row)], name).transpose();
+    }
+    return matrix;
   }
 
   SceneObject object(const char* key, std::initializer_list<const char*> allowed_keys) const {
-    return SceneObject(required(key), context_.empty() ? key : context_ + "." + key, source_,
-                       allowed_keys);
+    return SceneObject(required(key), context_.empty() ? key : context_ + "." + key, source_, allowed_keys);
   }
 
  private:
@@ -111,6 +128,17 @@ class SceneObject {
       fail("\"" + name + "\" must be a finite number");
     }
     return value.get<double>();
+  }
+
+  std::vector<Eigen::Vector3d> toVector3List(const json& value, const std::string& name) const {
+    if (!value.is_array()) {
+      fail("\"" + name + "\" must be an array of [x, y, z] points");
+    }
+    std::vector<Eigen::Vector3d> points;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      points.push_back(toVector3(value[i], name + "[" + std::to_string(i) + "]"));
+    }
+    return points;
   }
 
   Eigen::Vector3d toVector3(const json& value, const std::string& name) const {
@@ -129,19 +157,26 @@ double degreesToRadians(double degrees) { return degrees * kPi / 180.0; }
 
 // "rotation": {"rpy_deg": [roll, pitch, yaw]} turns about the world's x by roll, then y by
 // pitch, then z by yaw (R = Rz(yaw) Ry(pitch) Rx(roll)); {"axis": [x, y, z], "angle_deg": a}
-// turns by a about the axis.
-Eigen::Matrix3d parseRotation(const SceneObject& primitive) {
-  if (!primitive.has("rotation")) {
+// turns by a about the axis; {"matrix": [[r00, r01, r02], [r10, ...], [r20, ...]]} gives R by
+// its rows (exact: the scene writer uses it). Whether a matrix is a rotation is checked where
+// it is used.
+Eigen::Matrix3d parseRotation(const SceneObject& parent) {
+  if (!parent.has("rotation")) {
     return Eigen::Matrix3d::Identity();
   }
-  const SceneObject rotation = primitive.object("rotation", {"rpy_deg", "axis", "angle_deg"});
-  if (rotation.has("rpy_deg") == rotation.has("axis")) {
-    rotation.fail("give either \"rpy_deg\" or \"axis\" with \"angle_deg\"");
+  const SceneObject rotation = parent.object("rotation", {"rpy_deg", "axis", "angle_deg", "matrix"});
+  const int forms =
+      (rotation.has("rpy_deg") ? 1 : 0) + (rotation.has("axis") ? 1 : 0) + (rotation.has("matrix") ? 1 : 0);
+  if (forms != 1) {
+    rotation.fail("give one of \"rpy_deg\", \"axis\" with \"angle_deg\", or \"matrix\"");
+  }
+  if (rotation.has("angle_deg") && !rotation.has("axis")) {
+    rotation.fail("\"angle_deg\" belongs with \"axis\"");
+  }
+  if (rotation.has("matrix")) {
+    return rotation.matrix3("matrix");
   }
   if (rotation.has("rpy_deg")) {
-    if (rotation.has("angle_deg")) {
-      rotation.fail("\"angle_deg\" belongs with \"axis\", not with \"rpy_deg\"");
-    }
     const Eigen::Vector3d rpy = rotation.vector3("rpy_deg");
     return (Eigen::AngleAxisd(degreesToRadians(rpy.z()), Eigen::Vector3d::UnitZ()) *
             Eigen::AngleAxisd(degreesToRadians(rpy.y()), Eigen::Vector3d::UnitY()) *
@@ -152,49 +187,50 @@ Eigen::Matrix3d parseRotation(const SceneObject& primitive) {
   if (axis.norm() < 1e-12) {
     rotation.fail("\"axis\" must not be zero");
   }
-  return Eigen::AngleAxisd(degreesToRadians(rotation.number("angle_deg")), axis.normalized())
-      .toRotationMatrix();
+  return Eigen::AngleAxisd(degreesToRadians(rotation.number("angle_deg")), axis.normalized()).toRotationMatrix();
 }
 
 Shape parseShape(const json& value, const std::string& context, const std::string& source) {
   if (!value.is_object() || !value.contains("type") || !value.at("type").is_string()) {
     throw SceneError(source + ": " + context +
-                     ": needs \"type\": \"rectangle\", \"polygon\", \"box\", \"sphere\" or "
-                     "\"cylinder\"");
+                     ": needs \"type\": \"rectangle\", \"polygon\", \"box\", \"sphere\", \"cylinder\" or "
+                     "\"prism\"");
   }
   const std::string type = value.at("type").get<std::string>();
   if (type == "rectangle") {
-    const SceneObject object(value, context, source,
-                             {"type", "name", "center", "edge_u", "edge_v"});
-    return Rectangle{object.vector3("center"), object.vector3("edge_u"),
-                     object.vector3("edge_v")};
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "center", "edge_u", "edge_v"});
+    return Rectangle{object.vector3("center"), object.vector3("edge_u"), object.vector3("edge_v")};
   }
   if (type == "polygon") {
-    const SceneObject object(value, context, source, {"type", "name", "vertices"});
-    return Polygon{object.vector3List("vertices")};
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "vertices", "holes"});
+    return Polygon{object.vector3List("vertices"), object.vector3Lists("holes")};
   }
   if (type == "box") {
-    const SceneObject object(value, context, source,
-                             {"type", "name", "center", "size", "rotation"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "center", "size", "rotation"});
     return Box{object.vector3("center"), object.vector3("size"), parseRotation(object)};
   }
   if (type == "sphere") {
-    const SceneObject object(value, context, source, {"type", "name", "center", "radius"});
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "center", "radius"});
     return Sphere{object.vector3("center"), object.number("radius")};
   }
   if (type == "cylinder") {
-    const SceneObject object(value, context, source,
-                             {"type", "name", "base", "axis", "radius", "height"});
-    return Cylinder{object.vector3("base"), object.vector3("axis", Eigen::Vector3d::UnitZ()),
-                    object.number("radius"), object.number("height")};
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "base", "axis", "radius", "height"});
+    return Cylinder{object.vector3("base"), object.vector3("axis", Eigen::Vector3d::UnitZ()), object.number("radius"),
+                    object.number("height")};
+  }
+  if (type == "prism") {
+    const SceneObject object(value, context, source, {"type", "name", "albedo", "base", "extrusion"});
+    return Prism{object.vector3List("base"), object.vector3("extrusion")};
   }
   throw SceneError(source + ": " + context + ": unknown type \"" + type +
-                   "\" (expected rectangle, polygon, box, sphere or cylinder)");
+                   "\" (expected rectangle, polygon, box, sphere, cylinder or prism)");
 }
 
+// The camera's pose: "look_at" (and "up") aims it; "rotation" gives its axes instead (the
+// columns of world_from_camera: right, down, forward), as the scene writer does.
 void parseCamera(const SceneObject& root, Scene& scene) {
-  const SceneObject camera = root.object(
-      "camera", {"position", "look_at", "up", "width", "height", "fx", "fy", "cx", "cy"});
+  const SceneObject camera =
+      root.object("camera", {"position", "look_at", "up", "rotation", "width", "height", "fx", "fy", "cx", "cy"});
   CameraIntrinsics& intrinsics = scene.intrinsics;
   intrinsics.width = camera.integer("width", intrinsics.width);
   intrinsics.height = camera.integer("height", intrinsics.height);
@@ -203,9 +239,23 @@ void parseCamera(const SceneObject& root, Scene& scene) {
   // The default principal point is the image centre of whatever resolution was given.
   intrinsics.cx = camera.number("cx", (intrinsics.width - 1) / 2.0);
   intrinsics.cy = camera.number("cy", (intrinsics.height - 1) / 2.0);
+  if (camera.has("rotation")) {
+    if (camera.has("look_at") || camera.has("up")) {
+      camera.fail("give either \"look_at\" (and \"up\") or \"rotation\", not both");
+    }
+    const Eigen::Matrix3d rotation = parseRotation(camera);
+    if (!(rotation.transpose() * rotation).isApprox(Eigen::Matrix3d::Identity(), 1e-6) ||
+        rotation.determinant() <= 0.0) {
+      camera.fail("rotation is not a rotation matrix");
+    }
+    scene.world_from_camera = Eigen::Isometry3d::Identity();
+    scene.world_from_camera.linear() = rotation;
+    scene.world_from_camera.translation() = camera.vector3("position");
+    return;
+  }
   try {
-    scene.world_from_camera = lookAt(camera.vector3("position"), camera.vector3("look_at"),
-                                     camera.vector3("up", Eigen::Vector3d::UnitZ()));
+    scene.world_from_camera =
+        lookAt(camera.vector3("position"), camera.vector3("look_at"), camera.vector3("up", Eigen::Vector3d::UnitZ()));
   } catch (const std::invalid_argument& error) {
     camera.fail(error.what());
   }
@@ -253,6 +303,13 @@ Scene parseScene(std::string_view json_text, const std::string& source) {
       described = describePrimitive(i, value.at("type").get<std::string>(), primitive.name);
     }
     primitive.shape = parseShape(value, described, source);
+    if (value.contains("albedo")) {
+      const json& albedo = value.at("albedo");
+      if (!albedo.is_number() || !(albedo.get<double>() > 0.0 && albedo.get<double>() <= 1.0)) {
+        throw SceneError(source + ": " + described + ": \"albedo\" must be a number above 0 and at most 1");
+      }
+      primitive.albedo = albedo.get<double>();
+    }
     scene.primitives.push_back(std::move(primitive));
   }
   return scene;

@@ -1,5 +1,5 @@
 #pragma once
-// Reading scenes from JSON (the format is described in data/scenes/README.md).
+// Reading and writing scenes as JSON (the format is described in data/scenes/README.md).
 
 #include <string>
 #include <string_view>
@@ -18,5 +18,10 @@ Scene parseScene(std::string_view json_text, const std::string& source);
 /// Reads and parses the scene file at `path`; throws SceneError naming `path` if it cannot be
 /// read or is not a valid scene.
 Scene loadScene(const std::string& path);
+
+/// The scene as JSON text that parseScene reads back into the same primitives, camera pose
+/// and intrinsics, bit for bit (a generated scene saved for a closer look renders the same).
+/// The camera is written with "rotation" instead of "look_at", box rotations as matrices.
+std::string sceneJson(const Scene& scene);
 
 }  // namespace floodplane::synth

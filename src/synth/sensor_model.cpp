@@ -8,8 +8,12 @@ namespace floodplane::synth {
 
 const char* sensorModelName(SensorModel model) {
   switch (model) {
-    case SensorModel::none: return "none";
-    case SensorModel::kinect: return "kinect";
+    case SensorModel::none:
+      return "none";
+    case SensorModel::kinect:
+      return "kinect";
+    case SensorModel::scanner:
+      return "scanner";
   }
   return "unknown";
 }
@@ -20,6 +24,9 @@ std::optional<SensorModel> sensorModelFromName(std::string_view name) {
   }
   if (name == "kinect") {
     return SensorModel::kinect;
+  }
+  if (name == "scanner") {
+    return SensorModel::scanner;
   }
   return std::nullopt;
 }
@@ -36,12 +43,10 @@ double quantizeDepth(double z, const KinectParams& params) {
   const double focal_baseline = params.focal_length * params.baseline;
   const double steps = std::round(focal_baseline / z / params.disparity_step);
   // Zero disparity is infinitely far: no depth to report.
-  return steps > 0.0 ? focal_baseline / (steps * params.disparity_step)
-                     : std::numeric_limits<double>::infinity();
+  return steps > 0.0 ? focal_baseline / (steps * params.disparity_step) : std::numeric_limits<double>::infinity();
 }
 
-std::optional<double> measureKinectDepth(double z, const KinectParams& params,
-                                         PixelRandom& random) {
+std::optional<double> measureKinectDepth(double z, const KinectParams& params, PixelRandom& random) {
   // The Gaussian's variance leaves room for the variance quantization adds (see the header).
   const double sigma_z = axialNoiseSigma(z, params);
   const double depth_step = params.disparity_step * z * z / (params.focal_length * params.baseline);

@@ -2,6 +2,7 @@
 // Sensor models: what a depth camera measures where a ray hits a surface.
 //
 // `none`: the exact point.
+// `scanner`: a close-range structured-light scanner with projector shadows (scanner_model.h).
 // `kinect`: a structured-light sensor (Kinect v1 / Asus Xtion), in this order per pixel:
 //   1. Axial noise. A Gaussian depth error along the ray: the whole point is scaled so its z
 //      changes by the sampled amount. The target spread is the axial model of Nguyen, Izadi
@@ -34,12 +35,12 @@
 
 namespace floodplane::synth {
 
-enum class SensorModel { none, kinect };
+enum class SensorModel { none, kinect, scanner };
 
-/// "none" or "kinect", as used in file names and on the command line.
+/// "none", "kinect" or "scanner", as used in file names and on the command line.
 const char* sensorModelName(SensorModel model);
 
-/// The model called `name` ("none", "kinect"), or nothing.
+/// The model called `name` ("none", "kinect", "scanner"), or nothing.
 std::optional<SensorModel> sensorModelFromName(std::string_view name);
 
 struct KinectParams {
@@ -49,9 +50,9 @@ struct KinectParams {
   double sigma_quadratic = 0.0019;  ///< metres per square metre
   double sigma_offset = 0.4;        ///< metres
   // Disparity quantization.
-  double baseline = 0.075;           ///< projector-camera baseline b, metres
-  double focal_length = 525.0;       ///< f of the disparity, pixels
-  double disparity_step = 1.0 / 8.0; ///< pixels; 0 turns quantization off
+  double baseline = 0.075;            ///< projector-camera baseline b, metres
+  double focal_length = 525.0;        ///< f of the disparity, pixels
+  double disparity_step = 1.0 / 8.0;  ///< pixels; 0 turns quantization off
   // Range and dropouts.
   double min_range = 0.45;             ///< metres; nearer returns are lost
   double max_range = 8.0;              ///< metres; farther returns are lost
@@ -67,7 +68,6 @@ double quantizeDepth(double z, const KinectParams& params);
 
 /// The depth the Kinect model reports for a surface at exact depth `z` (metres), or nothing
 /// when the return is lost (out of range or dropped). Draws from `random` as listed above.
-std::optional<double> measureKinectDepth(double z, const KinectParams& params,
-                                         PixelRandom& random);
+std::optional<double> measureKinectDepth(double z, const KinectParams& params, PixelRandom& random);
 
 }  // namespace floodplane::synth

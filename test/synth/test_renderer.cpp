@@ -33,17 +33,14 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Points are stored as floats: half an ulp is 6e-8 of a coordinate, so 1e-6 of the distance
 // to the camera bounds the round-off of any point with room to spare.
-double roundOff(const Eigen::Vector3f& point) {
-  return 1e-6 * std::max(1.0, static_cast<double>(point.norm()));
-}
+double roundOff(const Eigen::Vector3f& point) { return 1e-6 * std::max(1.0, static_cast<double>(point.norm())); }
 
 bool isNaN(const Eigen::Vector3f& point) {
   return std::isnan(point.x()) && std::isnan(point.y()) && std::isnan(point.z());
 }
 
 std::size_t pixelIndex(const CameraIntrinsics& intrinsics, int u, int v) {
-  return static_cast<std::size_t>(v) * static_cast<std::size_t>(intrinsics.width) +
-         static_cast<std::size_t>(u);
+  return static_cast<std::size_t>(v) * static_cast<std::size_t>(intrinsics.width) + static_cast<std::size_t>(u);
 }
 
 // A scene whose world frame is the camera frame (x right, y down, z forward).
@@ -57,8 +54,8 @@ Scene sceneInCameraFrame(std::vector<Primitive> primitives) {
 
 // A rectangle facing the camera at depth z, centred on the optical axis.
 Primitive rectangleFacingCamera(double z, double width, double height) {
-  return {"wall", Rectangle{Eigen::Vector3d(0.0, 0.0, z), Eigen::Vector3d(width, 0.0, 0.0),
-                            Eigen::Vector3d(0.0, height, 0.0)}};
+  return {"wall",
+          Rectangle{Eigen::Vector3d(0.0, 0.0, z), Eigen::Vector3d(width, 0.0, 0.0), Eigen::Vector3d(0.0, height, 0.0)}};
 }
 
 RenderedFrame render(const Scene& scene, SensorModel sensor, std::uint64_t seed = 1) {
@@ -82,8 +79,7 @@ std::vector<ListedPlane> listedPlanes(const RenderedFrame& frame) {
   std::vector<ListedPlane> planes;
   for (const auto& entry : document.at("planes")) {
     const auto normal = entry.at("normal").get<std::vector<double>>();
-    planes.push_back({entry.at("id").get<std::uint32_t>(),
-                      Eigen::Vector3d(normal.at(0), normal.at(1), normal.at(2)),
+    planes.push_back({entry.at("id").get<std::uint32_t>(), Eigen::Vector3d(normal.at(0), normal.at(1), normal.at(2)),
                       entry.at("d").get<double>(), entry.at("pixels").get<std::size_t>(),
                       entry.at("faces_camera").get<bool>()});
   }
@@ -107,8 +103,7 @@ TEST(Camera, PrincipalPointRayHitsThePointStraightAhead) {
   EXPECT_EQ(scene.intrinsics.rayThroughPixel(320, 240), Eigen::Vector3d(0.0, 0.0, 1.0));
 
   const RenderedFrame frame = render(scene, SensorModel::none);
-  EXPECT_EQ(frame.points[pixelIndex(scene.intrinsics, 320, 240)],
-            Eigen::Vector3f(0.0F, 0.0F, 2.0F));
+  EXPECT_EQ(frame.points[pixelIndex(scene.intrinsics, 320, 240)], Eigen::Vector3f(0.0F, 0.0F, 2.0F));
   // Every point projects back onto the centre of its own pixel.
   for (int v = 0; v < scene.intrinsics.height; v += 7) {
     for (int u = 0; u < scene.intrinsics.width; u += 7) {
@@ -142,8 +137,7 @@ TEST(Camera, LookAtPointsTheOpticalAxisAtTheTargetWithUpUpInTheImage) {
   EXPECT_TRUE(world_from_camera.linear().col(1).isApprox(-Eigen::Vector3d::UnitZ()));
   EXPECT_TRUE(world_from_camera.linear().col(0).isApprox(Eigen::Vector3d(0.8, -0.6, 0.0)));
   EXPECT_THROW(lookAt(position, position, Eigen::Vector3d::UnitZ()), std::invalid_argument);
-  EXPECT_THROW(lookAt(position, position + Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()),
-               std::invalid_argument);
+  EXPECT_THROW(lookAt(position, position + Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()), std::invalid_argument);
 }
 
 // ---- Exact geometry (sensor model none) ------------------------------------------------
@@ -190,8 +184,7 @@ TEST(Renderer, PlaneFacingTheCameraHasDepthOneAndOneLabelWhereverItCoversAPixel)
 TEST(Renderer, BoxShowsAtMostThreeFacesAndEachPixelLiesOnTheFaceItsLabelNames) {
   const Eigen::Vector3d center(0.0, 0.0, 0.35);
   const Eigen::Vector3d half_size(0.4, 0.25, 0.35);
-  const Eigen::Matrix3d rotation =
-      Eigen::AngleAxisd(25.0 * kPi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(25.0 * kPi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Vector3d box_x = rotation.col(0);
   struct View {
     Eigen::Vector3d position;
@@ -202,8 +195,8 @@ TEST(Renderer, BoxShowsAtMostThreeFacesAndEachPixelLiesOnTheFaceItsLabelNames) {
                                 {Eigen::Vector3d(2.0, -1.6, 1.5), 3}};
 
   for (const View& view : views) {
-    SCOPED_TRACE("camera at " + std::to_string(view.position.x()) + ", " +
-                 std::to_string(view.position.y()) + ", " + std::to_string(view.position.z()));
+    SCOPED_TRACE("camera at " + std::to_string(view.position.x()) + ", " + std::to_string(view.position.y()) + ", " +
+                 std::to_string(view.position.z()));
     Scene scene = sceneInCameraFrame({{"crate", Box{center, 2.0 * half_size, rotation}}});
     scene.world_from_camera = lookAt(view.position, center, Eigen::Vector3d::UnitZ());
     const RenderedFrame frame = render(scene, SensorModel::none);
@@ -439,8 +432,8 @@ TEST(Kinect, NoReturnsNearerThan45CentimetresOrBeyond8Metres) {
       EXPECT_GE(statistics.nearest, 0.45F);
       EXPECT_LE(statistics.farthest, 8.0F);
     }
-    const double lost = static_cast<double>(statistics.lost) /
-                        static_cast<double>(statistics.lost + statistics.returns);
+    const double lost =
+        static_cast<double>(statistics.lost) / static_cast<double>(statistics.lost + statistics.returns);
     if (z < 0.45 || z > 8.0) {
       EXPECT_EQ(statistics.returns, 0U);
     } else {
@@ -452,8 +445,7 @@ TEST(Kinect, NoReturnsNearerThan45CentimetresOrBeyond8Metres) {
 
 TEST(Kinect, DropsAboutHalfAPercentOfReturnsInRange) {
   const DepthStatistics statistics = measureWall(1.0);  // 10 sigma_z inside both limits
-  const double lost = static_cast<double>(statistics.lost) /
-                      static_cast<double>(statistics.lost + statistics.returns);
+  const double lost = static_cast<double>(statistics.lost) / static_cast<double>(statistics.lost + statistics.returns);
   // 0.5 % of 307200 pixels: 1536 +- 39 expected.
   EXPECT_GT(lost, 0.003);
   EXPECT_LT(lost, 0.007);
@@ -469,19 +461,16 @@ std::string fileBytes(const fs::path& path) {
 // A temporary path unique to the running test and process (ctest runs tests in parallel).
 fs::path uniqueTempPath(const std::string& suffix) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return fs::temp_directory_path() / (std::string("floodplane_") + info->test_suite_name() + "_" +
-                                      info->name() + "_" + std::to_string(::getpid()) + suffix);
+  return fs::temp_directory_path() / (std::string("floodplane_") + info->test_suite_name() + "_" + info->name() + "_" +
+                                      std::to_string(::getpid()) + suffix);
 }
 
 bool sameBytes(const RenderedFrame& a, const RenderedFrame& b) {
   return a.points.size() == b.points.size() && a.labels == b.labels &&
-         std::memcmp(a.points.data(), b.points.data(),
-                     a.points.size() * sizeof(Eigen::Vector3f)) == 0;
+         std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(Eigen::Vector3f)) == 0;
 }
 
-Scene tabletopScene() {
-  return loadScene(std::string(FLOODPLANE_SOURCE_DIR) + "/data/scenes/tabletop.json");
-}
+Scene tabletopScene() { return loadScene(std::string(FLOODPLANE_SOURCE_DIR) + "/data/scenes/tabletop.json"); }
 
 TEST(Renderer, SameSceneAndSeedGiveIdenticalBytes) {
   const Scene scene = tabletopScene();
@@ -541,8 +530,8 @@ TEST(Scenes, EveryFileLoadsAndRendersWithGroundTruthPlanesInBothSensorModels) {
       SCOPED_TRACE(sensorModelName(sensor));
       RenderedFrame frame;
       ASSERT_NO_THROW(frame = render(scene, sensor));
-      ASSERT_EQ(frame.points.size(), static_cast<std::size_t>(scene.intrinsics.width) *
-                                         static_cast<std::size_t>(scene.intrinsics.height));
+      ASSERT_EQ(frame.points.size(),
+                static_cast<std::size_t>(scene.intrinsics.width) * static_cast<std::size_t>(scene.intrinsics.height));
       const std::vector<std::size_t> counts = labelCounts(frame);
       std::size_t planes_with_pixels = 0;
       for (std::size_t k = 0; k < frame.planes.size(); ++k) {

@@ -16,10 +16,11 @@ using namespace floodplane::synth;
 constexpr double kFocalBaseline = 525.0 * 0.075;
 
 TEST(SensorModel, NamesRoundTripAndUnknownNamesAreRejected) {
-  for (SensorModel model : {SensorModel::none, SensorModel::kinect}) {
+  for (SensorModel model : {SensorModel::none, SensorModel::kinect, SensorModel::scanner}) {
     EXPECT_EQ(sensorModelFromName(sensorModelName(model)), model);
   }
   EXPECT_STREQ(sensorModelName(SensorModel::kinect), "kinect");
+  EXPECT_STREQ(sensorModelName(SensorModel::scanner), "scanner");
   EXPECT_FALSE(sensorModelFromName("Kinect").has_value());
   EXPECT_FALSE(sensorModelFromName("").has_value());
 }
