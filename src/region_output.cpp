@@ -68,9 +68,10 @@ void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, s
 
 // ---- RegionBuilder ---------------------------------------------------------------------
 
-void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int subsampling,
+void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, const HoleFilling& holes, int subsampling,
                           const MergedSegments& merged, const Params& params, const Tolerances& tolerances,
                           float angular_pitch, bool refine, Segmentation& out) {
+  holes_ = &holes;
   const std::uint32_t min_inliers = tolerances.minInliers();
   selectCandidates(subsampling, merged, params, tolerances, angular_pitch);
   out.width = full.width;
@@ -81,8 +82,10 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
   // rarely (an outlier far along a ray), make its fit degenerate. The last sort of the
   // candidates checks them again, so that what is reported passes. (With s = 1 and no
   // refinement the labels add no pixel to the clusters, and there is nothing to check again.)
+  // Filled-in holes (HoleFilling) leave the clusters when their pixels are labelled, so their
+  // counts are known only afterwards.
   bool renumbered = false;  // labels still to be renumbered by remap()
-  if (subsampling == 1) {
+  if (subsampling == 1 && !holes.filled()) {
     // Counts are known: number the planes by size before writing any label.
     candidates_.sortBySize(min_inliers, nullptr);
     for (std::size_t s = 1; s < merged.segment_count; ++s)
@@ -139,7 +142,12 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   if (subsampling == 1) {
     const std::uint32_t* table = candidate_of_segment_.data();
     for (std::size_t i = 0; i < full.size(); ++i) {
-      const std::uint32_t k = table[merged.labels[i]];
+      std::uint32_t k = table[merged.labels[i]];
+      if (k != 0 && holes_->isFilled(i)) {
+        // A filled-in hole: it helped the flood across, but it was never measured.
+        candidates_[k].sums.remove(Vec3::load(segmented.point(i)));
+        k = 0;
+      }
       labels[i] = k;
       if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = i;
     }

@@ -11,6 +11,7 @@
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
+#include "hole_filling.h"
 #include "plane_sums.h"
 
 namespace floodplane {
@@ -76,8 +77,11 @@ class RegionBuilder {
  public:
   /// `full` is the input grid, `segmented` the grid that was segmented (the same when s = 1),
   /// `angular_pitch` that of `full`.
-  void build(const PointGrid& full, const PointGrid& segmented, int subsampling, const MergedSegments& merged,
-             const Params& params, const Tolerances& tolerances, float angular_pitch, bool refine, Segmentation& out);
+  /// `segmented` is the grid that was segmented: `full`, or a copy with filled-in holes
+  /// (`holes`), sub-sampled when s > 1.
+  void build(const PointGrid& full, const PointGrid& segmented, const HoleFilling& holes, int subsampling,
+             const MergedSegments& merged, const Params& params, const Tolerances& tolerances, float angular_pitch,
+             bool refine, Segmentation& out);
 
  private:
   // One candidate per flat cluster; candidate_of_segment_ maps every segment to its cluster's.
@@ -114,6 +118,7 @@ class RegionBuilder {
   PlaneCandidates candidates_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k]
   std::vector<std::size_t> queue_;                   // the refinement's
+  const HoleFilling* holes_ = nullptr;
 };
 
 }  // namespace floodplane

@@ -68,6 +68,7 @@ struct Segmenter::Workspace {
   std::vector<float> subsampled;  // x y z 0 of every s-th pixel when s > 1
   std::vector<float> pitch_scratch;
   NoiseEstimator noise_estimator;
+  HoleFilling holes;
   DistanceBuffer buffer;
   SeedSelector selector;
   SeedSelector fine_selector;  // the second pass's smaller seed cube
@@ -84,11 +85,12 @@ struct Segmenter::Workspace {
   Frame prepare(const PointGrid& full, const Params& params, NoiseModel& noise) {
     Frame frame;
     const int s = params.subsampling;
-    frame.grid = sample(full, s);
-    frame.pitch = SeedSelector::estimateAngularPitch(frame.grid, pitch_scratch, static_cast<float>(s) / 525.0f);
-    frame.full_pitch = frame.pitch / static_cast<float>(s);
+    frame.full_pitch = SeedSelector::estimateAngularPitch(full, pitch_scratch);
+    frame.pitch = frame.full_pitch * static_cast<float>(s);
     noise = noiseModel(full, params);
-    frame.tolerances = Tolerances(params, DepthNoise::of(noise), frame.pitch, full.size());
+    const DepthNoise depth_noise = DepthNoise::of(noise);
+    frame.grid = sample(holes.fill(full, Tolerances(params, depth_noise, frame.full_pitch, full.size())), s);
+    frame.tolerances = Tolerances(params, depth_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(params, frame.tolerances, 1.0 / kFineSeedDivisor, frame.pitch, frame.grid.width,
                             frame.grid.height);
@@ -211,8 +213,8 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     merged.root = ws.merger.rootData();
     merged.sums = ws.cluster_sums.data();
     merged.segment_count = ws.segments.size();
-    ws.regions.build(full, frame.grid, params_.subsampling, merged, params_, frame.tolerances, frame.full_pitch,
-                     options.refine, result_);
+    ws.regions.build(full, frame.grid, ws.holes, params_.subsampling, merged, params_, frame.tolerances,
+                     frame.full_pitch, options.refine, result_);
   }
   return result_;
 }

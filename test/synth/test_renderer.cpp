@@ -263,8 +263,8 @@ TEST(Renderer, FacesFlushInOnePlaneAreOneGroundTruthPlaneApartTheyAreTwo) {
     return Primitive{"panel", Rectangle{Eigen::Vector3d(x, -0.2, z), Eigen::Vector3d(width, 0.0, 0.0),
                                         Eigen::Vector3d(0.0, 0.3, 0.0)}};
   };
-  const Scene scene = sceneInCameraFrame({panel(-0.2, 2.0, 0.4), panel(0.2, 2.0, 0.4), panel(-0.4, 3.0, 0.2),
-                                          panel(0.4, 3.0, 0.2)});
+  const Scene scene =
+      sceneInCameraFrame({panel(-0.2, 2.0, 0.4), panel(0.2, 2.0, 0.4), panel(-0.4, 3.0, 0.2), panel(0.4, 3.0, 0.2)});
   const RenderedFrame frame = render(scene, SensorModel::none);
   std::map<std::uint32_t, std::size_t> pixels;
   for (const std::uint32_t label : frame.labels) ++pixels[label];
