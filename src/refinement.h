@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
-#include "region_output.h"
+#include "plane_candidates.h"
 
 namespace floodplane {
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "refinement.h"
@@ -9,62 +10,6 @@
 #include "simd.h"
 
 namespace floodplane {
-
-namespace {
-
-// A plane's thresholds for pixels that join it after merging. The Euclidean tolerance
-// follows from the plane itself: neighbouring pixels on n.P + d = 0 are alpha r^2 / |d| apart
-// (see FloodCriterion); |d| is bounded below where the plane is seen almost edge-on.
-FloodCriterion planeCriterion(const PlaneFit& fit, const Tolerances& tolerances, float angular_pitch) {
-  const double range = fit.centroid.norm();
-  const double distance = std::max(std::abs(fit.offset), 0.1 * range);
-  const double spacing_per_range_sq = angular_pitch / std::max(distance, 1e-6);
-  const Vec3 normal{static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
-                    static_cast<float>(fit.normal.z())};
-  return FloodCriterion::make(normal, static_cast<float>(fit.offset), range, spacing_per_range_sq, tolerances);
-}
-
-}  // namespace
-
-bool acceptablePlane(const PlaneFit& fit, const Params& params) {
-  return fit.valid && fit.curvature <= params.maximum_curvature && facesSensor(fit.normal, fit.centroid);
-}
-
-// ---- PlaneCandidates -------------------------------------------------------------------
-
-bool PlaneCandidates::sortBySize(std::uint32_t min_inliers, const Params* recheck) {
-  order_.resize(candidates_.size());
-  std::iota(order_.begin(), order_.end(), 0);
-  std::stable_sort(order_.begin(), order_.end(),
-                   [&](std::size_t a, std::size_t b) { return candidates_[a].sums.count > candidates_[b].sums.count; });
-  remap_.assign(candidates_.size() + 1, 0);
-  kept_.clear();
-  bool changed = false;
-  for (std::size_t rank = 0; rank < order_.size(); ++rank) {
-    const PlaneCandidate& candidate = candidates_[order_[rank]];
-    if (candidate.sums.count < min_inliers || (recheck && !acceptablePlane(candidate.sums.fit(), *recheck))) {
-      changed = true;
-      continue;
-    }
-    kept_.push_back(candidate);
-    remap_[order_[rank] + 1] = static_cast<std::uint32_t>(kept_.size());
-    changed = changed || order_[rank] != rank;
-  }
-  candidates_.swap(kept_);
-  return changed;
-}
-
-void PlaneCandidates::forgetFirstPixels() {
-  for (PlaneCandidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
-}
-
-void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end) {
-  for (std::size_t i = begin; i < end; ++i) {
-    const std::uint32_t k = remap_[labels[i]];
-    labels[i] = k;
-    if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
-  }
-}
 
 // ---- RegionBuilder ---------------------------------------------------------------------
 
@@ -101,6 +46,15 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, con
     renumbered = candidates_.sortBySize(0, &params);
   }
   if (renumbered) {
+    candidates_.forgetFirstPixels();
+    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
+  }
+  if (occlusion_merging_.run(full, out.labels, candidates_, MergeCriterion(params, tolerances), tolerances,
+                             angular_pitch)) {
+    candidates_.forgetFirstPixels();
+    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
+  }
+  if (dropCurvedPlanes(full, out.labels, tolerances)) {
     candidates_.forgetFirstPixels();
     candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
   }
@@ -228,37 +182,63 @@ void RegionBuilder::labelRun(const PointGrid& full, std::size_t row_start, int u
       const Float4 range_sq = Float4::min(Float4::load(sample_range_sq + u), q.squaredNorm());
       // A NaN range (a hole) gives a NaN tolerance here where the scalar code has sigma_plane,
       // but the hole's own distance is NaN and fails either.
-      (q.planeDistance(c.normal, c.offset) < c.planeTolerance(range_sq)).storeLabels(out_row + u, k);
+      Float4 distance;
+      c.fitsPlane(q, range_sq, distance).storeLabels(out_row + u, k);
     }
   }
 #endif
   for (; u < u_end; ++u) {
     const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-    const float tolerance = c.planeTolerance(nearerRangeSq(sample_range_sq[u], q.squaredNorm()));
-    out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
+    float distance = 0.f;
+    out_row[u] = c.fitsPlane(q, nearerRangeSq(sample_range_sq[u], q.squaredNorm()), distance) ? k : 0u;
   }
 }
 
 void RegionBuilder::labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::size_t gx,
                                    std::uint32_t* out_row) const {
   const Cell& cell = cells_[gx];
-  // Every plane has the same tolerance at a given range.
-  const FloodCriterion& any = candidates_.list().front().criterion;
   for (int u = u_begin; u < u_end; ++u) {
     const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-    float best_distance = any.planeTolerance(nearerRangeSq(cell.sample_range_sq, q.squaredNorm()));
+    const float range_sq = nearerRangeSq(cell.sample_range_sq, q.squaredNorm());
+    float best_distance = std::numeric_limits<float>::infinity();
     std::uint32_t best = 0;
     for (const std::uint32_t k : cell.around) {
       if (k == 0 || k == best) continue;
-      const FloodCriterion& c = candidates_.list()[k - 1].criterion;
-      const float distance = planeDistance(c.normal, c.offset, q);
-      if (distance < best_distance) {
+      float distance = 0.f;  // along q's ray: the plane that explains q with the smaller depth error
+      if (candidates_.list()[k - 1].criterion.fitsPlane(q, range_sq, distance) && distance < best_distance) {
         best_distance = distance;
         best = k;
       }
     }
     out_row[u] = best;
   }
+}
+
+bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels,
+                                     const Tolerances& tolerances) {
+  const std::vector<PlaneCandidate>& list = candidates_.list();
+  if (list.empty()) return false;
+  fits_.clear();
+  for (const PlaneCandidate& candidate : list) fits_.push_back(candidate.sums.fit());
+  planarity_.reset(fits_);
+  // Every other interior pixel (no neighbour in another plane or none) of every other row: a
+  // quarter of the inliers tell a bend as well, and the pixels along a plane's border, which
+  // may be a neighbouring surface's within the tolerance band, would fake one. A neighbour
+  // without a return does not make a border: on a speckled surface there would be no inside.
+  const std::size_t width = static_cast<std::size_t>(full.width);
+  const auto inside = [&](std::size_t j, std::uint32_t k) { return labels[j] == k || !full.isFinite(j); };
+  for (std::size_t y = 2; y + 2 < static_cast<std::size_t>(full.height); y += 2) {
+    const std::size_t row = y * width;
+    for (std::size_t x = 2; x + 1 < width; x += 2) {
+      const std::size_t i = row + x;
+      const std::uint32_t k = labels[i];
+      if (k != 0 && inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+        planarity_.add(k, Vec3::load(full.point(i)));
+    }
+  }
+  curved_.assign(list.size() + 1, false);
+  for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
+  return candidates_.drop(curved_);
 }
 
 void RegionBuilder::addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row) {
