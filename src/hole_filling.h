@@ -25,7 +25,7 @@ namespace floodplane {
 /// the grid would cost more than it brings there.
 class HoleFilling {
  public:
-  static constexpr int kMaxGap = 3;
+  static constexpr int kMaxGap = 5;
 
   /// `grid` itself when it has few bridgeable holes, otherwise the filled copy (valid until
   /// the next call).

@@ -241,7 +241,12 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
   segment.criterion = FloodCriterion::make(seed.normal, -seed.normal.dot(seed.point), seed.point.norm(),
                                            spacing_per_range_sq, tolerances);
 
-  buffer.claim(seed.index, label, 0.0f);
+  // A seed on a pixel another flood claimed (not from the seed scan, which takes only
+  // unclaimed pixels) takes it from that segment.
+  if (const std::int32_t owner = buffer.claim(seed.index, label, 0.0f); owner != 0) {
+    segments[owner].sums.remove(seed.point);
+    segments[owner].lost_pixels = true;
+  }
   segment.sums.add(seed.point);
   const int width = grid.width;
   const int seed_x = static_cast<int>(seed.index % static_cast<std::size_t>(width));

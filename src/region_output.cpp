@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numeric>
 
@@ -10,6 +11,7 @@
 #include "simd.h"
 
 namespace floodplane {
+static const std::size_t kPlanarityStep = std::getenv("PSTEP") ? std::atoi(std::getenv("PSTEP")) : 2;
 
 // ---- RegionBuilder ---------------------------------------------------------------------
 
@@ -227,9 +229,9 @@ bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<st
   // without a return does not make a border: on a speckled surface there would be no inside.
   const std::size_t width = static_cast<std::size_t>(full.width);
   const auto inside = [&](std::size_t j, std::uint32_t k) { return labels[j] == k || !full.isFinite(j); };
-  for (std::size_t y = 2; y + 2 < static_cast<std::size_t>(full.height); y += 2) {
+  for (std::size_t y = 2; y + 2 < static_cast<std::size_t>(full.height); y += kPlanarityStep) {
     const std::size_t row = y * width;
-    for (std::size_t x = 2; x + 1 < width; x += 2) {
+    for (std::size_t x = 2; x + 1 < width; x += kPlanarityStep) {
       const std::size_t i = row + x;
       const std::uint32_t k = labels[i];
       if (k != 0 && inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))

@@ -114,9 +114,9 @@ struct Segmenter::Workspace {
     for (const SeedSelector* seeds : {&selector, &fine_selector}) {
       for (int y = offset; y < grid.height; y += stride) {
         for (int x = offset; x < grid.width; x += stride) {
-          if (buffer.label(static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
-                           static_cast<std::size_t>(x)) != 0)
-            continue;
+          const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
+                                    static_cast<std::size_t>(x);
+          if (buffer.label(pixel) != 0) continue;
           ++result.stats.seed_candidates;
           if (seeds->test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
           ++result.stats.seeds;
