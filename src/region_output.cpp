@@ -15,9 +15,9 @@ static const std::size_t kPlanarityStep = std::getenv("PSTEP") ? std::atoi(std::
 
 // ---- RegionBuilder ---------------------------------------------------------------------
 
-void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, const HoleFilling& holes, int subsampling,
-                          const MergedSegments& merged, const Params& params, const Tolerances& tolerances,
-                          float angular_pitch, bool refine, Segmentation& out) {
+void RegionBuilder::build(const PointGrid& measured, const PointGrid& full, const PointGrid& segmented,
+                          const HoleFilling& holes, int subsampling, const MergedSegments& merged, const Params& params,
+                          const Tolerances& tolerances, float angular_pitch, bool refine, Segmentation& out) {
   holes_ = &holes;
   const std::uint32_t min_inliers = tolerances.minInliers();
   selectCandidates(subsampling, merged, params, tolerances, angular_pitch);
@@ -43,7 +43,7 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, con
     renumbered = candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
   }
   if (refine) {
-    refinePlanes(full, out.labels, candidates_, renumbered, queue_);  // renumbers on its way
+    refinePlanes(full, holes, out.labels, candidates_, renumbered, queue_);  // renumbers on its way
     // Refinement may also have changed the order by size.
     renumbered = candidates_.sortBySize(0, &params);
   }
@@ -60,6 +60,9 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, con
     candidates_.forgetFirstPixels();
     candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
   }
+  // A plane's centroid, covariance and fit are those of its inliers as the caller measured
+  // them, not as they were smoothed for segmenting.
+  if (measured.data != full.data) sumMeasuredPoints(measured, out.labels);
 
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
@@ -120,6 +123,10 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
     for (int v = gy * subsampling; v < v_end; ++v) {
       const std::size_t row_start = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
       labelRowFromCells(full, row_start, subsampling, labels.data() + row_start);
+      if (holes_->filled()) {  // filled-in holes are never labelled
+        for (std::size_t u = 0; u < static_cast<std::size_t>(full.width); ++u)
+          if (holes_->isFilled(row_start + u)) labels[row_start + u] = 0;
+      }
       // The sums in a second pass over the row, so that the labelling loops stay short.
       addRowToSums(full, row_start, labels.data() + row_start);
     }
@@ -216,6 +223,22 @@ void RegionBuilder::labelMixedCell(const PointGrid& full, std::size_t row_start,
   }
 }
 
+void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels) {
+  for (PlaneCandidate& candidate : candidates_.list()) candidate.sums = PlaneSums();
+  const std::size_t width = static_cast<std::size_t>(measured.width);
+  for (std::size_t row = 0; row < labels.size(); row += width) {
+    int u = 0;
+    while (u < measured.width) {
+      const std::uint32_t k = labels[row + static_cast<std::size_t>(u)];
+      const int end = findInRow(labels.data() + row, u, measured.width - 1, k, false);
+      if (k != 0)
+        addRunToSums(candidates_[k].sums, measured, row + static_cast<std::size_t>(u),
+                     static_cast<std::size_t>(end - u));
+      u = end;
+    }
+  }
+}
+
 bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels,
                                      const Tolerances& tolerances) {
   const std::vector<PlaneCandidate>& list = candidates_.list();
@@ -228,7 +251,9 @@ bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<st
   // may be a neighbouring surface's within the tolerance band, would fake one. A neighbour
   // without a return does not make a border: on a speckled surface there would be no inside.
   const std::size_t width = static_cast<std::size_t>(full.width);
-  const auto inside = [&](std::size_t j, std::uint32_t k) { return labels[j] == k || !full.isFinite(j); };
+  const auto inside = [&](std::size_t j, std::uint32_t k) {
+    return labels[j] == k || !full.isFinite(j) || holes_->isFilled(j);
+  };
   for (std::size_t y = 2; y + 2 < static_cast<std::size_t>(full.height); y += kPlanarityStep) {
     const std::size_t row = y * width;
     for (std::size_t x = 2; x + 1 < width; x += kPlanarityStep) {

@@ -40,11 +40,11 @@ class RegionBuilder {
  public:
   /// `full` is the input grid, `segmented` the grid that was segmented (the same when s = 1),
   /// `angular_pitch` that of `full`.
-  /// `segmented` is the grid that was segmented: `full`, or a copy with filled-in holes
-  /// (`holes`), sub-sampled when s > 1.
-  void build(const PointGrid& full, const PointGrid& segmented, const HoleFilling& holes, int subsampling,
-             const MergedSegments& merged, const Params& params, const Tolerances& tolerances, float angular_pitch,
-             bool refine, Segmentation& out);
+  /// `measured` is the caller's grid; `full` the same frame as segmented (holes filled in,
+  /// smoothed), `segmented` that grid sub-sampled when s > 1.
+  void build(const PointGrid& measured, const PointGrid& full, const PointGrid& segmented, const HoleFilling& holes,
+             int subsampling, const MergedSegments& merged, const Params& params, const Tolerances& tolerances,
+             float angular_pitch, bool refine, Segmentation& out);
 
  private:
   // One candidate per flat cluster; candidate_of_segment_ maps every segment to its cluster's.
@@ -67,6 +67,8 @@ class RegionBuilder {
   // The planarity test (planarity.h) on the final planes; drops the curved ones. Returns
   // whether any was dropped (the labels then need renumbering).
   bool dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels, const Tolerances& tolerances);
+  // The planes' sums anew from the measured points of their pixels.
+  void sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels);
   // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
   // each plane's first pixel.
   void addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row);

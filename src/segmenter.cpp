@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "depth_smoothing.h"
 #include "distance_buffer.h"
 #include "noise_estimation.h"
 #include "plane_flood.h"
@@ -56,10 +57,11 @@ class PhaseTimer {
 
 // What one frame is segmented with.
 struct Frame {
-  PointGrid grid;          // the grid that is segmented (sub-sampled when s > 1)
-  float pitch = 0.f;       // its angular pixel pitch [rad]
-  float full_pitch = 0.f;  // that of the full-resolution grid
-  Tolerances tolerances;   // the sensor's depth noise and every length derived from it
+  PointGrid grid;                     // the grid that is segmented (sub-sampled when s > 1)
+  float pitch = 0.f;                  // its angular pixel pitch [rad]
+  float full_pitch = 0.f;             // that of the full-resolution grid
+  Tolerances tolerances;              // the sensor's depth noise and every length derived from it
+  const PointGrid* source = nullptr;  // the full-resolution grid segmented: filled and smoothed
 };
 
 }  // namespace
@@ -69,6 +71,7 @@ struct Segmenter::Workspace {
   std::vector<float> pitch_scratch;
   NoiseEstimator noise_estimator;
   HoleFilling holes;
+  DepthSmoothing smoothing;
   DistanceBuffer buffer;
   SeedSelector selector;
   SeedSelector fine_selector;  // the second pass's smaller seed cube
@@ -89,8 +92,18 @@ struct Segmenter::Workspace {
     frame.pitch = frame.full_pitch * static_cast<float>(s);
     noise = noiseModel(full, params);
     const DepthNoise depth_noise = DepthNoise::of(noise);
-    frame.grid = sample(holes.fill(full, Tolerances(params, depth_noise, frame.full_pitch, full.size())), s);
-    frame.tolerances = Tolerances(params, depth_noise, frame.pitch, full.size());
+    const PointGrid& filled = holes.fill(full, Tolerances(params, depth_noise, frame.full_pitch, full.size()));
+    // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
+    // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
+    // Kinect). A noise model the user gives describes the raw data: no smoothing then.
+    DepthNoise segment_noise = depth_noise;
+    frame.source = &filled;
+    if (params.estimatesNoise() && !depth_noise.negligible()) {
+      frame.source = &smoothing.smooth(filled, depth_noise);
+      segment_noise = DepthNoise::of(noise_estimator.estimate(*frame.source));
+    }
+    frame.grid = sample(*frame.source, s);
+    frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(params, frame.tolerances, 1.0 / kFineSeedDivisor, frame.pitch, frame.grid.width,
                             frame.grid.height);
@@ -114,8 +127,8 @@ struct Segmenter::Workspace {
     for (const SeedSelector* seeds : {&selector, &fine_selector}) {
       for (int y = offset; y < grid.height; y += stride) {
         for (int x = offset; x < grid.width; x += stride) {
-          const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) +
-                                    static_cast<std::size_t>(x);
+          const std::size_t pixel =
+              static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
           if (buffer.label(pixel) != 0) continue;
           ++result.stats.seed_candidates;
           if (seeds->test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
@@ -213,7 +226,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     merged.root = ws.merger.rootData();
     merged.sums = ws.cluster_sums.data();
     merged.segment_count = ws.segments.size();
-    ws.regions.build(full, frame.grid, ws.holes, params_.subsampling, merged, params_, frame.tolerances,
+    ws.regions.build(full, *frame.source, frame.grid, ws.holes, params_.subsampling, merged, params_, frame.tolerances,
                      frame.full_pitch, options.refine, result_);
   }
   return result_;
