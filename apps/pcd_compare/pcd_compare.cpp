@@ -68,9 +68,9 @@ std::vector<std::string> splitList(const std::string& list) {
   return items;
 }
 
-std::string joined(const std::vector<std::string>& items) {
+std::string joined(const std::vector<std::string>& items, const std::string& separator = ", ") {
   std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  for (const std::string& item : items) text += (text.empty() ? "" : separator) + item;
   return text;
 }
 
@@ -363,13 +363,14 @@ SceneResult compareScene(const Options& options, Methods& methods, const InputCl
 }
 
 constexpr const char* kDescription =
-    "Compares plane segmentations of organized PCD files: floodplane, PCL's sequential "
-    "RANSAC and PCL's OrganizedMultiPlaneSegmentation. Prints the configuration, then a "
-    "Markdown table of runtimes (median and min over --repeat runs after a warm-up) and, for "
-    "files with a ground-truth `label` field, accuracy: mean and weighted IoU, Hoover counts "
-    "and the false-plane fraction, per file, as means, and as means per sensor model for "
-    "files named <scene>.<sensor>.pcd. INPUT is a PCD file or a directory (its *.pcd files, "
-    "sorted).";
+    "Compares plane segmentations of organized PCD files: floodplane (at sub-sampling 1 and "
+    "2), PCL's sequential RANSAC, Open3D's sequential RANSAC and PCL's "
+    "OrganizedMultiPlaneSegmentation, the baselines also at tuned values (--tuned, from "
+    "--tune). Prints the configuration, then Markdown tables of runtimes (median and min over "
+    "--repeat runs after a warm-up) and, for files with a ground-truth `label` field, "
+    "accuracy: mean and weighted IoU, Hoover counts and the false-plane fraction, as means "
+    "(over all files, then per sensor model for files named <scene>.<sensor>.pcd), per file "
+    "and method. INPUT is a PCD file or a directory (its *.pcd files, sorted).";
 
 // The methods named in --methods, each once: a method named twice would be timed twice and
 // collide in the tables.
@@ -508,7 +509,7 @@ int tune(const Options& options) {
 
 int main(int argc, char** argv) {
   Options options;
-  std::string method_list = "floodplane,floodplane/2,ransac,open3d_ransac,omps";
+  std::string method_list = joined(kMethodNames, ",");
   CLI::App app{kDescription, "pcd_compare"};
   floodplane::apps::addVersionFlag(app);
   addInputAndMethodOptions(app, options, method_list);

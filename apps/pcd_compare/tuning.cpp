@@ -231,11 +231,11 @@ Grid defaultGrid() {
   const std::vector<double> ransac_distance = {0.005, 0.01, 0.02, 0.04};
   const std::vector<double> ransac_min_inliers = {100, 300, 1000, 3000};
   return {{"omps",
-           {{"angular_threshold", {0.02, 0.04, 0.09, 0.15, 0.25}},
-            {"distance_threshold", {0.002, 0.005, 0.01, 0.02, 0.04, 0.08}},
+           {{"angular_threshold", {0.01, 0.02, 0.04, 0.09, 0.15, 0.25}},
+            {"distance_threshold", {0.002, 0.005, 0.01, 0.02, 0.04, 0.08, 0.16}},
             {"normal_smoothing_size", {2, 4, 6, 10, 15, 20}},
-            {"max_depth_change_factor", {0.005, 0.01, 0.02, 0.05, 0.1}},
-            {"maximum_curvature", {0.001, 0.003, 0.01, 0.03, 0.1}},
+            {"max_depth_change_factor", {0.005, 0.01, 0.02, 0.05, 0.1, 0.2}},
+            {"maximum_curvature", {0.001, 0.003, 0.01, 0.03, 0.1, 0.3}},
             {"min_inliers", {20, 50, 200, 800}}}},
           {"ransac", {{"distance_threshold", ransac_distance}, {"min_inliers", ransac_min_inliers}}},
           {"open3d_ransac", {{"distance_threshold", ransac_distance}, {"min_inliers", ransac_min_inliers}}}};
