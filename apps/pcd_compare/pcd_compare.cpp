@@ -250,7 +250,7 @@ std::vector<std::pair<std::string, std::string>> configuration(const Options& op
   return config;
 }
 
-// Ground truth | ransac | omps | floodplane, whichever of them there are.
+// Ground truth and the methods of --methods in a fixed order, whichever of them ran.
 void writeComparisonImage(const Options& options, const InputCloud& input,
                           const std::vector<std::pair<std::string, const MethodRun*>>& runs, const SceneResult& scene) {
   static const std::vector<std::string> kOrder = {"ransac", "open3d_ransac", "omps", "floodplane/2", "floodplane"};
@@ -426,8 +426,9 @@ void addOutputOptions(CLI::App& app, Options& options) {
   app.add_option("--csv", options.csv_file, "Also write the rows as CSV to this file");
   app.add_option("--json", options.json_file, "Also write everything as JSON to this file");
   app.add_option("--png", options.png_dir,
-                 "Write <scene>.png per file into this directory: ground truth | ransac | omps "
-                 "| floodplane, segments coloured by the ground-truth plane they overlap most");
+                 "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | "
+                 "omps | floodplane/2 | floodplane (those run), segments coloured by the ground-truth plane "
+                 "they overlap most");
   app.add_flag("--resolutions", options.resolutions, "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
   app.add_flag("--phases", options.phases, "Also report floodplane's time per phase (Fig. 5), from separate runs");
   app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the tables and errors");
