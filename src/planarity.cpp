@@ -1,13 +1,12 @@
 #include "planarity.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace floodplane {
 
@@ -18,10 +17,11 @@ constexpr double kSmallestSample = 24.0;
 // The quadratic's three extra terms explain chi^2_3 noise variances on a true plane (mean 3);
 // a bend must explain this many.
 constexpr double kSignificance = 30.0;
-// ... and bend the surface with a radius below 1 m: a depth camera's calibration bends real
-// walls and tables too (by half a millimetre over a metre at 1 m: a radius of 100 m and more),
-// and at close range that bend is significant.
-constexpr double kSmallestCurvature = 1.0;  // 1/m
+// ... and bend the surface with a radius below half a metre (the curved things in rooms:
+// people, balls, bins, pipes, columns). A depth camera's calibration bends real walls and
+// tables too, by half a millimetre over a metre at 1 m (a radius of 100 m and more), and at
+// close range that bend is significant; a small plane's noise fakes radii of a metre.
+constexpr double kSmallestCurvature = 2.0;  // 1/m
 // Noise across a surface never below this share of a pixel footprint (exact data: float
 // round-off).
 constexpr double kFootprintFloor = 0.02;
@@ -61,7 +61,7 @@ void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
   s.count += 1.0;
 }
 
-void PlanarityTest::split(std::uint32_t k, double& explained, double& residual, double& curvature) const {
+PlanarityTest::Quadric PlanarityTest::fitQuadric(std::uint32_t k) const {
   const Sums& s = sums_[k - 1];
   Eigen::Matrix<double, 6, 6> a;
   Eigen::Matrix<double, 6, 1> b;
@@ -69,46 +69,42 @@ void PlanarityTest::split(std::uint32_t k, double& explained, double& residual, 
     for (int j = i; j < 6; ++j) a(i, j) = a(j, i) = s.normal[upper(i, j)];
     b(i) = s.rhs[i];
   }
+  Quadric q;
   // Fitted by the plane's own terms (1, u, v) and by all six; the difference is the bend.
   const Eigen::Vector3d linear = a.topLeftCorner<3, 3>().ldlt().solve(b.head<3>());
   const Eigen::Matrix<double, 6, 1> full = a.ldlt().solve(b);
   const double by_plane = linear.dot(b.head<3>());
   const double by_quadratic = full.dot(b);
-  explained = std::isfinite(by_quadratic) && std::isfinite(by_plane) ? std::max(0.0, by_quadratic - by_plane) : 0.0;
-  residual = std::max(0.0, s.ww - (std::isfinite(by_quadratic) ? by_quadratic : 0.0));
-  // The larger principal curvature: the larger |eigenvalue| of the Hessian [2a b; b 2c].
-  const double a2 = full(3), b2 = full(4), c2 = full(5);
-  curvature = std::abs(a2 + c2) + std::sqrt((a2 - c2) * (a2 - c2) + b2 * b2);
-  if (!std::isfinite(curvature)) curvature = 0.0;
+  if (!std::isfinite(by_quadratic) || !std::isfinite(by_plane) || !full.allFinite()) return q;
+  q.explained = std::max(0.0, by_quadratic - by_plane);
+  // The principal curvatures: the eigenvalues of the Hessian [2a b; b 2c].
+  Eigen::Matrix2d hessian;
+  hessian << 2.0 * full(3), full(4), full(4), 2.0 * full(5);
+  const Eigen::Vector2d principal =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian, Eigen::EigenvaluesOnly).eigenvalues();
+  q.curvature = std::max(std::abs(principal(0)), std::abs(principal(1)));
+  return q;
 }
 
 double PlanarityTest::bend(std::uint32_t k) const {
   const Sums& s = sums_[k - 1];
   if (s.count <= 0.0) return 0.0;
-  double explained = 0.0, residual = 0.0, curvature = 0.0;
-  split(k, explained, residual, curvature);
-  return std::sqrt(explained / s.count);
+  return std::sqrt(fitQuadric(k).explained / s.count);
 }
+
+double PlanarityTest::curvature(std::uint32_t k) const { return fitQuadric(k).curvature; }
 
 bool PlanarityTest::curved(std::uint32_t k, const Tolerances& tolerances) const {
   const Sums& s = sums_[k - 1];
   if (s.count < kSmallestSample) return false;
-  double explained = 0.0, residual = 0.0, curvature = 0.0;
-  split(k, explained, residual, curvature);
+  const Quadric q = fitQuadric(k);
   // The noise across the surface: along the rays, projected on the normal.
   const PlaneFit& fit = fits_[k - 1];
   const double range = fit.centroid.norm();
   const double incidence = range > 0.0 ? std::abs(fit.normal.dot(fit.centroid)) / range : 1.0;
   const double across =
       std::max(tolerances.noise().sigma(range * range) * incidence, kFootprintFloor * tolerances.footprint(range));
-  const double variance = across * across;
-  if (std::getenv("PNOTEST")) return false;
-  if (std::getenv("PDEBUG"))
-    std::fprintf(stderr, "plane %u n %.0f range %.2f across %.6f chi %.1f resid %.6f curvature %.3f\n", k, s.count,
-                 range, across, explained / variance, std::sqrt(residual / s.count), curvature);
-  static const double sig = std::getenv("PSIG") ? std::atof(std::getenv("PSIG")) : kSignificance;
-  static const double kmin = std::getenv("PKMIN") ? std::atof(std::getenv("PKMIN")) : kSmallestCurvature;
-  return explained > sig * variance && curvature > kmin;
+  return q.explained > kSignificance * across * across && q.curvature > kSmallestCurvature;
 }
 
 }  // namespace floodplane

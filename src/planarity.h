@@ -13,11 +13,11 @@ namespace floodplane {
 /// three noise deviations of its own plane, so it passes every test of the flood and the
 /// merge. Here each plane's inliers are fitted with a quadratic surface
 ///   w = a u^2 + b u v + c v^2 + d u + e v + f
-/// in the plane's own frame (u, v along it, w across it). What the quadratic explains that the
-/// plane does not, as an RMS distance across the plane, is the surface's bend; a plane is
-/// curved when the bend is both beyond what noise could fake (a chi-square test against the
-/// noise model across the surface) and a sizeable share of that noise (a real wall bent by a
-/// few millimetres over metres, or by a depth camera's calibration, stays a plane).
+/// in the plane's own frame (u, v along it, w across it), from running moment sums. A plane is
+/// curved when what the quadratic explains beyond the plane is beyond what the noise could fake
+/// (a chi-square test against the noise model across the surface) and its larger principal
+/// curvature is that of the curved things in rooms (radii below half a metre): a real wall
+/// bent by a few millimetres over metres, or by a depth camera's calibration, stays a plane.
 class PlanarityTest {
  public:
   /// Starts the sums for planes 1..fits.size() (fits[k - 1] is plane k).
@@ -26,8 +26,10 @@ class PlanarityTest {
   void add(std::uint32_t k, const Vec3& point);
   /// Whether plane k bends more than its noise explains.
   bool curved(std::uint32_t k, const Tolerances& tolerances) const;
-  /// The RMS bend of plane k [m] (what the quadratic explains beyond the plane), for tests.
+  /// The RMS bend of plane k [m] (what the quadratic explains beyond the plane).
   double bend(std::uint32_t k) const;
+  /// The larger principal curvature of plane k's quadratic [1/m].
+  double curvature(std::uint32_t k) const;
 
  private:
   struct Frame {
@@ -39,9 +41,12 @@ class PlanarityTest {
     double ww = 0.0;         // sum w^2
     double count = 0.0;
   };
-  // The explained and residual sums of squares of plane k's quadratic fit.
-  // and its larger principal curvature [1/m].
-  void split(std::uint32_t k, double& explained, double& residual, double& curvature) const;
+  // Plane k's quadratic fit: the sum of squares it explains beyond the plane, and its larger
+  // principal curvature [1/m].
+  struct Quadric {
+    double explained = 0.0, curvature = 0.0;
+  };
+  Quadric fitQuadric(std::uint32_t k) const;
 
   std::vector<Frame> frames_;
   std::vector<Sums> sums_;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numeric>
 
@@ -11,7 +10,6 @@
 #include "simd.h"
 
 namespace floodplane {
-static const std::size_t kPlanarityStep = std::getenv("PSTEP") ? std::atoi(std::getenv("PSTEP")) : 2;
 
 // ---- RegionBuilder ---------------------------------------------------------------------
 
@@ -239,6 +237,27 @@ void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const std::vect
   }
 }
 
+void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels,
+                                    PlanarityTest& test) const {
+  // Interior pixels only (no neighbour in another plane or none): the pixels along a plane's
+  // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
+  // A neighbour without a return does not make a border: on a speckled surface there would be
+  // no inside.
+  const std::size_t width = static_cast<std::size_t>(full.width);
+  const auto inside = [&](std::size_t j, std::uint32_t k) {
+    return labels[j] == k || !full.isFinite(j) || holes_->isFilled(j);
+  };
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(full.height); ++y) {
+    const std::size_t row = y * width;
+    for (std::size_t x = 1; x + 1 < width; ++x) {
+      const std::size_t i = row + x;
+      const std::uint32_t k = labels[i];
+      if (k != 0 && inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+        test.add(k, Vec3::load(full.point(i)));
+    }
+  }
+}
+
 bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels,
                                      const Tolerances& tolerances) {
   const std::vector<PlaneCandidate>& list = candidates_.list();
@@ -246,23 +265,7 @@ bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<st
   fits_.clear();
   for (const PlaneCandidate& candidate : list) fits_.push_back(candidate.sums.fit());
   planarity_.reset(fits_);
-  // Every other interior pixel (no neighbour in another plane or none) of every other row: a
-  // quarter of the inliers tell a bend as well, and the pixels along a plane's border, which
-  // may be a neighbouring surface's within the tolerance band, would fake one. A neighbour
-  // without a return does not make a border: on a speckled surface there would be no inside.
-  const std::size_t width = static_cast<std::size_t>(full.width);
-  const auto inside = [&](std::size_t j, std::uint32_t k) {
-    return labels[j] == k || !full.isFinite(j) || holes_->isFilled(j);
-  };
-  for (std::size_t y = 2; y + 2 < static_cast<std::size_t>(full.height); y += kPlanarityStep) {
-    const std::size_t row = y * width;
-    for (std::size_t x = 2; x + 1 < width; x += kPlanarityStep) {
-      const std::size_t i = row + x;
-      const std::uint32_t k = labels[i];
-      if (k != 0 && inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-        planarity_.add(k, Vec3::load(full.point(i)));
-    }
-  }
+  samplePlanarity(full, labels, planarity_);
   curved_.assign(list.size() + 1, false);
   for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
   return candidates_.drop(curved_);

@@ -64,9 +64,12 @@ class RegionBuilder {
   // best-fitting one within the tolerance, else 0.
   void labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::size_t gx,
                       std::uint32_t* out_row) const;
-  // The planarity test (planarity.h) on the final planes; drops the curved ones. Returns
-  // whether any was dropped (the labels then need renumbering).
+  // Beyond the paper: the planarity test (planarity.h) on the final planes; drops the curved
+  // ones (a cylinder's, a ball's or a person's facets). Returns whether any was dropped (the
+  // labels then need renumbering by remap()).
   bool dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels, const Tolerances& tolerances);
+  // Adds the interior pixels of the planes to `test`.
+  void samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlanarityTest& test) const;
   // The planes' sums anew from the measured points of their pixels.
   void sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels);
   // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
@@ -88,9 +91,9 @@ class RegionBuilder {
   std::vector<std::size_t> queue_;                   // the refinement's
   const HoleFilling* holes_ = nullptr;
   PlanarityTest planarity_;
-  OcclusionMerging occlusion_merging_;
   std::vector<PlaneFit> fits_;
   std::vector<bool> curved_;
+  OcclusionMerging occlusion_merging_;
 };
 
 }  // namespace floodplane

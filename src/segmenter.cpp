@@ -60,7 +60,7 @@ struct Frame {
   PointGrid grid;                     // the grid that is segmented (sub-sampled when s > 1)
   float pitch = 0.f;                  // its angular pixel pitch [rad]
   float full_pitch = 0.f;             // that of the full-resolution grid
-  Tolerances tolerances;              // the sensor's depth noise and every length derived from it
+  Tolerances tolerances;              // the segmented grid's depth noise and every length derived from it
   const PointGrid* source = nullptr;  // the full-resolution grid segmented: filled and smoothed
 };
 
