@@ -1,0 +1,260 @@
+// pcd_segment's 3-D outputs. The snapshots are rendered for real, under xvfb-run (Debian's
+// xvfb: Debian's VTK draws through X11 only, off screen too), from a bundled scene, and the
+// images are checked against what the segmentation says: every plane in its palette colour,
+// in the share of the picture it has in the label image, a white arrow along each plane's
+// normal where the camera sees its centroid, and white nowhere else but the arrows' text.
+// A machine that cannot render fails these tests, saying why; it does not skip them.
+// The options' errors, and the one-line error without a display, need no rendering.
+
+#include <gtest/gtest.h>
+#include <pcl/console/print.h>
+#include <pcl/io/pcd_io.h>
+#include <png.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/plane_scene.h"
+#include "io/rgb_image.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using floodplane::view::CameraView;
+
+const std::string kScene = std::string(FLOODPLANE_RENDERED_DIR) + "/boxes_on_floor.none.pcd";
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string quote(const std::string& word) {
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::size_t lineCount(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+floodplane::io::RgbImage readPng(const fs::path& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (png_image_begin_read_from_file(&png, path.c_str()) == 0) throw std::runtime_error(png.message);
+  png.format = PNG_FORMAT_RGB;
+  floodplane::io::RgbImage image;
+  image.width = png.width;
+  image.height = png.height;
+  image.pixels.resize(PNG_IMAGE_SIZE(png));
+  if (png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr) == 0) {
+    throw std::runtime_error(png.message);
+  }
+  return image;
+}
+
+using Rgb = std::array<std::uint8_t, 3>;
+
+Rgb pixelAt(const floodplane::io::RgbImage& image, std::size_t column, std::size_t row) {
+  const std::size_t i = (row * image.width + column) * 3;
+  return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
+}
+
+// The lit white of the arrows (kArrowColour at 60-100 %): grey enough and bright. No plane's
+// colour is (the palette's saturation is 0.6 or more), nor the unlabelled points' grey.
+bool isArrowColour(const Rgb& c) {
+  const auto [low, high] = std::minmax({c[0], c[1], c[2]});
+  return low >= 140 && high - low <= 8;
+}
+
+// What the segmentation says about a plane, and its arrow's ends.
+struct Plane {
+  std::uint32_t id = 0;
+  std::size_t inliers = 0;
+  Eigen::Vector3d centroid;
+  Eigen::Vector3d tip;  // centroid + size * normal, size the RMS distance from the centroid
+};
+
+std::vector<Plane> planesOf(const nlohmann::json& report, const pcl::PointCloud<pcl::PointXYZL>& labelled) {
+  std::vector<Plane> planes;
+  for (const auto& record : report["planes"]) {
+    Plane plane;
+    plane.id = record["id"];
+    plane.inliers = record["inliers"];
+    plane.centroid = Eigen::Vector3d(record["centroid"][0], record["centroid"][1], record["centroid"][2]);
+    double squares = 0.0;
+    for (const auto& p : labelled) {
+      if (p.label == plane.id) squares += (p.getVector3fMap().cast<double>() - plane.centroid).squaredNorm();
+    }
+    const double size = std::sqrt(squares / static_cast<double>(plane.inliers));
+    const Eigen::Vector3d normal(record["normal"][0], record["normal"][1], record["normal"][2]);
+    plane.tip = plane.centroid + size * normal;
+    planes.push_back(plane);
+  }
+  return planes;
+}
+
+// The pixels the arrow of `plane` covers on screen: its projected axis, thickened by `margin`.
+std::vector<std::pair<int, int>> arrowPixels(const Plane& plane, const floodplane::view::Camera& camera,
+                                             const floodplane::io::RgbImage& image, int margin) {
+  std::vector<std::pair<int, int>> pixels;
+  const int width = static_cast<int>(image.width), height = static_cast<int>(image.height);
+  for (int step = 0; step <= 20; ++step) {
+    const Eigen::Vector3d point = plane.centroid + (plane.tip - plane.centroid) * (step / 20.0);
+    const auto pixel = floodplane::view::projectToPixel(camera, point, width, height);
+    if (!pixel) continue;
+    const int u = static_cast<int>(std::lround(pixel->x())), v = static_cast<int>(std::lround(pixel->y()));
+    for (int dv = -margin; dv <= margin; ++dv)
+      for (int du = -margin; du <= margin; ++du)
+        if (u + du >= 0 && u + du < width && v + dv >= 0 && v + dv < height) pixels.emplace_back(u + du, v + dv);
+  }
+  std::sort(pixels.begin(), pixels.end());
+  pixels.erase(std::unique(pixels.begin(), pixels.end()), pixels.end());
+  return pixels;
+}
+
+std::size_t arrowColouredAmong(const floodplane::io::RgbImage& image, const std::vector<std::pair<int, int>>& pixels) {
+  std::size_t count = 0;
+  for (const auto& [u, v] : pixels) count += isArrowColour(pixelAt(image, u, v)) ? 1 : 0;
+  return count;
+}
+
+// Arrow-coloured pixels neither on an arrow (within `margin`) nor in the text box beside a
+// tip (to the right of it, one line high): they would be white drawn where nothing white is.
+std::size_t strayArrowColoured(const floodplane::io::RgbImage& image, const std::vector<Plane>& planes,
+                               const floodplane::view::Camera& camera, int margin) {
+  std::vector<std::uint8_t> allowed(image.width * image.height, 0);
+  const int width = static_cast<int>(image.width), height = static_cast<int>(image.height);
+  for (const Plane& plane : planes) {
+    for (const auto& [u, v] : arrowPixels(plane, camera, image, margin)) allowed[v * image.width + u] = 1;
+    const auto tip = floodplane::view::projectToPixel(camera, plane.tip, width, height);
+    if (!tip) continue;
+    for (int v = static_cast<int>(tip->y()) - 20; v <= static_cast<int>(tip->y()) + 20; ++v)
+      for (int u = static_cast<int>(tip->x()) - margin; u <= static_cast<int>(tip->x()) + 160; ++u)
+        if (u >= 0 && u < width && v >= 0 && v < height) allowed[v * image.width + u] = 1;
+  }
+  std::size_t stray = 0;
+  for (std::size_t v = 0; v < image.height; ++v)
+    for (std::size_t u = 0; u < image.width; ++u)
+      if (!allowed[v * image.width + u] && isArrowColour(pixelAt(image, u, v))) ++stray;
+  return stray;
+}
+
+std::map<Rgb, std::size_t> colourCounts(const floodplane::io::RgbImage& image) {
+  std::map<Rgb, std::size_t> counts;
+  for (std::size_t i = 0; i < image.pixels.size(); i += 3) {
+    ++counts[{image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]}];
+  }
+  return counts;
+}
+
+class PcdSegmentView : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    std::string pattern = (fs::temp_directory_path() / "pcd_segment_view_test.XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  // Runs pcd_segment with `arguments`, after the shell text `prefix` (env, xvfb-run).
+  Result run(const std::vector<std::string>& arguments, const std::string& prefix = "") const {
+    std::string command = quote(PCD_SEGMENT_BINARY);
+    for (const std::string& argument : arguments) command += " " + quote(argument);
+    const fs::path out = dir_ / ".stdout";
+    const fs::path err = dir_ / ".stderr";
+    command = prefix + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    const int status = std::system(("sh -c " + quote(command)).c_str());
+    Result result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = readFile(out);
+    result.err = readFile(err);
+    fs::remove(out);
+    fs::remove(err);
+    return result;
+  }
+
+  // Runs pcd_segment on a virtual X display of its own. Fails the test (does not skip it)
+  // where xvfb-run is missing: rendering is what these tests are for.
+  Result runWithDisplay(const std::vector<std::string>& arguments) const {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
+      ADD_FAILURE() << "xvfb-run is not installed (Debian package xvfb; scripts/install_deps.sh installs it): "
+                       "the snapshots cannot be rendered on this machine";
+      return {};
+    }
+    return run(arguments, "xvfb-run -a ");
+  }
+
+  fs::path dir_;
+};
+
+// The snapshot from the sensor's own viewpoint, as large as the grid, is the label image in
+// 3-D: each plane's colour covers about the share of the image its label has there.
+TEST_F(PcdSegmentView, SensorSnapshotShowsEachPlaneInItsColourAndShareWithItsArrow) {
+  const fs::path snapshot = path("sensor.png");
+  const Result result = runWithDisplay({kScene, "-o", path("out").string(), "--json", "--snapshot", snapshot.string(),
+                                        "--snapshot-size", "640x480", "--snapshot-camera", "sensor"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const floodplane::io::RgbImage image = readPng(snapshot);
+  ASSERT_EQ(image.width, 640u);
+  ASSERT_EQ(image.height, 480u);
+
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/boxes_on_floor.none.labels.pcd").string(), labelled), 0);
+  ASSERT_EQ(labelled.width * labelled.height, image.width * image.height);
+  std::map<std::uint32_t, std::size_t> label_counts;
+  for (const auto& p : labelled) {
+    if (std::isfinite(p.z)) ++label_counts[p.label];
+  }
+  const std::map<Rgb, std::size_t> colours = colourCounts(image);
+  const double pixels = static_cast<double>(image.width * image.height);
+  std::size_t planes_checked = 0;
+  for (const auto& [label, count] : label_counts) {
+    const double share = static_cast<double>(count) / pixels;
+    if (share < 0.005) continue;  // small planes are mostly hidden under their arrows and text
+    const auto found = colours.find(floodplane::view::pointColour(label));
+    const double shown = found == colours.end() ? 0.0 : static_cast<double>(found->second) / pixels;
+    EXPECT_NEAR(shown, share, 0.15 * share + 0.003) << "label " << label;
+    planes_checked += label != 0 ? 1 : 0;
+  }
+  EXPECT_GE(planes_checked, 5u);
+
+  const nlohmann::json report = nlohmann::json::parse(readFile(path("out/boxes_on_floor.none.planes.json")));
+  const std::vector<Plane> planes = planesOf(report, labelled);
+  auto points = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud(labelled, *points);
+  floodplane::view::PlaneScene scene;
+  scene.cloud = points;
+  const floodplane::view::Camera camera = floodplane::view::sceneCamera(scene, CameraView::sensor);
+  for (const Plane& plane : planes) {
+    if (plane.inliers < labelled.size() / 200) continue;
+    EXPECT_GE(arrowColouredAmong(image, arrowPixels(plane, camera, image, 2)), 4u) << "plane " << plane.id;
+  }
+  EXPECT_LT(strayArrowColoured(image, planes, camera, 6), image.width * image.height / 1000);
+}
+
+}  // namespace
