@@ -59,6 +59,15 @@ std::size_t lineCount(const std::string& text) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+std::vector<fs::path> filesIn(const fs::path& directory) {
+  std::vector<fs::path> files;
+  if (!fs::exists(directory)) return files;
+  for (const auto& entry : fs::recursive_directory_iterator(directory)) {
+    if (entry.is_regular_file() && entry.path().filename().string()[0] != '.') files.push_back(entry.path());
+  }
+  return files;
+}
+
 floodplane::io::RgbImage readPng(const fs::path& path) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
@@ -88,31 +97,47 @@ bool isArrowColour(const Rgb& c) {
   return low >= 140 && high - low <= 8;
 }
 
-// What the segmentation says about a plane, and its arrow's ends.
+// What the segmentation says about a plane, and where its arrow ends.
 struct Plane {
   std::uint32_t id = 0;
   std::size_t inliers = 0;
   Eigen::Vector3d centroid;
-  Eigen::Vector3d tip;  // centroid + size * normal, size the RMS distance from the centroid
+  Eigen::Vector3d tip;
 };
 
-std::vector<Plane> planesOf(const nlohmann::json& report, const pcl::PointCloud<pcl::PointXYZL>& labelled) {
+// The segmentation pcd_segment wrote into `out` for the input `name`: its labels, its planes
+// (from the JSON report, sizes from the labelled points) and the cloud, for the cameras.
+struct Written {
+  pcl::PointCloud<pcl::PointXYZL> labelled;
   std::vector<Plane> planes;
-  for (const auto& record : report["planes"]) {
-    Plane plane;
-    plane.id = record["id"];
-    plane.inliers = record["inliers"];
-    plane.centroid = Eigen::Vector3d(record["centroid"][0], record["centroid"][1], record["centroid"][2]);
-    double squares = 0.0;
-    for (const auto& p : labelled) {
-      if (p.label == plane.id) squares += (p.getVector3fMap().cast<double>() - plane.centroid).squaredNorm();
-    }
-    const double size = std::sqrt(squares / static_cast<double>(plane.inliers));
-    const Eigen::Vector3d normal(record["normal"][0], record["normal"][1], record["normal"][2]);
-    plane.tip = plane.centroid + size * normal;
-    planes.push_back(plane);
+  floodplane::view::PlaneScene scene;
+};
+
+Written readWritten(const fs::path& out, const std::string& name) {
+  Written written;
+  if (pcl::io::loadPCDFile((out / (name + ".labels.pcd")).string(), written.labelled) != 0) {
+    throw std::runtime_error("no label cloud for " + name);
   }
-  return planes;
+  auto points = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  pcl::copyPointCloud(written.labelled, *points);
+  written.scene.cloud = points;
+  const float longest_arrow = floodplane::view::longestArrow(*points);
+  const nlohmann::json report = nlohmann::json::parse(readFile(out / (name + ".planes.json")));
+  for (const auto& record : report["planes"]) {
+    floodplane::view::PlaneMarker marker;
+    marker.id = record["id"];
+    marker.inliers = record["inliers"];
+    marker.centroid = Eigen::Vector3f(record["centroid"][0], record["centroid"][1], record["centroid"][2]);
+    marker.normal = Eigen::Vector3f(record["normal"][0], record["normal"][1], record["normal"][2]);
+    double squares = 0.0;
+    for (const auto& p : written.labelled) {
+      if (p.label == marker.id) squares += (p.getVector3fMap() - marker.centroid).cast<double>().squaredNorm();
+    }
+    marker.size = static_cast<float>(std::sqrt(squares / static_cast<double>(marker.inliers)));
+    written.planes.push_back({marker.id, marker.inliers, marker.centroid.cast<double>(),
+                              floodplane::view::arrowTip(marker, longest_arrow).cast<double>()});
+  }
+  return written;
 }
 
 // The pixels the arrow of `plane` covers on screen: its projected axis, thickened by `margin`.
@@ -140,8 +165,9 @@ std::size_t arrowColouredAmong(const floodplane::io::RgbImage& image, const std:
   return count;
 }
 
-// Arrow-coloured pixels neither on an arrow (within `margin`) nor in the text box beside a
-// tip (to the right of it, one line high): they would be white drawn where nothing white is.
+// Arrow-coloured pixels neither on an arrow (within `margin`) nor where its text may be (the
+// text goes beyond the tip, to any side: a box 130 pixels either side of the tip and 30 above
+// and below holds it): they would be white drawn where nothing white is.
 std::size_t strayArrowColoured(const floodplane::io::RgbImage& image, const std::vector<Plane>& planes,
                                const floodplane::view::Camera& camera, int margin) {
   std::vector<std::uint8_t> allowed(image.width * image.height, 0);
@@ -150,8 +176,8 @@ std::size_t strayArrowColoured(const floodplane::io::RgbImage& image, const std:
     for (const auto& [u, v] : arrowPixels(plane, camera, image, margin)) allowed[v * image.width + u] = 1;
     const auto tip = floodplane::view::projectToPixel(camera, plane.tip, width, height);
     if (!tip) continue;
-    for (int v = static_cast<int>(tip->y()) - 20; v <= static_cast<int>(tip->y()) + 20; ++v)
-      for (int u = static_cast<int>(tip->x()) - margin; u <= static_cast<int>(tip->x()) + 160; ++u)
+    for (int v = static_cast<int>(tip->y()) - 30; v <= static_cast<int>(tip->y()) + 30; ++v)
+      for (int u = static_cast<int>(tip->x()) - 130; u <= static_cast<int>(tip->x()) + 130; ++u)
         if (u >= 0 && u < width && v >= 0 && v < height) allowed[v * image.width + u] = 1;
   }
   std::size_t stray = 0;
@@ -165,6 +191,15 @@ std::map<Rgb, std::size_t> colourCounts(const floodplane::io::RgbImage& image) {
   std::map<Rgb, std::size_t> counts;
   for (std::size_t i = 0; i < image.pixels.size(); i += 3) {
     ++counts[{image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]}];
+  }
+  return counts;
+}
+
+// Finite points per label.
+std::map<std::uint32_t, std::size_t> labelCounts(const pcl::PointCloud<pcl::PointXYZL>& labelled) {
+  std::map<std::uint32_t, std::size_t> counts;
+  for (const auto& p : labelled) {
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) ++counts[p.label];
   }
   return counts;
 }
@@ -212,9 +247,10 @@ class PcdSegmentView : public ::testing::Test {
   fs::path dir_;
 };
 
-// The snapshot from the sensor's own viewpoint, as large as the grid, is the label image in
-// 3-D: each plane's colour covers about the share of the image its label has there.
-TEST_F(PcdSegmentView, SensorSnapshotShowsEachPlaneInItsColourAndShareWithItsArrow) {
+// From the sensor's own viewpoint, as large as the grid, the snapshot is the label image in
+// 3-D: each plane's colour covers the share of the picture its label has there (less what
+// arrows and text cover), and each arrow is drawn where the plane's centroid is.
+TEST_F(PcdSegmentView, SensorSnapshotShowsEachPlaneInItsColourShareAndItsArrow) {
   const fs::path snapshot = path("sensor.png");
   const Result result = runWithDisplay({kScene, "-o", path("out").string(), "--json", "--snapshot", snapshot.string(),
                                         "--snapshot-size", "640x480", "--snapshot-camera", "sensor"});
@@ -222,39 +258,129 @@ TEST_F(PcdSegmentView, SensorSnapshotShowsEachPlaneInItsColourAndShareWithItsArr
   const floodplane::io::RgbImage image = readPng(snapshot);
   ASSERT_EQ(image.width, 640u);
   ASSERT_EQ(image.height, 480u);
+  const Written written = readWritten(path("out"), "boxes_on_floor.none");
+  ASSERT_EQ(written.labelled.size(), image.width * image.height);
 
-  pcl::PointCloud<pcl::PointXYZL> labelled;
-  ASSERT_EQ(pcl::io::loadPCDFile(path("out/boxes_on_floor.none.labels.pcd").string(), labelled), 0);
-  ASSERT_EQ(labelled.width * labelled.height, image.width * image.height);
-  std::map<std::uint32_t, std::size_t> label_counts;
-  for (const auto& p : labelled) {
-    if (std::isfinite(p.z)) ++label_counts[p.label];
-  }
   const std::map<Rgb, std::size_t> colours = colourCounts(image);
   const double pixels = static_cast<double>(image.width * image.height);
   std::size_t planes_checked = 0;
-  for (const auto& [label, count] : label_counts) {
+  for (const auto& [label, count] : labelCounts(written.labelled)) {
     const double share = static_cast<double>(count) / pixels;
-    if (share < 0.005) continue;  // small planes are mostly hidden under their arrows and text
+    if (share < 0.005) continue;  // small planes are mostly hidden by their arrows and text
     const auto found = colours.find(floodplane::view::pointColour(label));
     const double shown = found == colours.end() ? 0.0 : static_cast<double>(found->second) / pixels;
     EXPECT_NEAR(shown, share, 0.15 * share + 0.003) << "label " << label;
     planes_checked += label != 0 ? 1 : 0;
   }
-  EXPECT_GE(planes_checked, 5u);
+  EXPECT_GE(planes_checked, 8u);
 
-  const nlohmann::json report = nlohmann::json::parse(readFile(path("out/boxes_on_floor.none.planes.json")));
-  const std::vector<Plane> planes = planesOf(report, labelled);
-  auto points = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  pcl::copyPointCloud(labelled, *points);
-  floodplane::view::PlaneScene scene;
-  scene.cloud = points;
-  const floodplane::view::Camera camera = floodplane::view::sceneCamera(scene, CameraView::sensor);
-  for (const Plane& plane : planes) {
-    if (plane.inliers < labelled.size() / 200) continue;
+  const floodplane::view::Camera camera = floodplane::view::sceneCamera(written.scene, CameraView::sensor, 4.0 / 3.0);
+  for (const Plane& plane : written.planes) {
     EXPECT_GE(arrowColouredAmong(image, arrowPixels(plane, camera, image, 2)), 4u) << "plane " << plane.id;
   }
-  EXPECT_LT(strayArrowColoured(image, planes, camera, 6), image.width * image.height / 1000);
+  EXPECT_LT(strayArrowColoured(image, written.planes, camera, 6), image.width * image.height / 1000);
+}
+
+// The default snapshot, from above and to the right: every large plane shows in its colour
+// and with its arrow where the camera projects it, and the same input gives the same bytes.
+TEST_F(PcdSegmentView, ObliqueSnapshotShowsThePlanesWithTheirArrowsTheSameEveryTime) {
+  const Result result =
+      runWithDisplay({kScene, "-o", path("out").string(), "--json", "--snapshot", path("first.png").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const floodplane::io::RgbImage image = readPng(path("first.png"));
+  ASSERT_EQ(image.width, 800u);  // the default size
+  ASSERT_EQ(image.height, 600u);
+  const Written written = readWritten(path("out"), "boxes_on_floor.none");
+
+  const std::map<Rgb, std::size_t> colours = colourCounts(image);
+  const double pixels = static_cast<double>(image.width * image.height);
+  const double grid = static_cast<double>(written.labelled.size());
+  for (const auto& [label, count] : labelCounts(written.labelled)) {
+    if (static_cast<double>(count) < 0.01 * grid) continue;
+    const auto found = colours.find(floodplane::view::pointColour(label));
+    ASSERT_NE(found, colours.end()) << "label " << label;
+    EXPECT_GT(static_cast<double>(found->second) / pixels, 0.2 * static_cast<double>(count) / grid)
+        << "label " << label;
+  }
+  const floodplane::view::Camera camera = floodplane::view::sceneCamera(
+      written.scene, CameraView::oblique, static_cast<double>(image.width) / static_cast<double>(image.height));
+  for (const Plane& plane : written.planes) {
+    EXPECT_GE(arrowColouredAmong(image, arrowPixels(plane, camera, image, 2)), 4u) << "plane " << plane.id;
+  }
+  EXPECT_LT(strayArrowColoured(image, written.planes, camera, 6), image.width * image.height / 1000);
+
+  ASSERT_EQ(runWithDisplay({kScene, "-o", path("out").string(), "--snapshot", path("second.png").string()}).exit_code,
+            0);
+  EXPECT_TRUE(readFile(path("first.png")) == readFile(path("second.png")));
+}
+
+// A batch writes <name>.snapshot.png for each input beside its other outputs.
+TEST_F(PcdSegmentView, BatchWritesASnapshotPerInputInTheOutputDirectory) {
+  fs::create_directories(path("in"));
+  fs::copy_file(kScene, path("in/a.pcd"));
+  fs::copy_file(std::string(FLOODPLANE_RENDERED_DIR) + "/staircase.kinect.pcd", path("in/b.pcd"));
+  const Result result = runWithDisplay(
+      {path("in").string(), "-o", path("out").string(), "--quiet", "--snapshot", "--snapshot-size", "160x120"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const std::string name : {"a", "b"}) {
+    const floodplane::io::RgbImage image = readPng(path("out/" + name + ".snapshot.png"));
+    EXPECT_EQ(image.width, 160u);
+    EXPECT_EQ(image.height, 120u);
+    EXPECT_GT(colourCounts(image).size(), 3u) << name << ": not a blank image";
+  }
+  // A single output file: the snapshot takes its stem.
+  ASSERT_EQ(runWithDisplay({kScene, "-o", path("one/scene.pcd").string(), "--snapshot", "--snapshot-size", "64x48"})
+                .exit_code,
+            0);
+  EXPECT_TRUE(fs::exists(path("one/scene.snapshot.png")));
+}
+
+TEST_F(PcdSegmentView, SnapshotThatCannotBeWrittenIsAnErrorNamingTheFileAndLeavesNothing) {
+  const Result result =
+      runWithDisplay({kScene, "-o", path("out").string(), "--snapshot", path("missing/dir/s.png").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(contains(result.err, "missing/dir/s.png")) << result.err;
+  EXPECT_FALSE(fs::exists(path("missing")));
+}
+
+// Without a display nothing can be drawn: one line that says why and what to do, exit 1,
+// before any work (no outputs).
+TEST_F(PcdSegmentView, WithoutADisplaySaysSoOnOneLineAndWritesNothing) {
+  for (const std::string option : {"--snapshot", "--view"}) {
+    const Result result = run({kScene, "-o", path("out").string(), option}, "env -u DISPLAY ");
+    EXPECT_EQ(result.exit_code, 1) << option;
+    EXPECT_EQ(lineCount(result.err), 1u) << option << ": " << result.err;
+    EXPECT_TRUE(contains(result.err, "DISPLAY is not set")) << result.err;
+    EXPECT_TRUE(contains(result.err, "xvfb-run")) << result.err;
+    EXPECT_TRUE(filesIn(path("out")).empty()) << option;
+  }
+  const Result unreachable = run({kScene, "-o", path("out").string(), "--snapshot"}, "DISPLAY=:4321 ");
+  EXPECT_EQ(unreachable.exit_code, 1);
+  EXPECT_EQ(lineCount(unreachable.err), 1u) << unreachable.err;
+  EXPECT_TRUE(contains(unreachable.err, "cannot open the X display ':4321'")) << unreachable.err;
+  EXPECT_TRUE(filesIn(path("out")).empty());
+}
+
+// Options that contradict each other or carry bad values are usage errors (exit 2), found
+// before anything is read, drawn or written.
+TEST_F(PcdSegmentView, RefusesViewOptionsThatCannotWork) {
+  const std::vector<std::vector<std::string>> bad = {
+      {kScene, kScene, "-o", path("out").string(), "--view"},
+      {kScene, kScene, "-o", path("out").string(), "--snapshot", path("s.png").string()},
+      {kScene, "-o", path("out").string(), "--snapshot", path("s.jpg").string()},
+      {kScene, "-o", path("out").string(), "--snapshot", "--snapshot-size", "8x8"},
+      {kScene, "-o", path("out").string(), "--snapshot", "--snapshot-size", "640"},
+      {kScene, "-o", path("out").string(), "--snapshot", "--snapshot-camera", "top"},
+      {kScene, "-o", path("out").string(), "--snapshot-size", "640x480"},
+  };
+  for (const auto& arguments : bad) {
+    const Result result = run(arguments, "env -u DISPLAY ");
+    std::string shown;
+    for (const auto& argument : arguments) shown += " " + argument;
+    EXPECT_EQ(result.exit_code, 2) << shown << "\n" << result.err;
+    EXPECT_TRUE(contains(result.err, "pcd_segment: error:")) << shown << "\n" << result.err;
+    EXPECT_TRUE(filesIn(path("out")).empty()) << shown;
+  }
 }
 
 }  // namespace
