@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev # tests and benchmarks
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
+  xvfb xauth libgl1-mesa-dri                 # an X display with software OpenGL for 3-D snapshots
 )
 
 missing=()

@@ -104,7 +104,8 @@ void addOutputFlags(CLI::App& app, Options& options) {
 void addViewOptions(CLI::App& app, Options& options) {
   app.add_flag("--view", options.view,
                "Show the result in 3-D in a window (one input): points coloured as in the PNG, normals as "
-               "arrows, outlines; keys n, z, b toggle normals, unlabelled points, outlines; v the camera");
+               "arrows, outlines; keys n, z, b toggle normals, unlabelled points, outlines; v switches the camera "
+               "between the sensor's view and an oblique one");
   CLI::Option* snapshot =
       app.add_option_function<std::string>(
              "--snapshot", [&options](const std::string& path) { options.snapshot = path; },
@@ -296,14 +297,23 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
   return failed;
 }
 
-// --view and --snapshot FILE are about one input.
-std::optional<std::string> checkViewOptions(const Options& options, std::size_t inputs) {
+// --view and --snapshot FILE are about one input, and both need a display: checked before any
+// work, so that a batch does not segment everything and then fail on every image. Returns
+// the exit code when the program is done.
+std::optional<int> checkViewOptions(const CLI::App& app, const Options& options, std::size_t inputs) {
   if (options.view && inputs > 1) {
-    return "--view shows one input, but there are " + std::to_string(inputs);
+    return floodplane::apps::usageError(app, "--view shows one input, but there are " + std::to_string(inputs));
   }
   if (options.snapshot && !options.snapshot->empty() && inputs > 1) {
-    return "--snapshot " + *options.snapshot + " names one image, but there are " + std::to_string(inputs) +
-           " inputs; give --snapshot without a file name for <name>.snapshot.png in the output directory";
+    return floodplane::apps::usageError(
+        app, "--snapshot " + *options.snapshot + " names one image, but there are " + std::to_string(inputs) +
+                 " inputs; give --snapshot without a file name for <name>.snapshot.png in the output directory");
+  }
+  if (options.view || options.snapshot) {
+    if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {
+      std::cerr << "pcd_segment: error: cannot draw in 3-D: " << *reason << "\n";
+      return 1;
+    }
   }
   return std::nullopt;
 }
@@ -337,16 +347,7 @@ int main(int argc, char** argv) {
     return floodplane::apps::usageError(app, "-o " + options.output + " names one .pcd file, but there are " +
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
-  if (const std::optional<std::string> problem = checkViewOptions(options, files.size())) {
-    return floodplane::apps::usageError(app, *problem);
-  }
-  if (options.view || options.snapshot) {
-    // Before any work: a batch should not segment everything and then fail on every image.
-    if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {
-      std::cerr << "pcd_segment: error: cannot draw in 3-D: " << *reason << "\n";
-      return 1;
-    }
-  }
+  if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
   if (!createOutputDirectory(single_file ? fs::path(options.output).parent_path() : fs::path(options.output))) {
     return 1;
   }
