@@ -10,7 +10,9 @@
 namespace floodplane::view {
 
 /// std::nullopt when an X display with the GLX extension can be opened; otherwise one line
-/// saying what is missing and what to do (run under xvfb-run).
+/// saying what is missing and what to do (run under xvfb-run). The first connection that
+/// passes stays open until the process ends, so that the X server does not reset (and refuse
+/// connections) between the renderings of a batch. Not thread-safe.
 std::optional<std::string> renderingUnavailableReason();
 
 }  // namespace floodplane::view

@@ -362,6 +362,8 @@ void addOutputOptions(CLI::App& app, Options& options) {
   app.add_option("--png", options.png_dir,
                  "Write <scene>.png per file into this directory: ground truth | ransac | omps "
                  "| floodplane, segments coloured by the ground-truth plane they overlap most");
+  // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
+  // display (CI, headless machines), and each picture stays one row of panels wide.
   app.add_option("--png3d", options.png3d_dir,
                  "Write <scene>.png per file into this directory: the panels of --png rendered in 3-D "
                  "(seen from above and to the right of the sensor, an arrow along each segment's normal). "

@@ -78,6 +78,13 @@ std::size_t arrowColoured(const std::map<Rgb, std::size_t>& colours) {
   return count;
 }
 
+// xvfb-run on a display of its own. With -a alone, xvfb-run instances started at the same
+// moment (parallel tests, other builds on the machine) all try display 99 first and trip over
+// each other; each starts its search from a number of its own here. -noreset: otherwise the
+// server resets as the last client leaves, while xvfb-run removes its temporary directory,
+// which then fails now and then (exit 5, "problem while cleaning up temporary directory").
+std::string xvfbRun() { return "xvfb-run -a -n " + std::to_string(1000 + ::getpid() % 30000) + " -s -noreset "; }
+
 struct Outcome {
   int exit_code = -1;
   std::string out;
@@ -117,7 +124,7 @@ TEST_F(PcdComparePng3d, RendersGroundTruthAndEachMethodInThreeDimensions) {
   const fs::path images = dir_ / "images";
   const Outcome outcome =
       run("--repeat 1 --quiet --methods floodplane,omps --png3d " + quoted(images.string()) + " " + quoted(kStaircase),
-          "xvfb-run -a ");
+          xvfbRun());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const floodplane::io::RgbImage image = readPng(images / "staircase.none.png");
   // Ground truth, omps, floodplane: the layout of --png.

@@ -204,6 +204,13 @@ std::map<std::uint32_t, std::size_t> labelCounts(const pcl::PointCloud<pcl::Poin
   return counts;
 }
 
+// xvfb-run on a display of its own. With -a alone, xvfb-run instances started at the same
+// moment (parallel tests, other builds on the machine) all try display 99 first and trip over
+// each other; each starts its search from a number of its own here. -noreset: otherwise the
+// server resets as the last client leaves, while xvfb-run removes its temporary directory,
+// which then fails now and then (exit 5, "problem while cleaning up temporary directory").
+std::string xvfbRun() { return "xvfb-run -a -n " + std::to_string(1000 + ::getpid() % 30000) + " -s -noreset "; }
+
 class PcdSegmentView : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -241,7 +248,7 @@ class PcdSegmentView : public ::testing::Test {
                        "the snapshots cannot be rendered on this machine";
       return {};
     }
-    return run(arguments, "xvfb-run -a ");
+    return run(arguments, xvfbRun());
   }
 
   fs::path dir_;
@@ -338,7 +345,7 @@ TEST_F(PcdSegmentView, BatchWritesASnapshotPerInputInTheOutputDirectory) {
 TEST_F(PcdSegmentView, SnapshotThatCannotBeWrittenIsAnErrorNamingTheFileAndLeavesNothing) {
   const Result result =
       runWithDisplay({kScene, "-o", path("out").string(), "--snapshot", path("missing/dir/s.png").string()});
-  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.exit_code, 1) << result.err;
   EXPECT_TRUE(contains(result.err, "missing/dir/s.png")) << result.err;
   EXPECT_FALSE(fs::exists(path("missing")));
 }
