@@ -11,6 +11,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
   libopen3d-dev                              # pcd_compare's Open3D RANSAC baseline (0.16)
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
+  xvfb xauth libgl1-mesa-dri                 # an X display with software OpenGL for 3-D snapshots
 )
 
 missing=()

@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "common/cli.h"
+#include "common/display_check.h"
 #include "comparison_image.h"
+#include "comparison_image_3d.h"
 #include "eval/segmentation_metrics.h"
 #include "io/atomic_file.h"
 #include "io/png_file.h"
@@ -47,6 +49,7 @@ struct Options {
   std::string csv_file;
   std::string json_file;
   std::string png_dir;
+  std::string png3d_dir;
   bool resolutions = false;
   bool phases = false;
   bool quiet = false;
@@ -251,8 +254,9 @@ std::vector<std::pair<std::string, std::string>> configuration(const Options& op
 }
 
 // Ground truth and the methods of --methods in a fixed order, whichever of them ran.
-void writeComparisonImage(const Options& options, const InputCloud& input,
-                          const std::vector<std::pair<std::string, const MethodRun*>>& runs, const SceneResult& scene) {
+std::vector<Panel> comparisonPanels(const InputCloud& input,
+                                    const std::vector<std::pair<std::string, const MethodRun*>>& runs,
+                                    const SceneResult& scene) {
   static const std::vector<std::string> kOrder = {"ransac", "open3d_ransac", "omps", "floodplane/2", "floodplane"};
   std::vector<Panel> panels;
   const std::vector<std::uint32_t> no_ground_truth;
@@ -263,7 +267,7 @@ void writeComparisonImage(const Options& options, const InputCloud& input,
     for (std::size_t i = 0; i < shown.size(); ++i) {
       shown[i] = input.valid[i] != 0 ? shown[i] : 0;
     }
-    panels.push_back({"ground truth", std::move(shown)});
+    panels.push_back({"ground truth", std::move(shown), {}});
   }
   for (const std::string& name : kOrder) {
     for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -278,15 +282,31 @@ void writeComparisonImage(const Options& options, const InputCloud& input,
         text << std::fixed << name << "  IoU " << result.scores->mean_iou;
         title = text.str();
       }
-      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth, input.valid)});
+      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth, input.valid),
+                        runs[k].second->labels});
     }
   }
+  return panels;
+}
+
+// <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings).
+void writeComparisonImages(const Options& options, const InputCloud& input,
+                           const std::vector<std::pair<std::string, const MethodRun*>>& runs,
+                           const SceneResult& scene) {
+  const std::vector<Panel> panels = comparisonPanels(input, runs, scene);
   if (panels.empty()) {
     return;
   }
-  fs::create_directories(options.png_dir);
-  floodplane::io::writePng((fs::path(options.png_dir) / (scene.name + ".png")).string(),
-                           comparisonImage(panels, input.cloud->width, input.cloud->height));
+  if (!options.png_dir.empty()) {
+    fs::create_directories(options.png_dir);
+    floodplane::io::writePng((fs::path(options.png_dir) / (scene.name + ".png")).string(),
+                             comparisonImage(panels, input.cloud->width, input.cloud->height));
+  }
+  if (!options.png3d_dir.empty()) {
+    fs::create_directories(options.png3d_dir);
+    floodplane::io::writePng((fs::path(options.png3d_dir) / (scene.name + ".png")).string(),
+                             comparisonImage3d(panels, input.cloud, scene.min_points));
+  }
 }
 
 // floodplane at sub-sampling 1 (from the main table when it ran there), 2, 4 and 8.
@@ -352,12 +372,12 @@ SceneResult compareScene(const Options& options, Methods& methods, const InputCl
   }
   if (options.resolutions) scene.resolutions = measureResolutions(options, methods, input, scene);
   if (methods.phase_timer) scene.phases = measurePhases(*methods.phase_timer, input, options.repeat);
-  if (!options.png_dir.empty()) {
+  if (!options.png_dir.empty() || !options.png3d_dir.empty()) {
     std::vector<std::pair<std::string, const MethodRun*>> runs;
     for (std::size_t k = 0; k < methods.selected.size(); ++k) {
       runs.emplace_back(methods.selected[k]->name(), &measured[k].first);
     }
-    writeComparisonImage(options, input, runs, scene);
+    writeComparisonImages(options, input, runs, scene);
   }
   return scene;
 }
@@ -429,6 +449,12 @@ void addOutputOptions(CLI::App& app, Options& options) {
                  "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | "
                  "omps | floodplane/2 | floodplane (those run), segments coloured by the ground-truth plane "
                  "they overlap most");
+  // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
+  // display (CI, headless machines), and each picture stays one row of panels wide.
+  app.add_option("--png3d", options.png3d_dir,
+                 "Write <scene>.png per file into this directory: the panels of --png rendered in 3-D "
+                 "(seen from above and to the right of the sensor, an arrow along each segment's normal). "
+                 "Needs an X display: on a machine without one, run under xvfb-run -a");
   app.add_flag("--resolutions", options.resolutions, "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
   app.add_flag("--phases", options.phases, "Also report floodplane's time per phase (Fig. 5), from separate runs");
   app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the tables and errors");
@@ -520,6 +546,13 @@ int main(int argc, char** argv) {
   options.methods = uniqueMethods(method_list);
   if (!options.tune_dir.empty()) return tune(options);
   if (options.inputs.empty()) return floodplane::apps::usageError(app, "no INPUT given");
+  if (!options.png3d_dir.empty()) {
+    // Before any work: the comparison can take minutes, and every image would fail alike.
+    if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {
+      std::cerr << "pcd_compare: error: --png3d cannot draw in 3-D: " << *reason << "\n";
+      return 1;
+    }
+  }
 
   Methods methods;
   try {
