@@ -11,6 +11,13 @@
 
 namespace floodplane {
 
+namespace {
+
+// About this many pixels of a plane take part in its planarity test (see samplePlanarity).
+constexpr double kPlanaritySamples = 4000.0;
+
+}  // namespace
+
 // ---- RegionBuilder ---------------------------------------------------------------------
 
 void RegionBuilder::build(const PointGrid& measured, const PointGrid& full, const PointGrid& segmented,
@@ -238,11 +245,21 @@ void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const std::vect
 }
 
 void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels,
-                                    PlanarityTest& test) const {
+                                    PlanarityTest& test) {
   // Interior pixels only (no neighbour in another plane or none): the pixels along a plane's
   // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
   // A neighbour without a return does not make a border: on a speckled surface there would be
   // no inside.
+  //
+  // A large plane is sampled on a lattice (every s-th pixel of every s-th row) of about
+  // kPlanaritySamples pixels: its test is then still sensitive to a bend a tenth of the noise
+  // deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
+  const std::vector<PlaneCandidate>& list = candidates_.list();
+  strides_.assign(list.size() + 1, 1);
+  for (std::size_t k = 1; k <= list.size(); ++k) {
+    const double s = std::floor(std::sqrt(list[k - 1].sums.count / kPlanaritySamples));
+    strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
+  }
   const std::size_t width = static_cast<std::size_t>(full.width);
   const auto inside = [&](std::size_t j, std::uint32_t k) {
     return labels[j] == k || !full.isFinite(j) || holes_->isFilled(j);
@@ -252,7 +269,10 @@ void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std
     for (std::size_t x = 1; x + 1 < width; ++x) {
       const std::size_t i = row + x;
       const std::uint32_t k = labels[i];
-      if (k != 0 && inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+      if (k == 0) continue;
+      const std::uint32_t s = strides_[k];
+      if (s > 1 && (x % s != 0 || y % s != 0)) continue;
+      if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
         test.add(k, Vec3::load(full.point(i)));
     }
   }

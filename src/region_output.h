@@ -69,7 +69,7 @@ class RegionBuilder {
   // labels then need renumbering by remap()).
   bool dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels, const Tolerances& tolerances);
   // Adds the interior pixels of the planes to `test`.
-  void samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlanarityTest& test) const;
+  void samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlanarityTest& test);
   // The planes' sums anew from the measured points of their pixels.
   void sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels);
   // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
@@ -93,6 +93,7 @@ class RegionBuilder {
   PlanarityTest planarity_;
   std::vector<PlaneFit> fits_;
   std::vector<bool> curved_;
+  std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
   OcclusionMerging occlusion_merging_;
 };
 
