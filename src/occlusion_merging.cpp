@@ -4,6 +4,13 @@
 
 namespace floodplane {
 
+namespace {
+
+// A pixel between two pieces is behind their plane beyond this many plane tolerances.
+constexpr float kBehindTolerances = 2.0f;
+
+}  // namespace
+
 void OcclusionMerging::findBoxes(int width, int height, const std::vector<std::uint32_t>& labels, std::size_t planes) {
   boxes_.assign(planes, Box{width, height, -1, -1});
   for (int y = 0; y < height; ++y) {
@@ -25,13 +32,18 @@ bool OcclusionMerging::occludedBetween(const PointGrid& full, const std::vector<
   const Box& box_b = boxes_[b - 1];
   const std::size_t width = static_cast<std::size_t>(full.width);
   std::size_t gaps = 0;
-  // A pixel between the two that is behind their plane: no surface there.
+  // A pixel between the two that is behind their plane: no surface there. Behind by more than
+  // twice the plane tolerance (six noise deviations): the pixels of the plane itself that
+  // its 3-sigma band left out (one in 400 on a noisy plane) sit all along the gap, and one
+  // of them must not keep the pieces apart.
   const auto behind = [&](std::size_t i) {
     const Vec3 q = Vec3::load(full.point(i));
     float ray_distance = 0.f;
     // NaN (no return) is neither behind nor in front; n faces the sensor, so in front of the
     // plane n . q + d > 0.
-    return plane.normal.dot(q) + plane.offset < 0.f && !plane.fitsPlane(q, q.squaredNorm(), ray_distance);
+    const float range_sq = q.squaredNorm();
+    return plane.normal.dot(q) + plane.offset < 0.f && !plane.fitsPlane(q, range_sq, ray_distance) &&
+           ray_distance > kBehindTolerances * plane.planeTolerance(range_sq);
   };
   // Walks one line of `count` pixels `step` apart from `first`; false at a pixel behind.
   const auto line = [&](std::size_t first, std::ptrdiff_t step, int count) {

@@ -86,12 +86,6 @@ PlanarityTest::Quadric PlanarityTest::fitQuadric(std::uint32_t k) const {
   return q;
 }
 
-double PlanarityTest::bend(std::uint32_t k) const {
-  const Sums& s = sums_[k - 1];
-  if (s.count <= 0.0) return 0.0;
-  return std::sqrt(fitQuadric(k).explained / s.count);
-}
-
 double PlanarityTest::curvature(std::uint32_t k) const { return fitQuadric(k).curvature; }
 
 bool PlanarityTest::curved(std::uint32_t k, const Tolerances& tolerances) const {

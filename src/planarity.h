@@ -26,8 +26,6 @@ class PlanarityTest {
   void add(std::uint32_t k, const Vec3& point);
   /// Whether plane k bends more than its noise explains.
   bool curved(std::uint32_t k, const Tolerances& tolerances) const;
-  /// The RMS bend of plane k [m] (what the quadratic explains beyond the plane).
-  double bend(std::uint32_t k) const;
   /// The larger principal curvature of plane k's quadratic [1/m].
   double curvature(std::uint32_t k) const;
 

@@ -31,6 +31,7 @@ constexpr int kSeedStride = 4;
 // pass every large plane is already claimed, so the small seeds only see what is left;
 // the noise-widened seed size (SeedSelector::seedSizeAt) still keeps them out of noise.
 constexpr double kFineSeedDivisor = 2.0;
+constexpr int kFineSeedStride = 4;
 
 using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start) {
@@ -105,7 +106,7 @@ struct Segmenter::Workspace {
     frame.grid = sample(*frame.source, s);
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
-    fine_selector.configure(params, frame.tolerances, 1.0 / kFineSeedDivisor, frame.pitch, frame.grid.width,
+    fine_selector.configure(params, frame.tolerances, segment_noise.negligible() ? 1.0 / 3.0 : 1.0 / kFineSeedDivisor, frame.pitch, frame.grid.width,
                             frame.grid.height);
     buffer.reset(frame.grid.size());
     segments.assign(1, Segment());  // label 0: no segment
@@ -121,10 +122,10 @@ struct Segmenter::Workspace {
     const Clock::time_point scan_start = timed ? Clock::now() : Clock::time_point();
     double flooding = 0.0;
     const PointGrid& grid = frame.grid;
-    const int stride = std::max(1, kSeedStride / params.subsampling);
-    const int offset = stride / 2;
     Seed seed;
     for (const SeedSelector* seeds : {&selector, &fine_selector}) {
+      const int stride = std::max(1, (seeds == &selector ? kSeedStride : kFineSeedStride) / params.subsampling);
+      const int offset = stride / 2;
       for (int y = offset; y < grid.height; y += stride) {
         for (int x = offset; x < grid.width; x += stride) {
           const std::size_t pixel =
