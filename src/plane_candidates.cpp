@@ -63,7 +63,14 @@ bool PlaneCandidates::regroup(const std::vector<std::uint32_t>& group) {
   }
   const bool merged = kept_.size() != n;
   candidates_.swap(kept_);
-  return merged;
+  if (!merged) return false;
+  // A merged plane may have outgrown the ones before it: number by size again, through the
+  // same remap, so that the labels are renumbered once.
+  std::vector<std::uint32_t> grouped = remap_;
+  sortBySize(0, nullptr);
+  for (std::size_t k = 1; k <= n; ++k) grouped[k] = remap_[grouped[k]];
+  remap_.swap(grouped);
+  return true;
 }
 
 bool PlaneCandidates::drop(const std::vector<bool>& drop) {

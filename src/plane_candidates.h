@@ -35,8 +35,9 @@ class PlaneCandidates {
   /// no longer make an acceptable plane under its parameters; orders the rest by size.
   /// Returns whether any number changed (the label image then needs renumberPixels).
   bool sortBySize(std::uint32_t min_inliers, const Params* recheck);
-  /// Merges the candidates whose numbers k share a value group[k] (group[0] is ignored), in
-  /// the order of each group's first member. Returns whether any merged.
+  /// Merges the candidates whose numbers k share a value group[k] (group[0] is ignored) and
+  /// orders the result by size again. Returns whether any merged (the label image then needs
+  /// renumberPixels).
   bool regroup(const std::vector<std::uint32_t>& group);
   /// Drops the candidates whose number k has drop[k] set (drop[0] is ignored), keeping the
   /// order of the rest. Returns whether any was dropped.

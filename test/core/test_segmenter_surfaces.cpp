@@ -99,6 +99,25 @@ TEST(SegmenterSurfaces, AWallBehindAColumnIsOnePlane) {
   }
 }
 
+// Planes are numbered by size, and counted, after pieces are joined too: a column covering
+// 40 % of the view is larger than either half of the wall behind it, but not than the wall.
+TEST(SegmenterSurfaces, NumbersPlanesBySizeAfterJoiningThePiecesOfAWall) {
+  ScenePlane column = test::frontalPlane(1.5, 2);
+  column.contains = [](const Eigen::Vector3d& p) { return std::abs(p.x()) < 0.37; };
+  const RenderedGrid scene = test::render(camera(), {column, test::frontalPlane(3.0, 1)});
+  Segmenter segmenter(defaults());
+  const Segmentation& result = segmenter.segment(scene.grid());
+  ASSERT_EQ(result.planes.size(), 2u);
+  EXPECT_GT(bestIoU(scene, result.labels, 1), 0.95);
+  std::vector<std::uint32_t> counts(3, 0);
+  for (const std::uint32_t label : result.labels) ++counts[label];
+  EXPECT_EQ(result.planes[0].inlier_count, counts[1]);
+  EXPECT_EQ(result.planes[1].inlier_count, counts[2]);
+  EXPECT_GT(result.planes[0].inlier_count, result.planes[1].inlier_count);
+  // Plane 1 is the wall.
+  EXPECT_NEAR(result.planes[0].fit.offset, 3.0, 1e-3);
+}
+
 TEST(SegmenterSurfaces, CoplanarTablesWithTheFloorBetweenThemAreTwoPlanes) {
   // Two table tops at one height, 20 cm apart, 75 cm above the floor.
   const Eigen::Vector3d up(0.0, -1.0, 0.0);
