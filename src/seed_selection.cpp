@@ -28,7 +28,7 @@ bool sameDirection(const Vec3& u, const Vec3& v, float cos_angle) {
 
 void SeedSelector::configure(const Params& params, const Tolerances& tolerances, double scale, float angular_pitch,
                              int width, int height) {
-  tolerances_ = &tolerances;
+  tolerances_ = tolerances;
   scale_ = scale;
   angle_ = static_cast<float>(params.angular_threshold);
   cos_angle_ = std::cos(angle_);
@@ -41,7 +41,7 @@ void SeedSelector::configure(const Params& params, const Tolerances& tolerances,
 }
 
 float SeedSelector::seedSizeAt(float range) const {
-  return static_cast<float>(2.0 * tolerances_->seedHalfSide(range, scale_));
+  return static_cast<float>(2.0 * tolerances_.seedHalfSide(range, scale_));
 }
 
 int SeedSelector::rhoAt(float range) const {

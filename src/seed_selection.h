@@ -74,7 +74,7 @@ class SeedSelector {
   static float estimateAngularPitch(const PointGrid& grid, std::vector<float>& scratch, float fallback = 1.0f / 525.0f);
 
  private:
-  const Tolerances* tolerances_ = nullptr;
+  Tolerances tolerances_;  // a copy: the caller's may not outlive configure()
   double scale_ = 1.0;
   float cos_angle_ = 1.f;
   float angle_ = 0.1f;
