@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/depth_png.h"
 #include "temp_path.h"
 
 namespace {
@@ -210,6 +211,99 @@ TEST_F(InputFrame, RejectsIntegerCoordinates) {
       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
   writeBytes(path_, text);
   expectRejected("not a single float or double");
+}
+
+// ---- depth images ----------------------------------------------------------------------
+
+class DepthInputFrame : public ::testing::Test {
+ protected:
+  void TearDown() override { fs::remove(path_); }
+
+  // A 4 x 3 depth image with one pixel without a return.
+  void writeDepth() const {
+    floodplane::io::DepthImage image;
+    image.width = 4;
+    image.height = 3;
+    image.depth = {1000, 1100, 1200, 1300, 2000, 0, 2200, 2300, 3000, 3100, 3200, 65535};
+    floodplane::io::writeDepthPng(path_.string(), image);
+  }
+
+  const floodplane::io::DepthCamera camera_{500.0, 400.0, 1.5, 1.0, 1000.0};
+  fs::path path_ = floodplane::test::uniqueTempPath(".png");
+};
+
+TEST_F(DepthInputFrame, BackProjectsADepthPngOnItsGrid) {
+  writeDepth();
+  const auto frame = loadInputFrame(path_.string(), camera_);
+  ASSERT_EQ(frame.xyz.width, 4u);
+  ASSERT_EQ(frame.xyz.height, 3u);
+  EXPECT_FALSE(frame.xyz.is_dense);
+  EXPECT_FALSE(frame.xyzrgb.has_value());
+  EXPECT_FALSE(frame.labels.has_value());
+  EXPECT_TRUE(frame.xyz.sensor_origin_.isZero());
+  EXPECT_FLOAT_EQ(frame.xyz.at(0, 0).z, 1.0f);
+  EXPECT_FLOAT_EQ(frame.xyz.at(0, 0).x, static_cast<float>(-1.5 * 1.0 / 500.0));
+  EXPECT_FLOAT_EQ(frame.xyz.at(0, 0).y, static_cast<float>(-1.0 * 1.0 / 400.0));
+  EXPECT_FLOAT_EQ(frame.xyz.at(3, 2).z, 65.535f);
+  EXPECT_FLOAT_EQ(frame.xyz.at(3, 2).x, static_cast<float>(1.5 * 65.535 / 500.0));
+  EXPECT_FLOAT_EQ(frame.xyz.at(3, 2).y, static_cast<float>(1.0 * 65.535 / 400.0));
+  EXPECT_TRUE(std::isnan(frame.xyz.at(1, 1).x) && std::isnan(frame.xyz.at(1, 1).z)) << "zero depth: no return";
+}
+
+TEST_F(DepthInputFrame, DividesTheUnitsByTheDepthScale) {
+  writeDepth();
+  floodplane::io::DepthCamera tum = camera_;
+  tum.depth_scale = 5000.0;
+  EXPECT_FLOAT_EQ(loadInputFrame(path_.string(), tum).xyz.at(2, 1).z, 2200.0f / 5000.0f);
+}
+
+TEST_F(DepthInputFrame, TellsAPngByItsExtensionInAnyCase) {
+  EXPECT_TRUE(floodplane::io::isDepthImagePath("a/b/frame.png"));
+  EXPECT_TRUE(floodplane::io::isDepthImagePath("FRAME.PNG"));
+  EXPECT_FALSE(floodplane::io::isDepthImagePath("frame.pcd"));
+  EXPECT_FALSE(floodplane::io::isDepthImagePath("png"));
+  EXPECT_FALSE(floodplane::io::isDepthImagePath("frame.png.pcd"));
+  fs::remove(path_);
+  path_ = floodplane::test::uniqueTempPath(".PNG");
+  writeDepth();
+  EXPECT_EQ(loadInputFrame(path_.string(), camera_).xyz.width, 4u);
+}
+
+TEST_F(DepthInputFrame, NeedsTheIntrinsics) {
+  writeDepth();
+  try {
+    loadInputFrame(path_.string());
+    ADD_FAILURE() << "a depth image without intrinsics was read";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("intrinsics"), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(DepthInputFrame, RefusesIntrinsicsItCannotUse) {
+  writeDepth();
+  floodplane::io::DepthCamera bad = camera_;
+  bad.fy = 0.0;
+  EXPECT_THROW(loadInputFrame(path_.string(), bad), std::invalid_argument);
+}
+
+TEST_F(DepthInputFrame, RefusesADepthImageOfOneRow) {
+  floodplane::io::DepthImage image;
+  image.width = 5;
+  image.height = 1;
+  image.depth.assign(5, 1000);
+  floodplane::io::writeDepthPng(path_.string(), image);
+  EXPECT_THROW(loadInputFrame(path_.string(), camera_), std::runtime_error);
+}
+
+TEST_F(DepthInputFrame, ReportsABrokenPngAsOneLine) {
+  writeBytes(path_, "\x89PNG\r\n\x1a\n but then nothing");
+  try {
+    loadInputFrame(path_.string(), camera_);
+    ADD_FAILURE() << "a broken PNG was read";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("PNG"), std::string::npos) << error.what();
+    EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
+  }
 }
 
 // The checks only reject: on real sensor frames the reader gives what PCL's own loader gives.
