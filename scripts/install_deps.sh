@@ -10,6 +10,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev # tests and benchmarks
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
+  python3 python3-dev pybind11-dev python3-pybind11  # the Python module (Debian's interpreter)
+  python3-numpy python3-pytest                 # its arrays and its tests
+  python3-dask python3-distributed             # floodplane.distributed and its test cluster
 )
 
 missing=()
