@@ -16,9 +16,9 @@ from conftest import two_plane_scene  # noqa: E402
 
 @pytest.fixture(scope="module")
 def client():
-    # Two processes of one thread each, on the loopback interface, no dashboard.
+    # Two processes of one thread each, on the loopback interface; the dashboard on any free port.
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                       dashboard_address=None, silence_logs=40)
+                                       dashboard_address=":0", silence_logs=40)
     with distributed.Client(cluster) as client:
         yield client
     cluster.close()
