@@ -15,6 +15,7 @@
 #include <limits>
 #include <new>
 #include <sstream>
+#include <exception>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
@@ -167,8 +168,15 @@ RawCloud readRawCloud(const std::string& path) {
     }
   } catch (const pcl::PCLException& e) {
     fail(std::string("corrupt PCD file: ") + e.what());
+  } catch (const std::runtime_error&) {
+    throw;  // this reader's own reasons
   } catch (const std::bad_alloc&) {
     fail("corrupt PCD file: its header announces more points than fit in memory");
+  } catch (const std::exception& e) {
+    // PCL's header parser indexes the words of a line with at() and converts them with
+    // boost::lexical_cast: a line with too few words or a bad number throws
+    // std::out_of_range or boost::bad_lexical_cast, not its own exception.
+    fail(std::string("not a PCD file, or its header is invalid (") + e.what() + ")");
   }
   return raw;
 }

@@ -205,6 +205,21 @@ TEST_F(InputFrame, RejectsACloudWithoutXyz) {
   expectRejected("no x y z");
 }
 
+// Found by fuzz_pcd_loader: PCL's header parser takes any line starting with "DATA" for the
+// DATA line and reads its second word with at(), which throws std::out_of_range when the line
+// is one word; the reader must turn that into its own error, as for every broken header.
+TEST_F(InputFrame, RejectsADataLineOfOneWord) {
+  const std::string header =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\n";
+  const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  for (const std::string& data_line : {std::string("DATAascii\n"), std::string("DATA\x8b\0\0compressed\n", 17)}) {
+    SCOPED_TRACE(data_line);
+    writeBytes(path_, header + data_line + points);
+    expectRejected("PCD file");
+  }
+}
+
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
   std::string text =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
