@@ -6,6 +6,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -75,51 +76,84 @@ void checkBodySize(const std::string& path, std::uintmax_t file_size, int data_t
   }
 }
 
+// A number of the header's SIZE, COUNT, WIDTH, HEIGHT or POINTS line: PCL reads it into an
+// int with >>, which turns an overflowing or negative value into a huge size. So one that does
+// not start with digits or exceeds INT_MAX is refused here.
+std::uint64_t headerCount(const std::string& key, const std::string& word) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (error != std::errc() || value > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    fail("corrupt PCD header: " + key + " value '" + word.substr(0, 24) + "' is not a count");
+  }
+  return value;
+}
+
+// What the header announces, as far as the size of the point buffer goes.
+struct AnnouncedSize {
+  std::size_t field_count = 0;
+  std::vector<std::uint64_t> sizes;
+  std::vector<std::uint64_t> counts;
+  std::uint64_t width = 0;
+  std::uint64_t height = 0;
+  std::uint64_t points = 0;
+};
+
+// Refuses a body that cannot hold what the header announces, once its DATA line is reached.
+void checkBody(const AnnouncedSize& header, const std::string& type, std::uint64_t body) {
+  if (header.sizes.size() != header.field_count) return;  // PCL will say what is wrong
+  std::vector<std::uint64_t> counts = header.counts;
+  counts.resize(header.field_count, 1);
+  std::uint64_t point_step = 0;
+  std::uint64_t values = 0;  // per point
+  for (std::size_t i = 0; i < header.field_count; ++i) {
+    point_step += std::min<std::uint64_t>(header.sizes[i], 8) * counts[i];
+    values += counts[i];
+  }
+  // PCL sizes the buffer from POINTS, and checks it against WIDTH x HEIGHT: the larger counts.
+  const std::uint64_t points = std::max(header.points, header.width * header.height);
+  // ASCII needs at least two characters (digit and separator) per value; LZF packs at most
+  // about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
+  const std::uint64_t per_point_bound = type == "ascii" ? 2 * values : point_step;
+  const std::uint64_t factor = type == "binary_compressed" ? 100 : 1;
+  // Every count is below 2^31 and a header line holds at most 64 Ki fields, so the steps do
+  // not overflow; the products are compared by division first. 2^40 bytes is no frame.
+  const std::uint64_t step = std::max<std::uint64_t>({per_point_bound, point_step, 1});
+  if (points > (std::uint64_t{1} << 40) / step || points * per_point_bound > body * factor) {
+    fail("corrupt or truncated PCD file: the header announces " + std::to_string(points) + " points of " +
+         std::to_string(point_step) + " bytes, the file's " + std::to_string(body) + " bytes of data cannot hold them");
+  }
+}
+
 // PCL's readHeader allocates (and zero-fills) the whole point buffer the header announces
-// before reading a byte of data, so a corrupt WIDTH or POINTS line can ask for terabytes
-// (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the machine.
-// This reads the header's sizes itself and refuses a body that the file cannot hold; it only
-// rejects, and leaves every other judgement of the header to PCL.
+// before reading a byte of data, so a corrupt WIDTH, POINTS or COUNT line can ask for
+// terabytes (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the
+// machine. This reads the header's sizes itself and refuses a body that the file cannot hold;
+// it only rejects, and leaves every other judgement of the header to PCL.
 void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  std::uint64_t point_step = 0;
-  std::uint64_t points = 0;
-  std::vector<std::uint64_t> sizes;
-  std::vector<std::uint64_t> counts;
-  std::size_t field_count = 0;
+  AnnouncedSize header;
   // A header is a few hundred bytes; 64 KiB without DATA is not a header.
   while (in.tellg() < 65536 && std::getline(in, line)) {
     std::istringstream words(line);
     std::string key;
     words >> key;
-    std::uint64_t value = 0;
+    std::string word;
     if (key == "FIELDS") {
-      std::string name;
-      while (words >> name) ++field_count;
+      while (words >> word) ++header.field_count;
     } else if (key == "SIZE") {
-      while (words >> value) sizes.push_back(value);
+      while (words >> word) header.sizes.push_back(headerCount(key, word));
     } else if (key == "COUNT") {
-      while (words >> value) counts.push_back(value);
-    } else if (key == "POINTS") {
-      words >> points;
+      while (words >> word) header.counts.push_back(headerCount(key, word));
+    } else if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS") {
+      if (!(words >> word)) continue;  // PCL will say what is wrong
+      const std::uint64_t value = headerCount(key, word);
+      (key == "WIDTH" ? header.width : key == "HEIGHT" ? header.height : header.points) = value;
     } else if (key == "DATA") {
-      std::string type;
-      words >> type;
-      if (sizes.size() != field_count || points == 0) return;  // PCL will say what is wrong
-      counts.resize(field_count, 1);
-      for (std::size_t i = 0; i < field_count; ++i) point_step += std::min<std::uint64_t>(sizes[i], 8) * counts[i];
+      words >> word;
       const std::streamoff header_end = in.tellg();
       if (header_end < 0) return;
-      const std::uint64_t body = file_size - static_cast<std::uint64_t>(header_end);
-      // ASCII needs at least two characters (digit and separator) per value; LZF packs at
-      // most about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
-      const std::uint64_t per_point_bound = type == "ascii" ? 2 * field_count : point_step;
-      const std::uint64_t factor = type == "binary_compressed" ? 100 : 1;
-      if (points > std::numeric_limits<std::uint64_t>::max() / 1024 || points * per_point_bound > body * factor) {
-        fail("corrupt or truncated PCD file: the header announces " + std::to_string(points) + " points, the file's " +
-             std::to_string(body) + " bytes of data cannot hold them");
-      }
+      checkBody(header, word, file_size - static_cast<std::uint64_t>(header_end));
       return;
     }
   }

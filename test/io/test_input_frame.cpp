@@ -220,6 +220,26 @@ TEST_F(InputFrame, RejectsADataLineOfOneWord) {
   }
 }
 
+// Found by fuzz_pcd_loader: PCL reads COUNT with >> into an int, so an overflowing value
+// became a count near 2^31 and PCL asked for 25 GB before reading the six points of this
+// file; a large but valid COUNT in an ASCII file did the same (the size check counted one
+// value per field).
+TEST_F(InputFrame, RefusesCountsAndSizesThatOverflowOrThatTheFileCannotHold) {
+  const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  const auto header = [](const std::string& count, const std::string& width, const std::string& points_line) {
+    return "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT " + count + "\nWIDTH " + width +
+           "\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + points_line + "\nDATA ascii\n";
+  };
+  const std::string overflow(120, '9');
+  for (const std::string& text :
+       {header(overflow + "1 1 1", "3", "6"), header("100000000 1 1", "3", "6"), header("-1 1 1", "3", "6"),
+        header("1 1 1", overflow, "6"), header("1 1 1", "3", "-6"), header("1 1 1", "2147483647", "6")}) {
+    SCOPED_TRACE(text);
+    writeBytes(path_, text + points);
+    expectRejected("header");  // refused from the header, before PCL allocates
+  }
+}
+
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
   std::string text =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
