@@ -109,6 +109,10 @@ void checkBody(const AnnouncedSize& header, const std::string& type, std::uint64
     point_step += std::min<std::uint64_t>(header.sizes[i], 8) * counts[i];
     values += counts[i];
   }
+  // PCL keeps a point's size in 32 bits; no real point needs a gigabyte.
+  if (point_step > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    fail("corrupt PCD header: SIZE x COUNT gives points of " + std::to_string(point_step) + " bytes");
+  }
   // PCL sizes the buffer from POINTS, and checks it against WIDTH x HEIGHT: the larger counts.
   const std::uint64_t points = std::max(header.points, header.width * header.height);
   // ASCII needs at least two characters (digit and separator) per value; LZF packs at most
@@ -159,6 +163,29 @@ void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
   }
 }
 
+// PCL parses the header line by line, each line overriding what an earlier one said (and
+// lines after DATA are parsed as header too), and reads the body with the result: a SIZE line
+// after TYPE leaves a float in a 1-byte slot, a SIZE or COUNT line after POINTS leaves a
+// buffer smaller than the points, and PCL then writes past the buffer. So every field must
+// fit in its point with the size of its type, and the buffer must hold the points, before
+// PCL reads a byte of the body. (Found by fuzz_pcd_loader as heap corruption.)
+void checkLayout(const pcl::PCLPointCloud2& cloud) {
+  for (const pcl::PCLPointField& field : cloud.fields) {
+    const std::uint64_t size = pcl::getFieldSize(field.datatype);
+    if (size == 0 || field.count == 0) {
+      fail("corrupt PCD header: field " + field.name.substr(0, 24) + " has no valid SIZE, TYPE and COUNT");
+    }
+    if (std::uint64_t{field.offset} + std::uint64_t{field.count} * size > cloud.point_step) {
+      fail("corrupt PCD header: field " + field.name.substr(0, 24) +
+           " does not fit in its point (SIZE, TYPE and COUNT disagree)");
+    }
+  }
+  if (cloud.data.size() != std::uint64_t{cloud.width} * cloud.height * cloud.point_step) {
+    fail("corrupt PCD header: WIDTH x HEIGHT points of " + std::to_string(cloud.point_step) +
+         " bytes do not match the POINTS line");
+  }
+}
+
 // The file as PCL's untyped cloud, with its sensor pose, after every check that has to come
 // before PCL reads the body.
 struct RawCloud {
@@ -196,6 +223,7 @@ RawCloud readRawCloud(const std::string& path) {
            ")");
     }
     if (data_index > file_size) fail("truncated PCD file: the header is incomplete");
+    checkLayout(raw.cloud);
     checkBodySize(path, file_size, data_type, data_index, raw.cloud);
     if (reader.read(path, raw.cloud, raw.origin, raw.orientation, version) < 0) {
       fail("corrupt or truncated PCD file (PCL cannot read its data)");

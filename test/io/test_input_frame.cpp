@@ -240,6 +240,25 @@ TEST_F(InputFrame, RefusesCountsAndSizesThatOverflowOrThatTheFileCannotHold) {
   }
 }
 
+// Found by fuzz_pcd_loader as heap corruption: PCL lets a later header line override an
+// earlier one and reads the body with what is left. A SIZE line after TYPE put 4-byte floats
+// into 1-byte slots; a second header after DATA (parsed as header too) resized the points
+// after their buffer was allocated. PCL wrote past the buffer; now the header is refused.
+TEST_F(InputFrame, RefusesHeadersWhoseFieldsDoNotFitTheirPoints) {
+  const std::string fields = "VERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\n";
+  const std::string grid = "WIDTH 2\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\n";
+  const std::string values = "1 2 3 4\n1 2 3 4\n1 2 3 4\n1 2 3 4\n";
+  for (const std::string& text :
+       {fields + "SIZECOUNT 1 1 1 1\n" + grid + "DATA ascii\n" + values,
+        fields + "COUNT 1 1 1 1\n" + grid + "SIZE 8 8 8 8\nDATA ascii\n" + values,
+        fields + "COUNT 1 1 1 1\n" + grid + "DATA ascii\nSIZE 1 1 1 1\n" + values,
+        fields + "COUNT 1 1 1 1\n" + grid + "COUNT 2 2 2 2\nDATA ascii\n" + values + values}) {
+    SCOPED_TRACE(text);
+    writeBytes(path_, text);
+    expectRejected("corrupt PCD header");
+  }
+}
+
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
   std::string text =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
