@@ -76,9 +76,9 @@ void checkBodySize(const std::string& path, std::uintmax_t file_size, int data_t
   }
 }
 
-// A number of the header's SIZE, COUNT, WIDTH, HEIGHT or POINTS line: PCL reads it into an
-// int with >>, which turns an overflowing or negative value into a huge size. So one that does
-// not start with digits or exceeds INT_MAX is refused here.
+// A number of the header's SIZE, COUNT or POINTS line: PCL reads it with >> into an int or a
+// size_t, which turns an overflowing or negative value into a huge size. One that does not
+// start with digits or exceeds INT_MAX is refused here.
 std::uint64_t headerCount(const std::string& key, const std::string& word) {
   std::uint64_t value = 0;
   const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
@@ -88,79 +88,101 @@ std::uint64_t headerCount(const std::string& key, const std::string& word) {
   return value;
 }
 
-// What the header announces, as far as the size of the point buffer goes.
-struct AnnouncedSize {
-  std::size_t field_count = 0;
-  std::vector<std::uint64_t> sizes;
-  std::vector<std::uint64_t> counts;
-  std::uint64_t width = 0;
-  std::uint64_t height = 0;
-  std::uint64_t points = 0;
-};
-
-// Refuses a body that cannot hold what the header announces, once its DATA line is reached.
-void checkBody(const AnnouncedSize& header, const std::string& type, std::uint64_t body) {
-  if (header.sizes.size() != header.field_count) return;  // PCL will say what is wrong
-  std::vector<std::uint64_t> counts = header.counts;
-  counts.resize(header.field_count, 1);
-  std::uint64_t point_step = 0;
-  std::uint64_t values = 0;  // per point
-  for (std::size_t i = 0; i < header.field_count; ++i) {
-    point_step += std::min<std::uint64_t>(header.sizes[i], 8) * counts[i];
-    values += counts[i];
-  }
-  // PCL keeps a point's size in 32 bits; no real point needs a gigabyte.
-  if (point_step > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
-    fail("corrupt PCD header: SIZE x COUNT gives points of " + std::to_string(point_step) + " bytes");
-  }
-  // PCL sizes the buffer from POINTS, and checks it against WIDTH x HEIGHT: the larger counts.
-  const std::uint64_t points = std::max(header.points, header.width * header.height);
-  // ASCII needs at least two characters (digit and separator) per value; LZF packs at most
-  // about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
-  const std::uint64_t per_point_bound = type == "ascii" ? 2 * values : point_step;
-  const std::uint64_t factor = type == "binary_compressed" ? 100 : 1;
-  // Every count is below 2^31 and a header line holds at most 64 Ki fields, so the steps do
-  // not overflow; the products are compared by division first. 2^40 bytes is no frame.
-  const std::uint64_t step = std::max<std::uint64_t>({per_point_bound, point_step, 1});
-  if (points > (std::uint64_t{1} << 40) / step || points * per_point_bound > body * factor) {
-    fail("corrupt or truncated PCD file: the header announces " + std::to_string(points) + " points of " +
-         std::to_string(point_step) + " bytes, the file's " + std::to_string(body) + " bytes of data cannot hold them");
-  }
-}
-
-// PCL's readHeader allocates (and zero-fills) the whole point buffer the header announces
-// before reading a byte of data, so a corrupt WIDTH, POINTS or COUNT line can ask for
-// terabytes (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the
-// machine. This reads the header's sizes itself and refuses a body that the file cannot hold;
-// it only rejects, and leaves every other judgement of the header to PCL.
-void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  AnnouncedSize header;
-  // A header is a few hundred bytes; 64 KiB without DATA is not a header.
-  while (in.tellg() < 65536 && std::getline(in, line)) {
-    std::istringstream words(line);
+// PCL's header loop (PCDReader::readHeader, 1.13), as far as the point buffer goes: it reads
+// lines until one whose first word is no keyword, recognises a keyword by its prefix
+// ("SIZEx" is a SIZE line), parses lines after DATA too, and allocates POINTS x the point
+// size so far at every POINTS line.
+class HeaderSizes {
+ public:
+  /// Takes one line; false when PCL's loop would stop at it.
+  bool add(const std::string& line, std::streamoff end_of_line) {
+    std::istringstream stream(line);
     std::string key;
-    words >> key;
-    std::string word;
-    if (key == "FIELDS") {
-      while (words >> word) ++header.field_count;
-    } else if (key == "SIZE") {
-      while (words >> word) header.sizes.push_back(headerCount(key, word));
-    } else if (key == "COUNT") {
-      while (words >> word) header.counts.push_back(headerCount(key, word));
-    } else if (key == "WIDTH" || key == "HEIGHT" || key == "POINTS") {
-      if (!(words >> word)) continue;  // PCL will say what is wrong
-      const std::uint64_t value = headerCount(key, word);
-      (key == "WIDTH" ? header.width : key == "HEIGHT" ? header.height : header.points) = value;
-    } else if (key == "DATA") {
-      words >> word;
-      const std::streamoff header_end = in.tellg();
-      if (header_end < 0) return;
-      checkBody(header, word, file_size - static_cast<std::uint64_t>(header_end));
-      return;
+    if (!(stream >> key)) return true;  // PCL skips empty lines
+    std::vector<std::string> words;
+    for (std::string word; stream >> word;) words.push_back(word);
+    const auto is = [&key](const char* keyword) { return key.rfind(keyword, 0) == 0; };
+    if (is("#") || is("VERSION") || is("TYPE") || is("VIEWPOINT") || is("WIDTH") || is("HEIGHT")) return true;
+    if (is("FIELDS") || is("COLUMNS")) {
+      sizes_.assign(words.size(), 4);
+      counts_.assign(words.size(), 1);
+    } else if (is("SIZE") || is("COUNT")) {
+      if (words.size() != sizes_.size()) return false;  // PCL stops with an error
+      std::vector<std::uint64_t>& values = is("SIZE") ? sizes_ : counts_;
+      for (std::size_t i = 0; i < words.size(); ++i) values[i] = headerCount(key, words[i]);
+    } else if (is("POINTS")) {
+      const std::uint64_t points = words.empty() ? 0 : headerCount(key, words[0]);
+      largest_buffer_ = std::max(largest_buffer_, points * pointStep());
+    } else if (is("DATA")) {
+      data_type_ = words.empty() ? "" : words[0];
+      data_index_ = end_of_line;
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  /// Refuses a buffer that the file's body cannot fill.
+  void check(std::uint64_t file_size) const {
+    if (pointStep() > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+      fail("corrupt PCD header: SIZE x COUNT gives points of " + std::to_string(pointStep()) + " bytes");
+    }
+    const std::uint64_t body = data_index_ > 0 && static_cast<std::uint64_t>(data_index_) <= file_size
+                                   ? file_size - static_cast<std::uint64_t>(data_index_)
+                                   : file_size;
+    // An ASCII value takes at least two characters (a digit and a separator) and at most 8
+    // bytes; LZF packs at most about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
+    const std::uint64_t expansion = data_type_.rfind("binary_compressed", 0) == 0 ? 100
+                                    : data_type_.rfind("binary", 0) == 0          ? 1
+                                                                                  : 4;
+    if (largest_buffer_ > body * expansion) {
+      fail("corrupt or truncated PCD file: the header announces " + std::to_string(largest_buffer_) +
+           " bytes of points, the file's " + std::to_string(body) + " bytes of data cannot hold them");
     }
   }
+
+ private:
+  // Counts are below 2^31 and a line holds at most 64 Ki fields: no overflow.
+  std::uint64_t pointStep() const {
+    std::uint64_t step = 0;
+    for (std::size_t i = 0; i < sizes_.size(); ++i) step += sizes_[i] * counts_[i];
+    return step;
+  }
+
+  std::vector<std::uint64_t> sizes_;
+  std::vector<std::uint64_t> counts_;
+  std::uint64_t largest_buffer_ = 0;
+  std::string data_type_;
+  std::streamoff data_index_ = 0;
+};
+
+// PCL's readHeader allocates (and zero-fills) the point buffer the header announces before
+// reading a byte of data, so a corrupt POINTS, SIZE or COUNT line can ask for terabytes
+// (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the machine. This
+// follows PCL's header loop and refuses a buffer that the file cannot fill; it only rejects,
+// and leaves every other judgement of the header to PCL.
+void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
+  // A header is a few hundred bytes: the first 64 KiB hold it, or the file is refused.
+  constexpr std::size_t kHeaderLimit = 65536;
+  std::string start(static_cast<std::size_t>(std::min<std::uintmax_t>(file_size, kHeaderLimit)), '\0');
+  std::ifstream in(path, std::ios::binary);
+  in.read(start.data(), static_cast<std::streamsize>(start.size()));
+  start.resize(static_cast<std::size_t>(in.gcount()));
+  HeaderSizes header;
+  std::size_t line_start = 0;
+  bool header_ended = false;
+  while (line_start < start.size()) {
+    std::size_t line_end = start.find('\n', line_start);
+    if (line_end == std::string::npos && start.size() < file_size) break;  // the line goes on past the limit
+    line_end = line_end == std::string::npos ? start.size() : line_end + 1;
+    if (!header.add(start.substr(line_start, line_end - line_start), static_cast<std::streamoff>(line_end))) {
+      header_ended = true;
+      break;
+    }
+    line_start = line_end;
+  }
+  if (!header_ended && start.size() < file_size) fail("corrupt PCD header: more than 64 KiB of header lines");
+  header.check(file_size);
 }
 
 // PCL parses the header line by line, each line overriding what an earlier one said (and

@@ -9,12 +9,16 @@
 #include <pcl/io/pcd_io.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/depth_png.h"
 #include "temp_path.h"
@@ -257,6 +261,40 @@ TEST_F(InputFrame, RefusesHeadersWhoseFieldsDoNotFitTheirPoints) {
     writeBytes(path_, text);
     expectRejected("corrupt PCD header");
   }
+}
+
+// PCL goes on parsing header lines after DATA, and takes "POINTSx" for POINTS: a POINTS line
+// there allocated its buffer (24 GB here) before anything was read.
+TEST_F(InputFrame, RefusesABufferAnnouncedAfterTheDataLine) {
+  const std::string header =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n";
+  const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"POINTS 2000000000\n", "bytes of points"},
+      {"POINTSX 2000000000\n", "bytes of points"},
+      {"# comment\nPOINTS 2000000000\n", "bytes of points"},
+      {"COUNTX 100000000 1 1\nPOINTS 4\n", "bytes of points"},
+      {"COUNT -100 1 1\n", "is not a count"}};
+  for (const auto& [line, reason] : cases) {
+    SCOPED_TRACE(line);
+    writeBytes(path_, header + line + points);
+    expectRejected(reason);
+  }
+}
+
+// A binary body is read as lines until one is no keyword; a first data byte of '#' makes PCL
+// take the data up to the next newline for a comment. Such a file still loads.
+TEST_F(InputFrame, ReadsABinaryBodyThatStartsLikeAComment) {
+  pcl::PointCloud<pcl::PointXYZ> cloud = smallGrid();
+  float x = 0.0f;
+  const std::uint32_t bits = 0x3F800023;  // 1.0000042f: its first byte in the file is '#'
+  std::memcpy(&x, &bits, sizeof(x));
+  cloud[0].x = x;
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path_.string(), cloud), 0);
+  const auto frame = loadInputFrame(path_.string());
+  EXPECT_EQ(frame.xyz[0].x, x);
+  EXPECT_EQ(frame.xyz[5].z, cloud[5].z);
 }
 
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
