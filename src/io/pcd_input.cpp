@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -83,9 +84,23 @@ std::uint64_t headerCount(const std::string& key, const std::string& word) {
   std::uint64_t value = 0;
   const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
   if (error != std::errc() || value > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
-    fail("corrupt PCD header: " + key + " value '" + word.substr(0, 24) + "' is not a count");
+    std::string shown = word.substr(0, 24);
+    for (char& c : shown) c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    fail("corrupt PCD header: " + key + " value '" + shown + "' is not a count");
   }
   return value;
+}
+
+// The words of a header line as PCL splits them: at spaces, tabs and carriage returns.
+std::vector<std::string> headerWords(const std::string& line) {
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  while (start < line.size()) {
+    const std::size_t end = std::min(line.find_first_of(" \t\r\n", start), line.size());
+    if (end > start) words.push_back(line.substr(start, end - start));
+    start = end + 1;
+  }
+  return words;
 }
 
 // PCL's header loop (PCDReader::readHeader, 1.13), as far as the point buffer goes: it reads
@@ -94,30 +109,43 @@ std::uint64_t headerCount(const std::string& key, const std::string& word) {
 // size so far at every POINTS line.
 class HeaderSizes {
  public:
-  /// Takes one line; false when PCL's loop would stop at it.
+  /// Takes one line; false when PCL's loop would stop at it. Where this could read a line
+  /// otherwise than PCL (control characters, which PCL's word splitting and its >> treat
+  /// differently; a SIZE or COUNT line that does not give one value per field), the file is
+  /// refused: no valid header has them.
   bool add(const std::string& line, std::streamoff end_of_line) {
-    std::istringstream stream(line);
-    std::string key;
-    if (!(stream >> key)) return true;  // PCL skips empty lines
-    std::vector<std::string> words;
-    for (std::string word; stream >> word;) words.push_back(word);
+    if (line.empty() || line == "\n") return true;  // PCL skips empty lines
+    std::vector<std::string> words = headerWords(line);
+    if (words.empty()) return false;  // blanks only: no keyword, PCL stops
+    const std::string key = words.front();
+    words.erase(words.begin());
     const auto is = [&key](const char* keyword) { return key.rfind(keyword, 0) == 0; };
-    if (is("#") || is("VERSION") || is("TYPE") || is("VIEWPOINT") || is("WIDTH") || is("HEIGHT")) return true;
+    if (is("#")) return true;
+    const bool keyword = is("VERSION") || is("TYPE") || is("VIEWPOINT") || is("WIDTH") || is("HEIGHT") ||
+                         is("FIELDS") || is("COLUMNS") || is("SIZE") || is("COUNT") || is("POINTS") || is("DATA");
+    if (!keyword) return false;
+    if (std::any_of(line.begin(), line.end(), [](char c) {
+          const auto byte = static_cast<unsigned char>(c);
+          return byte < 0x20 && c != '\t' && c != '\r' && c != '\n';
+        })) {
+      fail("corrupt PCD header: control characters in a header line");
+    }
     if (is("FIELDS") || is("COLUMNS")) {
       sizes_.assign(words.size(), 4);
       counts_.assign(words.size(), 1);
     } else if (is("SIZE") || is("COUNT")) {
-      if (words.size() != sizes_.size()) return false;  // PCL stops with an error
+      if (words.size() != sizes_.size()) {
+        fail(std::string("corrupt PCD header: ") + (is("SIZE") ? "SIZE" : "COUNT") + " gives " +
+             std::to_string(words.size()) + " values for " + std::to_string(sizes_.size()) + " fields");
+      }
       std::vector<std::uint64_t>& values = is("SIZE") ? sizes_ : counts_;
-      for (std::size_t i = 0; i < words.size(); ++i) values[i] = headerCount(key, words[i]);
+      for (std::size_t i = 0; i < words.size(); ++i) values[i] = headerCount(is("SIZE") ? "SIZE" : "COUNT", words[i]);
     } else if (is("POINTS")) {
-      const std::uint64_t points = words.empty() ? 0 : headerCount(key, words[0]);
+      const std::uint64_t points = words.empty() ? 0 : headerCount("POINTS", words[0]);
       largest_buffer_ = std::max(largest_buffer_, points * pointStep());
     } else if (is("DATA")) {
       data_type_ = words.empty() ? "" : words[0];
       data_index_ = end_of_line;
-    } else {
-      return false;
     }
     return true;
   }

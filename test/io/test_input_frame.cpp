@@ -220,7 +220,7 @@ TEST_F(InputFrame, RejectsADataLineOfOneWord) {
   for (const std::string& data_line : {std::string("DATAascii\n"), std::string("DATA\x8b\0\0compressed\n", 17)}) {
     SCOPED_TRACE(data_line);
     writeBytes(path_, header + data_line + points);
-    expectRejected("PCD file");
+    expectRejected("PCD");
   }
 }
 
@@ -281,6 +281,23 @@ TEST_F(InputFrame, RefusesABufferAnnouncedAfterTheDataLine) {
     writeBytes(path_, header + line + points);
     expectRejected(reason);
   }
+}
+
+// PCL counts a line's values at spaces, tabs and carriage returns but reads them with >>,
+// which also stops at a vertical tab; the fuzzer used the difference to make PCL allocate
+// 12 GB behind the size check's back. Such lines are refused.
+TEST_F(InputFrame, RefusesHeaderLinesWithControlCharacters) {
+  const std::string rest =
+      "TYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 6\nDATA ascii\n"
+      "1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  for (const std::string& size_line :
+       {std::string("SIZE 4 4\v4\n"), std::string("SIZE 4 4 4\x02\n"), std::string("SIZE\x01 4 4 4\n", 13)}) {
+    SCOPED_TRACE(size_line);
+    writeBytes(path_, "VERSION 0.7\nFIELDS x y z\n" + size_line + rest);
+    expectRejected("control characters");
+  }
+  writeBytes(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\n" + rest);
+  expectRejected("SIZE gives 2 values for 3 fields");
 }
 
 // A binary body is read as lines until one is no keyword; a first data byte of '#' makes PCL
