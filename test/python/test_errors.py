@@ -147,8 +147,10 @@ def test_a_missing_file_is_file_not_found(tmp_path):
      b"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 8\nDATA binary\n" + b"\0" * 40, "truncated"),
     (b"VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 1\n"
      b"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n", "unorganized"),
+    (b"VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 10000\nHEIGHT 10000\n"
+     b"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 100000000\nDATA binary_compressed\n" + b"\0" * 64, "announces"),
     (b"VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 100000\nHEIGHT 100000\n"
-     b"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 10000000000\nDATA binary_compressed\n" + b"\0" * 64, "announces"),
+     b"VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 10000000000\nDATA binary_compressed\n" + b"\0" * 64, "is not a count"),
 ])
 def test_a_broken_pcd_file_is_an_os_error_naming_it(tmp_path, content, message):
     path = tmp_path / "broken.pcd"
