@@ -5,7 +5,7 @@ check that every output is pcd_segment's, byte for byte. Each worker reads, segm
 writes its files; the figure is frames per second of the whole call (reading, segmenting,
 writing, scheduling).
 
-    /usr/bin/python3 bench/dask_throughput.py [--build build] [--frames 200] [--rounds 3] [pcd files...]
+    /usr/bin/python3 bench/dask_throughput.py [--build build] [--frames 200] [--rounds 3] [--batch-size 4] [pcd files...]
 """
 
 import argparse
@@ -26,6 +26,7 @@ def parse_arguments():
     parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
     parser.add_argument("--frames", type=int, default=200)
     parser.add_argument("--rounds", type=int, default=3, help="timed runs of each cluster, alternating")
+    parser.add_argument("--batch-size", type=int, default=4, help="files per task (segment_files' batch_size)")
     arguments = parser.parse_args()
     if not arguments.sources:
         arguments.sources = sorted((ROOT.parent / "shared/data/real").glob("*.pcd"))
@@ -55,7 +56,8 @@ def main():
 
     print(f"machine: {machine()}")
     print(f"dask.distributed {distributed.__version__}; {arguments.frames} frames from {len(arguments.sources)} "
-          f"files; LocalCluster(processes=True, threads_per_worker=1); {arguments.rounds} rounds each")
+          f"files; LocalCluster(processes=True, threads_per_worker=1); batch_size {arguments.batch_size}; "
+          f"{arguments.rounds} rounds each")
     with tempfile.TemporaryDirectory() as work:
         work = pathlib.Path(work)
         (work / "in").mkdir()
@@ -75,7 +77,8 @@ def main():
                 for n, client in clients.items():
                     out = work / f"out_{n}_{round}"
                     start = time.perf_counter()
-                    results = floodplane.distributed.segment_files(client, frames, out)
+                    results = floodplane.distributed.segment_files(client, frames, out,
+                                                                   batch_size=arguments.batch_size)
                     elapsed = time.perf_counter() - start
                     failed = [r for r in results if "error" in r]
                     if failed:

@@ -19,6 +19,22 @@ from . import Segmenter
 
 __all__ = ["output_path", "segment_files"]
 
+
+def _gather(client, futures, batches):
+    """The summaries of every batch: all in one transfer, or batch by batch when some failed
+    as a whole (a worker lost, a task cancelled), each of its files then with the error."""
+    try:
+        return client.gather(futures)
+    except Exception:  # which batches failed is found out one by one
+        pass
+    gathered = []
+    for future, batch in zip(futures, batches):
+        try:
+            gathered.append(future.result())
+        except Exception as error:  # this batch's files failed
+            gathered.append([{"error": f"{type(error).__name__}: {error}"} for _ in batch])
+    return gathered
+
 _thread_state = threading.local()
 
 
@@ -54,17 +70,26 @@ def _segment_one(input, output, params, intrinsics, depth_scale):
     return {"input": input, "output": output, "planes": summary["planes"], "ms": summary["ms"]}
 
 
-def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0, **params):
+def _segment_batch(inputs, outputs, params, intrinsics, depth_scale):
+    """Runs on a worker: a few files, one summary each."""
+    return [_segment_one(input, output, params, intrinsics, depth_scale) for input, output in zip(inputs, outputs)]
+
+
+def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0, batch_size=4, **params):
     """Segments every file of `paths` (PCD files, or 16-bit depth PNGs with
     intrinsics=(fx, fy, cx, cy) and depth_scale units per metre) on the workers of `client`,
-    a dask.distributed.Client, writing out_dir/<name>.labels.pcd for each.
+    a dask.distributed.Client, writing out_dir/<name>.labels.pcd for each. Each task takes
+    `batch_size` files, which keeps the scheduler's share of the work small.
 
     Returns one dict per input, in the order of `paths`: {'input', 'output', 'planes', 'ms'}
     ('ms': the segmentation call on the worker), or {'input', 'error'} for a file that failed
-    (missing, broken, an output that cannot be written, two inputs of one name); the other
-    files go on. Bad parameters raise TypeError or ValueError here, before any work is sent.
+    (missing, broken, an output that cannot be written, two inputs of one name, a worker
+    lost); the other files go on. Bad parameters raise TypeError or ValueError here, before
+    any work is sent.
     """
     Segmenter(**params)  # checks the parameters in the caller's process
+    if isinstance(batch_size, bool) or not isinstance(batch_size, int) or batch_size < 1:
+        raise ValueError(f"segment_files: batch_size must be an integer >= 1, got {batch_size!r}")
     if intrinsics is not None:
         intrinsics = tuple(float(value) for value in intrinsics)
         if len(intrinsics) != 4:
@@ -89,20 +114,18 @@ def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0
         first_of_output[output] = given[position]
         tasks.append((position, input, output))
 
+    batches = [tasks[start:start + batch_size] for start in range(0, len(tasks), batch_size)]
     futures = client.map(
-        _segment_one,
-        [input for _, input, _ in tasks],
-        [output for _, _, output in tasks],
+        _segment_batch,
+        [[input for _, input, _ in batch] for batch in batches],
+        [[output for _, _, output in batch] for batch in batches],
         params=params,
         intrinsics=intrinsics,
         depth_scale=float(depth_scale),
         pure=False,
     )
-    for (position, input, _), future in zip(tasks, futures):
-        try:
-            summary = future.result()
-        except Exception as error:  # a worker lost, a task cancelled: this file failed
-            summary = {"error": f"{type(error).__name__}: {error}"}
-        summary["input"] = given[position]  # as the caller named it
-        results[position] = summary
+    for batch, summaries in zip(batches, _gather(client, futures, batches)):
+        for (position, _, _), summary in zip(batch, summaries):
+            summary["input"] = given[position]  # as the caller named it
+            results[position] = summary
     return results

@@ -39,7 +39,7 @@ def _frames(folder, count):
 def test_workers_write_what_segment_file_writes_in_input_order(tmp_path, client):
     inputs = _frames(tmp_path, 6)
     out = tmp_path / "out"
-    results = floodplane.distributed.segment_files(client, [str(p) for p in reversed(inputs)], out)
+    results = floodplane.distributed.segment_files(client, [str(p) for p in reversed(inputs)], out, batch_size=1)
     assert [r["input"] for r in results] == [str(p) for p in reversed(inputs)]
     local = floodplane.Segmenter()
     for result in results:
@@ -107,7 +107,34 @@ def test_bad_parameters_are_refused_before_any_work(tmp_path, client):
         floodplane.distributed.segment_files(client, paths, tmp_path / "out", treshold=0.01)
     with pytest.raises(ValueError, match="intrinsics"):
         floodplane.distributed.segment_files(client, paths, tmp_path / "out", intrinsics=(1.0, 2.0))
+    for batch_size in (0, -1, 2.5, True, "4"):
+        with pytest.raises(ValueError, match="batch_size must be an integer >= 1"):
+            floodplane.distributed.segment_files(client, paths, tmp_path / "out", batch_size=batch_size)
     assert not (tmp_path / "out").exists()
+
+
+def test_batches_of_any_size_give_the_same_outputs(tmp_path, client):
+    inputs = _frames(tmp_path, 5)
+    outputs = {}
+    for batch_size in (1, 2, 5, 100):
+        results = floodplane.distributed.segment_files(client, inputs, tmp_path / f"out_{batch_size}",
+                                                       batch_size=batch_size)
+        assert [r["input"] for r in results] == [str(p) for p in inputs]
+        outputs[batch_size] = [open(r["output"], "rb").read() for r in results]
+    assert outputs[1] == outputs[2] == outputs[5] == outputs[100]
+
+
+def _divide_by_zero():
+    return 1 / 0
+
+
+def test_a_batch_lost_as_a_whole_gives_each_of_its_files_the_error(client):
+    good = client.submit(lambda: [{"planes": 1}], pure=False)
+    lost = client.submit(_divide_by_zero, pure=False)
+    gathered = floodplane.distributed._gather(client, [good, lost], [["a"], ["b", "c"]])
+    assert gathered[0] == [{"planes": 1}]
+    assert len(gathered[1]) == 2
+    assert all(summary["error"].startswith("ZeroDivisionError") for summary in gathered[1])
 
 
 def test_an_empty_list_gives_an_empty_list(tmp_path, client):
