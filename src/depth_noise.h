@@ -24,6 +24,9 @@ struct DepthNoise {
     return noise;
   }
 
+  /// Whether the model describes exact data (float round-off at most).
+  bool negligible() const { return constant < 1e-7 && quadratic < 1e-7; }
+
   template <class Real>
   Real sigma(Real range_sq) const {
     return static_cast<Real>(constant) + static_cast<Real>(quadratic) * range_sq;

@@ -30,12 +30,11 @@ constexpr double kSmallestIncidenceCosine = 0.25;
 // the patches on edges and curves (often a third of a cluttered frame), high enough to be
 // stable with a few dozen patches.
 constexpr double kResidualQuantile = 0.25;
-// A bin is quantized when at least this share of its patches lie on a lattice (see
-// latticeStep; patches with one or two distinct depths cannot tell, and on a Kinect at a few
-// metres they are half of all).
-constexpr double kQuantizedShare = 0.3;
-// How closely a gap must be a whole number of steps.
-constexpr float kLatticeTolerance = 0.03f;
+// Residuals below this share of the range are float round-off.
+constexpr float kRoundOff = 1e-6f;
+// A bin is quantized when its depths take at most this share of the distinct depths of its
+// patches counted patch by patch (continuous depths: all of them).
+constexpr double kLatticeShare = 0.5;
 
 // The kResidualQuantile quantile of sqrt(chi^2_k / k): the factor by which that quantile of
 // the residual RMS of Gaussian noise falls short of sigma (Wilson-Hilferty approximation).
@@ -94,31 +93,35 @@ void fitQuadratic(const std::vector<Bin>& bins, std::vector<float>& scratch, dou
   b = quantile(scratch, 0.5);
 }
 
-// The step of the lattice a patch's depths lie on: the smallest gap between its distinct
-// depths when every gap is a whole number of it (within 3 %) and there are at least three
-// distinct depths (two always "agree"); 0 otherwise. Continuous noise passes this with
-// negligible chance.
-float latticeStep(float (&depths)[kPatchPoints]) {
-  std::sort(depths, depths + kPatchPoints);
-  const float resolution = 1e-6f * std::abs(depths[kPatchPoints - 1]);  // float round-off, not steps
-  float gaps[kPatchPoints];
-  int count = 0;
-  float smallest = 0.f;
-  for (int k = 1; k < kPatchPoints; ++k) {
-    const float gap = depths[k] - depths[k - 1];
-    if (!(gap > resolution)) continue;
-    gaps[count++] = gap;
-    if (smallest == 0.f || gap < smallest) smallest = gap;
-  }
-  if (count < 2) return 0.f;
-  for (int k = 0; k < count; ++k) {
-    const float multiple = gaps[k] / smallest;
-    if (std::abs(multiple - std::round(multiple)) > kLatticeTolerance * multiple) return 0.f;
-  }
-  return smallest;
-}
-
 }  // namespace
+
+double NoiseEstimator::latticeStep(std::size_t begin, std::size_t end) {
+  // Among the patches whose depths vary at all (a patch of an exactly frontal plane of exact
+  // data has one depth), those of a quantized sensor share their depths: the bin's depths
+  // take fewer values than its patches take each. Continuous depths differ from patch to
+  // patch, even where a patch repeats its own (exact data of a floor parallel to the image
+  // rows has one depth per row).
+  std::size_t varying = 0, levels = 0, scattered = 0;
+  scratch_.clear();
+  for (std::size_t i = begin; i < end; ++i) {
+    // Exact data (surfaces parallel to the image rows have one depth per row there too) fit
+    // their planes to round-off; steps leave residuals where a patch spans a level change.
+    scattered += patches_[i].sigma > kRoundOff * patches_[i].range ? 1 : 0;
+    if (patches_[i].levels < 2) continue;
+    ++varying;
+    levels += static_cast<std::size_t>(patches_[i].levels);
+    const auto first = depths_.begin() + static_cast<std::ptrdiff_t>(patches_[i].first_depth);
+    scratch_.insert(scratch_.end(), first, first + kPatchPoints);
+  }
+  if (varying < kSmallestBin / 2 || 4 * scattered < end - begin) return 0.0;
+  std::sort(scratch_.begin(), scratch_.end());
+  const std::size_t values = static_cast<std::size_t>(std::unique(scratch_.begin(), scratch_.end()) - scratch_.begin());
+  if (static_cast<double>(values) > kLatticeShare * static_cast<double>(levels)) return 0.0;
+  scratch_.clear();
+  for (std::size_t i = begin; i < end; ++i)
+    if (patches_[i].levels >= 2) scratch_.push_back(patches_[i].smallest_gap);
+  return quantile(scratch_, 0.5);
+}
 
 void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0) {
   PlaneSums sums;
@@ -142,7 +145,19 @@ void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0) {
   Patch patch;
   patch.range = static_cast<float>(range);
   patch.sigma = static_cast<float>(std::sqrt(fit.eigenvalues(0) * kPatchPoints / kPatchDegreesOfFreedom) / incidence);
-  patch.depth_gap = latticeStep(depths);
+  // The patch's distinct depths and the smallest gap between them (one step on a lattice).
+  std::sort(depths, depths + kPatchPoints);
+  patch.first_depth = static_cast<std::uint32_t>(depths_.size());
+  depths_.insert(depths_.end(), depths, depths + kPatchPoints);
+  const float resolution = 1e-6f * std::abs(depths[kPatchPoints - 1]);  // float round-off, not steps
+  patch.levels = 1;
+  patch.smallest_gap = 0.f;
+  for (int k = 1; k < kPatchPoints; ++k) {
+    const float gap = depths[k] - depths[k - 1];
+    if (!(gap > resolution)) continue;
+    ++patch.levels;
+    if (patch.smallest_gap == 0.f || gap < patch.smallest_gap) patch.smallest_gap = gap;
+  }
   patches_.push_back(patch);
 }
 
@@ -150,6 +165,7 @@ NoiseModel NoiseEstimator::estimate(const PointGrid& grid) {
   NoiseModel model;
   model.estimated = true;
   patches_.clear();
+  depths_.clear();
   if (grid.width < kPatchSide || grid.height < kPatchSide) return model;
   const double area = static_cast<double>(grid.width) * static_cast<double>(grid.height);
   const int step = std::max(kPatchSide, static_cast<int>(std::sqrt(area / kPatchesPerFrame)));
@@ -174,18 +190,13 @@ NoiseModel NoiseEstimator::estimate(const PointGrid& grid) {
     noise.value = quantile(scratch_, kResidualQuantile) / bias;
     noise_bins.push_back(noise);
 
-    // Quantized when most patches with three or more distinct depths lie on a lattice; the
-    // bin's step is their median. A step also bounds the noise from below: depths on a
-    // lattice scatter by at least a uniform step's q / sqrt(12) about the surface, which the
-    // residuals miss where all of a patch falls on one level.
-    std::size_t on_lattice = 0;
-    scratch_.clear();
-    for (std::size_t i = begin; i < end; ++i) {
-      if (patches_[i].depth_gap > 0.f) scratch_.push_back(patches_[i].depth_gap);
-      on_lattice += patches_[i].depth_gap > 0.f ? 1 : 0;
-    }
-    if (static_cast<double>(on_lattice) >= kQuantizedShare * static_cast<double>(end - begin)) {
-      const double depth_step = quantile(scratch_, 0.5);
+    // Quantized when the bin's depths repeat: continuous depths almost never do, depths on a
+    // lattice (a scanner's fixed steps, a Kinect's disparity steps) fall on a few values, one
+    // step apart. A step also bounds the noise from below: depths on a lattice scatter by at
+    // least a uniform step's q / sqrt(12) about the surface, which the residuals miss where all
+    // of a patch falls on one level.
+    const double depth_step = latticeStep(begin, end);
+    if (depth_step > 0.0) {
       step_bins.push_back({noise.range, depth_step});
       noise_bins.back().value = std::max(noise_bins.back().value, depth_step / std::sqrt(12.0));
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "floodplane/point_grid.h"
@@ -22,9 +23,9 @@ namespace floodplane {
 /// is fitted to the bins by weighted least squares (relative errors), both terms >= 0.
 ///
 /// Depth quantization: where a sensor reports depths on a lattice (a scanner's fixed steps,
-/// a Kinect's disparity steps), the depths inside a patch differ by whole steps, so the
-/// smallest gap between a patch's distinct depths is one step. A bin counts as quantized when
-/// its patches agree on that gap; the steps are fitted as q(r) = q_0 + q_2 r^2 the same way.
+/// a Kinect's disparity steps), the depths of a patch take a few values, a step apart, where
+/// continuous depths would hardly ever repeat; the smallest gap between them is a step. The
+/// steps are fitted as q(r) = q_0 + q_2 r^2 the same way as the noise.
 class NoiseEstimator {
  public:
   /// Measures the noise of `grid`. Fewer than kMinimumPatches flat patches give an estimate
@@ -35,13 +36,18 @@ class NoiseEstimator {
 
  private:
   struct Patch {
-    float range;      // of its centroid [m]
-    float sigma;      // residual along the viewing ray [m], unbiased for the degrees of freedom
-    float depth_gap;  // smallest gap between its distinct depths [m]; 0 with fewer than two
+    float range;                // of its centroid [m]
+    float sigma;                // residual along the viewing ray [m], unbiased for the degrees of freedom
+    int levels;                 // distinct depths (z) among its points
+    float smallest_gap;         // between two of them [m]; 0 with one level
+    std::uint32_t first_depth;  // its depths, sorted, in depths_
   };
+  // The step of the lattice that the depths of patches [begin, end) lie on; 0 when they do not.
+  double latticeStep(std::size_t begin, std::size_t end);
   void measurePatch(const PointGrid& grid, int x0, int y0);
 
   std::vector<Patch> patches_;
+  std::vector<float> depths_;
   std::vector<float> scratch_;
 };
 

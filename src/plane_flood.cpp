@@ -49,15 +49,14 @@ class FloodVisitor {
     const FloodCriterion& c = criterion_;
     // Eq. 3; written so that a hole (NaN) fails it.
     if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
-    const float distance = planeDistance(c.normal, c.offset, q);  // Eq. 2
-    const float tolerance = c.planeTolerance(range_sq);
-    if (!(distance < tolerance)) {
+    float distance = 0.f;                       // along q's ray
+    if (!c.fitsPlane(q, range_sq, distance)) {  // Eq. 2
       if (owner != 0) noteNeighbour(owner);
       frontier_.emplace_back(from, to);
       return false;
     }
     if (owner != 0) {
-      if (!buffer_.fitsBetter(to, distance, takeoverMargin(owner, tolerance))) {  // Eq. 4
+      if (!buffer_.fitsBetter(to, distance, takeoverMargin(owner, c.planeTolerance(range_sq)))) {  // Eq. 4
         noteNeighbour(owner);
         return false;
       }
@@ -172,13 +171,12 @@ class FloodVisitor {
     const FloodCriterion& c = criterion_;
     // Eq. 3: |p - q|^2 < (K r^2) r^2. A NaN fails it, so no lane below has a NaN range.
     Mask4 pass = p.squaredDistance(q) < c.euclideanToleranceSq(range_sq);
-    // Eq. 2.
-    const Float4 distance = q.planeDistance(c.normal, c.offset);
-    const Float4 tolerance = c.planeTolerance(range_sq);
-    pass = pass & (distance < tolerance);
+    // Eq. 2, along the rays.
+    Float4 distance;
+    pass = pass & c.fitsPlane(q, range_sq, distance);
     if (owner != 0) {
       // Eq. 4 (DistanceBuffer::fitsBetter): distance + margin < D, the margin as takeoverMargin.
-      const Float4 margin = Float4::broadcast(samePlane(owner) ? kTakeoverMargin : 0.0f) * tolerance;
+      const Float4 margin = Float4::broadcast(samePlane(owner) ? kTakeoverMargin : 0.0f) * c.planeTolerance(range_sq);
       pass = pass & (distance + margin < Float4::load(buffer_.distances().data() + first));
     }
     if (!pass.all()) return false;
@@ -243,7 +241,12 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
   segment.criterion = FloodCriterion::make(seed.normal, -seed.normal.dot(seed.point), seed.point.norm(),
                                            spacing_per_range_sq, tolerances);
 
-  buffer.claim(seed.index, label, 0.0f);
+  // A seed on a pixel another flood claimed (not from the seed scan, which takes only
+  // unclaimed pixels) takes it from that segment.
+  if (const std::int32_t owner = buffer.claim(seed.index, label, 0.0f); owner != 0) {
+    segments[owner].sums.remove(seed.point);
+    segments[owner].lost_pixels = true;
+  }
   segment.sums.add(seed.point);
   const int width = grid.width;
   const int seed_x = static_cast<int>(seed.index % static_cast<std::size_t>(width));

@@ -10,9 +10,15 @@ namespace {
 
 class Refiner {
  public:
-  Refiner(const PointGrid& full, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
+  Refiner(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
           std::vector<std::size_t>& queue)
-      : full_(full), labels_(labels.data()), planes_(planes), queue_(queue), width_(full.width), height_(full.height) {}
+      : full_(full),
+        holes_(holes),
+        labels_(labels.data()),
+        planes_(planes),
+        queue_(queue),
+        width_(full.width),
+        height_(full.height) {}
 
   // Seeds of the growth: unlabelled pixels next to a plane they fit, the best plane first.
   void seedAlongPlaneBorders(bool renumber_first) {
@@ -77,7 +83,8 @@ class Refiner {
 
   // Does pixel `to`, next to `from`, join plane k (Eqs. 1-3 with the plane's thresholds)?
   bool fits(std::uint32_t k, std::size_t from, std::size_t to, float& distance) const {
-    return planes_[k].criterion.accepts(Vec3::load(full_.point(from)), Vec3::load(full_.point(to)), distance);
+    return !holes_.isFilled(to) &&
+           planes_[k].criterion.accepts(Vec3::load(full_.point(from)), Vec3::load(full_.point(to)), distance);
   }
 
   void take(std::uint32_t k, std::size_t pixel) {
@@ -89,6 +96,7 @@ class Refiner {
   }
 
   const PointGrid& full_;
+  const HoleFilling& holes_;
   std::uint32_t* labels_;
   PlaneCandidates& planes_;
   std::vector<std::size_t>& queue_;
@@ -98,8 +106,8 @@ class Refiner {
 
 }  // namespace
 
-void refinePlanes(const PointGrid& full, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
-                  bool renumber_first, std::vector<std::size_t>& queue) {
+void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
+                  PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue) {
   if (planes.list().empty()) {
     if (renumber_first) {
       planes.forgetFirstPixels();
@@ -107,7 +115,7 @@ void refinePlanes(const PointGrid& full, std::vector<std::uint32_t>& labels, Pla
     }
     return;
   }
-  Refiner refiner(full, labels, planes, queue);
+  Refiner refiner(full, holes, labels, planes, queue);
   refiner.seedAlongPlaneBorders(renumber_first);
   refiner.grow();
 }

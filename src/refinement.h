@@ -5,7 +5,8 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
-#include "region_output.h"
+#include "hole_filling.h"
+#include "plane_candidates.h"
 
 namespace floodplane {
 
@@ -18,7 +19,8 @@ namespace floodplane {
 /// With `renumber_first`, the labels are first renumbered by `planes.remap()` in the same pass,
 /// one row ahead of the scan (which reads the rows above and below the pixel it looks at).
 /// `queue` is scratch space.
-void refinePlanes(const PointGrid& full, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
-                  bool renumber_first, std::vector<std::size_t>& queue);
+/// Pixels `holes` filled in are never labelled.
+void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
+                  PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue);
 
 }  // namespace floodplane

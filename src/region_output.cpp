@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "refinement.h"
@@ -12,65 +13,17 @@ namespace floodplane {
 
 namespace {
 
-// A plane's thresholds for pixels that join it after merging. The Euclidean tolerance
-// follows from the plane itself: neighbouring pixels on n.P + d = 0 are alpha r^2 / |d| apart
-// (see FloodCriterion); |d| is bounded below where the plane is seen almost edge-on.
-FloodCriterion planeCriterion(const PlaneFit& fit, const Tolerances& tolerances, float angular_pitch) {
-  const double range = fit.centroid.norm();
-  const double distance = std::max(std::abs(fit.offset), 0.1 * range);
-  const double spacing_per_range_sq = angular_pitch / std::max(distance, 1e-6);
-  const Vec3 normal{static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
-                    static_cast<float>(fit.normal.z())};
-  return FloodCriterion::make(normal, static_cast<float>(fit.offset), range, spacing_per_range_sq, tolerances);
-}
+// About this many pixels of a plane take part in its planarity test (see samplePlanarity).
+constexpr double kPlanaritySamples = 4000.0;
 
 }  // namespace
 
-bool acceptablePlane(const PlaneFit& fit, const Params& params) {
-  return fit.valid && fit.curvature <= params.maximum_curvature && facesSensor(fit.normal, fit.centroid);
-}
-
-// ---- PlaneCandidates -------------------------------------------------------------------
-
-bool PlaneCandidates::sortBySize(std::uint32_t min_inliers, const Params* recheck) {
-  order_.resize(candidates_.size());
-  std::iota(order_.begin(), order_.end(), 0);
-  std::stable_sort(order_.begin(), order_.end(),
-                   [&](std::size_t a, std::size_t b) { return candidates_[a].sums.count > candidates_[b].sums.count; });
-  remap_.assign(candidates_.size() + 1, 0);
-  kept_.clear();
-  bool changed = false;
-  for (std::size_t rank = 0; rank < order_.size(); ++rank) {
-    const PlaneCandidate& candidate = candidates_[order_[rank]];
-    if (candidate.sums.count < min_inliers || (recheck && !acceptablePlane(candidate.sums.fit(), *recheck))) {
-      changed = true;
-      continue;
-    }
-    kept_.push_back(candidate);
-    remap_[order_[rank] + 1] = static_cast<std::uint32_t>(kept_.size());
-    changed = changed || order_[rank] != rank;
-  }
-  candidates_.swap(kept_);
-  return changed;
-}
-
-void PlaneCandidates::forgetFirstPixels() {
-  for (PlaneCandidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
-}
-
-void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end) {
-  for (std::size_t i = begin; i < end; ++i) {
-    const std::uint32_t k = remap_[labels[i]];
-    labels[i] = k;
-    if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
-  }
-}
-
 // ---- RegionBuilder ---------------------------------------------------------------------
 
-void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int subsampling,
-                          const MergedSegments& merged, const Params& params, const Tolerances& tolerances,
-                          float angular_pitch, bool refine, Segmentation& out) {
+void RegionBuilder::build(const PointGrid& measured, const PointGrid& full, const PointGrid& segmented,
+                          const HoleFilling& holes, int subsampling, const MergedSegments& merged, const Params& params,
+                          const Tolerances& tolerances, float angular_pitch, bool refine, Segmentation& out) {
+  holes_ = &holes;
   const std::uint32_t min_inliers = tolerances.minInliers();
   selectCandidates(subsampling, merged, params, tolerances, angular_pitch);
   out.width = full.width;
@@ -81,8 +34,10 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
   // rarely (an outlier far along a ray), make its fit degenerate. The last sort of the
   // candidates checks them again, so that what is reported passes. (With s = 1 and no
   // refinement the labels add no pixel to the clusters, and there is nothing to check again.)
+  // Filled-in holes (HoleFilling) leave the clusters when their pixels are labelled, so their
+  // counts are known only afterwards.
   bool renumbered = false;  // labels still to be renumbered by remap()
-  if (subsampling == 1) {
+  if (subsampling == 1 && !holes.filled()) {
     // Counts are known: number the planes by size before writing any label.
     candidates_.sortBySize(min_inliers, nullptr);
     for (std::size_t s = 1; s < merged.segment_count; ++s)
@@ -93,7 +48,7 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
     renumbered = candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
   }
   if (refine) {
-    refinePlanes(full, out.labels, candidates_, renumbered, queue_);  // renumbers on its way
+    refinePlanes(full, holes, out.labels, candidates_, renumbered, queue_);  // renumbers on its way
     // Refinement may also have changed the order by size.
     renumbered = candidates_.sortBySize(0, &params);
   }
@@ -101,6 +56,18 @@ void RegionBuilder::build(const PointGrid& full, const PointGrid& segmented, int
     candidates_.forgetFirstPixels();
     candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
   }
+  if (occlusion_merging_.run(full, out.labels, candidates_, MergeCriterion(params, tolerances), tolerances,
+                             angular_pitch)) {
+    candidates_.forgetFirstPixels();
+    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
+  }
+  if (dropCurvedPlanes(full, out.labels, tolerances)) {
+    candidates_.forgetFirstPixels();
+    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
+  }
+  // A plane's centroid, covariance and fit are those of its inliers as the caller measured
+  // them, not as they were smoothed for segmenting.
+  if (measured.data != full.data) sumMeasuredPoints(measured, out.labels);
 
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
@@ -139,7 +106,12 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
   if (subsampling == 1) {
     const std::uint32_t* table = candidate_of_segment_.data();
     for (std::size_t i = 0; i < full.size(); ++i) {
-      const std::uint32_t k = table[merged.labels[i]];
+      std::uint32_t k = table[merged.labels[i]];
+      if (k != 0 && holes_->isFilled(i)) {
+        // A filled-in hole: it helped the flood across, but it was never measured.
+        candidates_[k].sums.remove(Vec3::load(segmented.point(i)));
+        k = 0;
+      }
       labels[i] = k;
       if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = i;
     }
@@ -156,6 +128,10 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
     for (int v = gy * subsampling; v < v_end; ++v) {
       const std::size_t row_start = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
       labelRowFromCells(full, row_start, subsampling, labels.data() + row_start);
+      if (holes_->filled()) {  // filled-in holes are never labelled
+        for (std::size_t u = 0; u < static_cast<std::size_t>(full.width); ++u)
+          if (holes_->isFilled(row_start + u)) labels[row_start + u] = 0;
+      }
       // The sums in a second pass over the row, so that the labelling loops stay short.
       addRowToSums(full, row_start, labels.data() + row_start);
     }
@@ -220,37 +196,99 @@ void RegionBuilder::labelRun(const PointGrid& full, std::size_t row_start, int u
       const Float4 range_sq = Float4::min(Float4::load(sample_range_sq + u), q.squaredNorm());
       // A NaN range (a hole) gives a NaN tolerance here where the scalar code has sigma_plane,
       // but the hole's own distance is NaN and fails either.
-      (q.planeDistance(c.normal, c.offset) < c.planeTolerance(range_sq)).storeLabels(out_row + u, k);
+      Float4 distance;
+      c.fitsPlane(q, range_sq, distance).storeLabels(out_row + u, k);
     }
   }
 #endif
   for (; u < u_end; ++u) {
     const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-    const float tolerance = c.planeTolerance(nearerRangeSq(sample_range_sq[u], q.squaredNorm()));
-    out_row[u] = planeDistance(c.normal, c.offset, q) < tolerance ? k : 0u;
+    float distance = 0.f;
+    out_row[u] = c.fitsPlane(q, nearerRangeSq(sample_range_sq[u], q.squaredNorm()), distance) ? k : 0u;
   }
 }
 
 void RegionBuilder::labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::size_t gx,
                                    std::uint32_t* out_row) const {
   const Cell& cell = cells_[gx];
-  // Every plane has the same tolerance at a given range.
-  const FloodCriterion& any = candidates_.list().front().criterion;
   for (int u = u_begin; u < u_end; ++u) {
     const Vec3 q = Vec3::load(full.point(row_start + static_cast<std::size_t>(u)));
-    float best_distance = any.planeTolerance(nearerRangeSq(cell.sample_range_sq, q.squaredNorm()));
+    const float range_sq = nearerRangeSq(cell.sample_range_sq, q.squaredNorm());
+    float best_distance = std::numeric_limits<float>::infinity();
     std::uint32_t best = 0;
     for (const std::uint32_t k : cell.around) {
       if (k == 0 || k == best) continue;
-      const FloodCriterion& c = candidates_.list()[k - 1].criterion;
-      const float distance = planeDistance(c.normal, c.offset, q);
-      if (distance < best_distance) {
+      float distance = 0.f;  // along q's ray: the plane that explains q with the smaller depth error
+      if (candidates_.list()[k - 1].criterion.fitsPlane(q, range_sq, distance) && distance < best_distance) {
         best_distance = distance;
         best = k;
       }
     }
     out_row[u] = best;
   }
+}
+
+void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels) {
+  for (PlaneCandidate& candidate : candidates_.list()) candidate.sums = PlaneSums();
+  const std::size_t width = static_cast<std::size_t>(measured.width);
+  for (std::size_t row = 0; row < labels.size(); row += width) {
+    int u = 0;
+    while (u < measured.width) {
+      const std::uint32_t k = labels[row + static_cast<std::size_t>(u)];
+      const int end = findInRow(labels.data() + row, u, measured.width - 1, k, false);
+      if (k != 0)
+        addRunToSums(candidates_[k].sums, measured, row + static_cast<std::size_t>(u),
+                     static_cast<std::size_t>(end - u));
+      u = end;
+    }
+  }
+}
+
+void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels,
+                                    PlanarityTest& test) {
+  // Interior pixels only (no neighbour in another plane or none): the pixels along a plane's
+  // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
+  // A neighbour without a return does not make a border: on a speckled surface there would be
+  // no inside.
+  //
+  // A large plane is sampled on a lattice (every s-th pixel of every s-th row) of about
+  // kPlanaritySamples pixels: its test is then still sensitive to a bend a tenth of the noise
+  // deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
+  const std::vector<PlaneCandidate>& list = candidates_.list();
+  strides_.assign(list.size() + 1, 1);
+  for (std::size_t k = 1; k <= list.size(); ++k) {
+    const double s = std::floor(std::sqrt(list[k - 1].sums.count / kPlanaritySamples));
+    strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
+  }
+  const std::size_t width = static_cast<std::size_t>(full.width);
+  const auto inside = [&](std::size_t j, std::uint32_t k) {
+    return labels[j] == k || !full.isFinite(j) || holes_->isFilled(j);
+  };
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(full.height); ++y) {
+    const std::size_t row = y * width;
+    for (std::size_t x = 1; x + 1 < width; ++x) {
+      const std::size_t i = row + x;
+      const std::uint32_t k = labels[i];
+      if (k == 0) continue;
+      const std::uint32_t s = strides_[k];
+      if (s > 1 && (x % s != 0 || y % s != 0)) continue;
+      if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+        test.add(k, Vec3::load(full.point(i)));
+    }
+  }
+}
+
+bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels,
+                                     const Tolerances& tolerances) {
+  const std::vector<PlaneCandidate>& list = candidates_.list();
+  if (list.empty()) return false;
+  fits_.clear();
+  for (const PlaneCandidate& candidate : list) fits_.push_back(candidate.sums.fit());
+  planarity_.reset(fits_);
+  samplePlanarity(full, labels, planarity_);
+  curved_.assign(list.size() + 1, false);
+  for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
+  return candidates_.drop(curved_);
 }
 
 void RegionBuilder::addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row) {

@@ -11,6 +11,10 @@
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
+#include "hole_filling.h"
+#include "occlusion_merging.h"
+#include "plane_candidates.h"
+#include "planarity.h"
 #include "plane_sums.h"
 
 namespace floodplane {
@@ -22,46 +26,6 @@ struct MergedSegments {
   const PlaneSums* sums = nullptr;       ///< per root segment: the sums of its whole cluster
   std::size_t segment_count = 0;         ///< labels are < segment_count
 };
-
-/// "No pixel yet" for PlaneCandidate::first_pixel.
-constexpr std::size_t kNoPixel = std::numeric_limits<std::size_t>::max();
-
-/// A plane on its way to the output: its full-resolution inliers and its membership test.
-struct PlaneCandidate {
-  PlaneSums sums;            ///< of its full-resolution inliers
-  FloodCriterion criterion;  ///< its plane and thresholds, for labelling and refinement
-  std::size_t first_pixel = kNoPixel;
-};
-
-/// The candidate planes and their numbers in the label image (1..K, 0: no plane). Planes are
-/// numbered by size, largest first; renumbering maps old numbers to new through remap().
-class PlaneCandidates {
- public:
-  std::vector<PlaneCandidate>& list() { return candidates_; }
-  const std::vector<PlaneCandidate>& list() const { return candidates_; }
-  PlaneCandidate& operator[](std::uint32_t label) { return candidates_[label - 1]; }
-
-  /// Drops candidates under `min_inliers` and, when `recheck` is given, those whose inliers
-  /// no longer make an acceptable plane under its parameters; orders the rest by size.
-  /// Returns whether any number changed (the label image then needs renumberPixels).
-  bool sortBySize(std::uint32_t min_inliers, const Params* recheck);
-  /// The new number of old number k, after sortBySize (0: dropped).
-  std::uint32_t remap(std::uint32_t k) const { return remap_[k]; }
-  /// Forgets every plane's first pixel, before a full renumbering.
-  void forgetFirstPixels();
-  /// Applies remap() to labels [begin, end) and notes first pixels (those before `begin`
-  /// already noted).
-  void renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end);
-
- private:
-  std::vector<PlaneCandidate> candidates_;
-  std::vector<PlaneCandidate> kept_;
-  std::vector<std::uint32_t> remap_;
-  std::vector<std::size_t> order_;
-};
-
-/// What a reported plane must be: a valid fit, no more curved than allowed, facing the sensor.
-bool acceptablePlane(const PlaneFit& fit, const Params& params);
 
 /// The last stage: from merged segments to the planes a user gets.
 /// - Each cluster becomes a plane if it is flat enough (maximum curvature) and large enough
@@ -76,8 +40,11 @@ class RegionBuilder {
  public:
   /// `full` is the input grid, `segmented` the grid that was segmented (the same when s = 1),
   /// `angular_pitch` that of `full`.
-  void build(const PointGrid& full, const PointGrid& segmented, int subsampling, const MergedSegments& merged,
-             const Params& params, const Tolerances& tolerances, float angular_pitch, bool refine, Segmentation& out);
+  /// `measured` is the caller's grid; `full` the same frame as segmented (holes filled in,
+  /// smoothed), `segmented` that grid sub-sampled when s > 1.
+  void build(const PointGrid& measured, const PointGrid& full, const PointGrid& segmented, const HoleFilling& holes,
+             int subsampling, const MergedSegments& merged, const Params& params, const Tolerances& tolerances,
+             float angular_pitch, bool refine, Segmentation& out);
 
  private:
   // One candidate per flat cluster; candidate_of_segment_ maps every segment to its cluster's.
@@ -97,6 +64,14 @@ class RegionBuilder {
   // best-fitting one within the tolerance, else 0.
   void labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::size_t gx,
                       std::uint32_t* out_row) const;
+  // Beyond the paper: the planarity test (planarity.h) on the final planes; drops the curved
+  // ones (a cylinder's, a ball's or a person's facets). Returns whether any was dropped (the
+  // labels then need renumbering by remap()).
+  bool dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels, const Tolerances& tolerances);
+  // Adds the interior pixels of the planes to `test`.
+  void samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlanarityTest& test);
+  // The planes' sums anew from the measured points of their pixels.
+  void sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels);
   // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
   // each plane's first pixel.
   void addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row);
@@ -114,6 +89,12 @@ class RegionBuilder {
   PlaneCandidates candidates_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k]
   std::vector<std::size_t> queue_;                   // the refinement's
+  const HoleFilling* holes_ = nullptr;
+  PlanarityTest planarity_;
+  std::vector<PlaneFit> fits_;
+  std::vector<bool> curved_;
+  std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
+  OcclusionMerging occlusion_merging_;
 };
 
 }  // namespace floodplane

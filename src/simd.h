@@ -40,6 +40,7 @@ struct Mask4 {
 
   bool all() const { return _mm_movemask_ps(bits) == 0xf; }
   Mask4 operator&(Mask4 o) const { return {_mm_and_ps(bits, o.bits)}; }
+  Mask4 operator|(Mask4 o) const { return {_mm_or_ps(bits, o.bits)}; }
   /// Writes `label` to the lanes where the mask is set and 0 elsewhere.
   void storeLabels(std::uint32_t* out, std::uint32_t label) const {
     const __m128i value = _mm_set1_epi32(static_cast<std::int32_t>(label));
@@ -57,7 +58,9 @@ struct Float4 {
   Float4 operator+(Float4 o) const { return {_mm_add_ps(v, o.v)}; }
   Float4 operator-(Float4 o) const { return {_mm_sub_ps(v, o.v)}; }
   Float4 operator*(Float4 o) const { return {_mm_mul_ps(v, o.v)}; }
+  Float4 operator/(Float4 o) const { return {_mm_div_ps(v, o.v)}; }
   Float4 abs() const { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), v)}; }
+  Float4 sqrt() const { return {_mm_sqrt_ps(v)}; }
   /// a < b ? a : b lane by lane (MINPS returns its second operand when either is NaN, as
   /// the conditional does).
   static Float4 min(Float4 a, Float4 b) { return {_mm_min_ps(a.v, b.v)}; }
@@ -107,11 +110,9 @@ struct PointLanes {
     const Float4 dx = x - o.x, dy = y - o.y, dz = z - o.z;
     return (dx * dx + dy * dy) + dz * dz;
   }
-  /// planeDistance: |((n_x x + n_y y) + n_z z) + d|.
-  Float4 planeDistance(const Vec3& normal, float offset) const {
-    const Float4 dot =
-        (Float4::broadcast(normal.x) * x + Float4::broadcast(normal.y) * y) + Float4::broadcast(normal.z) * z;
-    return (dot + Float4::broadcast(offset)).abs();
+  /// Vec3::dot with a normal: (n_x x + n_y y) + n_z z.
+  Float4 dot(const Vec3& normal) const {
+    return (Float4::broadcast(normal.x) * x + Float4::broadcast(normal.y) * y) + Float4::broadcast(normal.z) * z;
   }
 };
 

@@ -17,10 +17,10 @@ namespace floodplane::apps {
 
 /// The settings of the paper's Sec. IV (PCL's organized segmentation demo).
 struct OmpsSettings {
-  static constexpr float max_depth_change_factor = 0.02f;
-  static constexpr float normal_smoothing_size = 6.0f;
-  static constexpr double angular_threshold = 0.09;   ///< [rad]
-  static constexpr double distance_threshold = 0.02;  ///< [m]
+  static constexpr double max_depth_change_factor = 0.02;
+  static constexpr double normal_smoothing_size = 6.0;  ///< [pixels]
+  static constexpr double angular_threshold = 0.09;     ///< [rad]
+  static constexpr double distance_threshold = 0.02;    ///< [m]
   static constexpr unsigned min_inliers = 50;
 };
 
@@ -29,8 +29,8 @@ struct OmpsSettings {
 template <typename NormalEstimation, typename Omps>
 void configureOmps(NormalEstimation& normal_estimation, Omps& omps) {
   normal_estimation.setNormalEstimationMethod(NormalEstimation::AVERAGE_3D_GRADIENT);
-  normal_estimation.setMaxDepthChangeFactor(OmpsSettings::max_depth_change_factor);
-  normal_estimation.setNormalSmoothingSize(OmpsSettings::normal_smoothing_size);
+  normal_estimation.setMaxDepthChangeFactor(static_cast<float>(OmpsSettings::max_depth_change_factor));
+  normal_estimation.setNormalSmoothingSize(static_cast<float>(OmpsSettings::normal_smoothing_size));
   omps.setMinInliers(OmpsSettings::min_inliers);
   omps.setAngularThreshold(OmpsSettings::angular_threshold);
   omps.setDistanceThreshold(OmpsSettings::distance_threshold);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "bitmap_font.h"
@@ -57,20 +58,38 @@ floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::
   if (panels.empty()) {
     throw std::invalid_argument("comparisonImage: no panels");
   }
+  std::vector<std::pair<std::string, floodplane::io::RgbImage>> images;
+  for (const Panel& panel : panels) {
+    images.emplace_back(panel.title, floodplane::io::labelImage(panel.colour_labels, width, height));
+  }
+  return titledImages(images);
+}
+
+floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, floodplane::io::RgbImage>>& images) {
+  if (images.empty()) {
+    throw std::invalid_argument("titledImages: no images");
+  }
+  const std::size_t width = images.front().second.width;
+  const std::size_t height = images.front().second.height;
+  for (const auto& [title, panel] : images) {
+    if (panel.width != width || panel.height != height || panel.pixels.size() != width * height * 3) {
+      throw std::invalid_argument("titledImages: the image of '" + title + "' is not " + std::to_string(width) +
+                                  "x" + std::to_string(height));
+    }
+  }
   const std::size_t strip = kGlyphHeight * kTitleScale + 2 * kTitleMargin;
   floodplane::io::RgbImage image;
-  image.width = panels.size() * width + (panels.size() - 1) * kPanelGap;
+  image.width = images.size() * width + (images.size() - 1) * kPanelGap;
   image.height = strip + height;
   image.pixels.resize(image.width * image.height * 3);
   for (std::size_t i = 0; i < image.pixels.size(); i += 3) {
     std::copy(kBackground.begin(), kBackground.end(), image.pixels.begin() + static_cast<std::ptrdiff_t>(i));
   }
-  for (std::size_t k = 0; k < panels.size(); ++k) {
+  for (std::size_t k = 0; k < images.size(); ++k) {
     const std::size_t left = k * (width + kPanelGap);
-    const floodplane::io::RgbImage labels =
-        floodplane::io::labelImage(panels[k].colour_labels, width, height);
+    const floodplane::io::RgbImage& panel = images[k].second;
     for (std::size_t y = 0; y < height; ++y) {
-      std::copy_n(labels.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
+      std::copy_n(panel.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
                   image.pixels.begin() +
                       static_cast<std::ptrdiff_t>(((strip + y) * image.width + left) * 3));
     }
@@ -83,7 +102,7 @@ floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::
     for (std::size_t i = 0; i < title.pixels.size(); i += 3) {
       std::copy(kBackground.begin(), kBackground.end(), title.pixels.begin() + static_cast<std::ptrdiff_t>(i));
     }
-    drawText(title, kTitleMargin, kTitleMargin, panels[k].title, kTitleScale, kTitleColour);
+    drawText(title, kTitleMargin, kTitleMargin, images[k].first, kTitleScale, kTitleColour);
     for (std::size_t y = 0; y < strip; ++y) {
       std::copy_n(title.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
                   image.pixels.begin() + static_cast<std::ptrdiff_t>((y * image.width + left) * 3));

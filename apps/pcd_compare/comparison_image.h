@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/rgb_image.h"
@@ -14,6 +15,9 @@ struct Panel {
   std::string title;
   /// Row-major labels to colour with floodplane::io::labelColor.
   std::vector<std::uint32_t> colour_labels;
+  /// The method's own labels, one segment each (the 3-D panels draw a normal per segment);
+  /// empty when they are the colour labels (the ground truth).
+  std::vector<std::uint32_t> segment_labels;
 };
 
 /// Labels that give `predicted` colours comparable with the ground truth's. Separate
@@ -30,5 +34,9 @@ std::vector<std::uint32_t> coloursMatchedToGroundTruth(
 /// The panels side by side, each width x height with its title in a strip above.
 floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width,
                                          std::size_t height);
+
+/// Images of one size side by side, each with its title in a strip above (the layout of
+/// comparisonImage). Throws std::invalid_argument if there are none or their sizes differ.
+floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, floodplane::io::RgbImage>>& images);
 
 }  // namespace pcd_compare

@@ -6,6 +6,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/omps_run.h"
 #include "floodplane/segmenter.h"
 
 namespace pcd_compare {
@@ -43,12 +45,38 @@ class Method {
   virtual MethodRun run(const Cloud::ConstPtr& cloud) = 0;
 };
 
+/// The parameters of a sequential RANSAC (PCL's or Open3D's): the best plane is extracted,
+/// then the best plane of the rest, until a plane has fewer than `min_inliers` inliers.
+struct SequentialRansacParameters {
+  double distance_threshold = 0.01;  ///< inlier distance from the plane [m]
+  std::size_t min_inliers = 100;     ///< the plane that stops the sequence (and is dropped)
+};
+
+/// The parameters of PCL's IntegralImageNormalEstimation + OrganizedMultiPlaneSegmentation.
+/// The defaults are the paper's Sec. IV settings (common/omps_run.h) and PCL's default maximum
+/// curvature.
+struct OmpsParameters {
+  using Settings = floodplane::apps::OmpsSettings;
+  double angular_threshold = Settings::angular_threshold;          ///< [rad]
+  double distance_threshold = Settings::distance_threshold;        ///< [m]
+  double normal_smoothing_size = Settings::normal_smoothing_size;  ///< [pixels]
+  /// Depth change that ends a normal's smoothing area, as a factor of the depth [1/m].
+  double max_depth_change_factor = Settings::max_depth_change_factor;
+  double maximum_curvature = 0.001;  ///< of a region's points; PCL's default
+  std::size_t min_inliers = Settings::min_inliers;
+};
+
 /// floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> with the library's defaults, at
 /// the given sub-sampling factor; `measure_phases` turns on its phase timer.
 std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1, bool measure_phases = false);
-/// PCL's sequential RANSAC: the best plane, removed, again, until one has < 100 inliers.
-std::unique_ptr<Method> makeRansacMethod();
+/// PCL's sequential RANSAC. Labels number the planes in the order they were extracted.
+std::unique_ptr<Method> makeRansacMethod(const SequentialRansacParameters& parameters = {},
+                                         const std::string& name = "ransac");
+/// Open3D's SegmentPlane, sequentially. Labels number the planes in the order they were
+/// extracted.
+std::unique_ptr<Method> makeOpen3dRansacMethod(const SequentialRansacParameters& parameters = {},
+                                               const std::string& name = "open3d_ransac");
 /// PCL's IntegralImageNormalEstimation + OrganizedMultiPlaneSegmentation::segmentAndRefine.
-std::unique_ptr<Method> makeOmpsMethod();
+std::unique_ptr<Method> makeOmpsMethod(const OmpsParameters& parameters = {}, const std::string& name = "omps");
 
 }  // namespace pcd_compare

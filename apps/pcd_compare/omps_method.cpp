@@ -16,20 +16,27 @@ namespace {
 
 class OmpsMethod : public Method {
  public:
-  OmpsMethod() { floodplane::apps::configureOmps(normal_estimation_, segmentation_); }
+  OmpsMethod(const OmpsParameters& parameters, std::string name) : parameters_(parameters), name_(std::move(name)) {
+    floodplane::apps::configureOmps(normal_estimation_, segmentation_);
+    normal_estimation_.setMaxDepthChangeFactor(static_cast<float>(parameters_.max_depth_change_factor));
+    normal_estimation_.setNormalSmoothingSize(static_cast<float>(parameters_.normal_smoothing_size));
+    segmentation_.setAngularThreshold(parameters_.angular_threshold);
+    segmentation_.setDistanceThreshold(parameters_.distance_threshold);
+    segmentation_.setMaximumCurvature(parameters_.maximum_curvature);
+    segmentation_.setMinInliers(static_cast<unsigned>(parameters_.min_inliers));
+  }
 
-  std::string name() const override { return "omps"; }
+  std::string name() const override { return name_; }
 
   std::string parameters() const override {
     std::ostringstream text;
     text << "pcl::IntegralImageNormalEstimation AVERAGE_3D_GRADIENT, max depth change factor "
-         << floodplane::apps::OmpsSettings::max_depth_change_factor << ", normal smoothing size "
-         << floodplane::apps::OmpsSettings::normal_smoothing_size
+         << parameters_.max_depth_change_factor << ", normal smoothing size " << parameters_.normal_smoothing_size
          << "; pcl::OrganizedMultiPlaneSegmentation<PointXYZ, Normal, Label>::segmentAndRefine, "
             "angular threshold "
          << segmentation_.getAngularThreshold() << " rad, distance threshold " << segmentation_.getDistanceThreshold()
          << " m, min inliers " << segmentation_.getMinInliers() << ", maximum curvature "
-         << segmentation_.getMaximumCurvature() << " (PCL default); time includes normals";
+         << segmentation_.getMaximumCurvature() << "; time includes normals";
     return text.str();
   }
 
@@ -61,6 +68,8 @@ class OmpsMethod : public Method {
   }
 
  private:
+  OmpsParameters parameters_;
+  std::string name_;
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation_;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> segmentation_;
   floodplane::apps::OmpsOutputs<pcl::PointXYZ> outputs_;
@@ -68,6 +77,8 @@ class OmpsMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> makeOmpsMethod() { return std::make_unique<OmpsMethod>(); }
+std::unique_ptr<Method> makeOmpsMethod(const OmpsParameters& parameters, const std::string& name) {
+  return std::make_unique<OmpsMethod>(parameters, name);
+}
 
 }  // namespace pcd_compare

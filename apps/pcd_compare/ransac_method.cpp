@@ -17,33 +17,30 @@ namespace pcd_compare {
 
 namespace {
 
-constexpr double kDistanceThreshold = 0.01;  // [m]
-constexpr std::size_t kMinPlaneInliers = 100;
-
 class RansacMethod : public Method {
  public:
-  RansacMethod() {
+  RansacMethod(const SequentialRansacParameters& parameters, std::string name)
+      : parameters_(parameters), name_(std::move(name)) {
     // SACSegmentation's default `random = false` makes every RANSAC it creates seed its
     // generator with the fixed 12345 (pcl/sample_consensus/sac_model.h), so runs repeat
     // exactly; srand covers any std::rand use inside PCL as well.
     std::srand(12345u);
     segmentation_.setModelType(pcl::SACMODEL_PLANE);
     segmentation_.setMethodType(pcl::SAC_RANSAC);
-    segmentation_.setDistanceThreshold(kDistanceThreshold);
+    segmentation_.setDistanceThreshold(parameters_.distance_threshold);
     segmentation_.setOptimizeCoefficients(true);
   }
 
-  std::string name() const override { return "ransac"; }
+  std::string name() const override { return name_; }
 
   std::string parameters() const override {
     std::ostringstream text;
     text << "pcl::SACSegmentation<PointXYZ> SACMODEL_PLANE, SAC_RANSAC, distance threshold "
-         << kDistanceThreshold << " m, optimize coefficients, max iterations "
-         << segmentation_.getMaxIterations() << " and probability "
-         << segmentation_.getProbability()
+         << parameters_.distance_threshold << " m, optimize coefficients, max iterations "
+         << segmentation_.getMaxIterations() << " and probability " << segmentation_.getProbability()
          << " (PCL defaults), single thread; sequential: extract the best plane, repeat on "
             "the rest until a plane has < "
-         << kMinPlaneInliers
+         << parameters_.min_inliers
          << " inliers; NaN points excluded first (by index); fixed seed 12345 (PCL's "
             "non-random mode), deterministic";
     return text.str();
@@ -70,7 +67,7 @@ class RansacMethod : public Method {
     while (remaining->size() >= 3) {
       segmentation_.setIndices(remaining);
       segmentation_.segment(inliers_, coefficients_);
-      if (inliers_.indices.size() < kMinPlaneInliers) {
+      if (inliers_.indices.size() < parameters_.min_inliers) {
         break;
       }
       for (const pcl::index_t index : inliers_.indices) {
@@ -93,6 +90,8 @@ class RansacMethod : public Method {
   }
 
  private:
+  SequentialRansacParameters parameters_;
+  std::string name_;
   pcl::SACSegmentation<pcl::PointXYZ> segmentation_;
   pcl::PointIndices inliers_;
   pcl::ModelCoefficients coefficients_;
@@ -100,6 +99,8 @@ class RansacMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> makeRansacMethod() { return std::make_unique<RansacMethod>(); }
+std::unique_ptr<Method> makeRansacMethod(const SequentialRansacParameters& parameters, const std::string& name) {
+  return std::make_unique<RansacMethod>(parameters, name);
+}
 
 }  // namespace pcd_compare

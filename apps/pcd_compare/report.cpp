@@ -273,7 +273,7 @@ struct MainColumns {
 
 std::string mainTableHeader(const MainColumns& columns) {
   std::ostringstream out;
-  out << "## Runtime" << (columns.accuracy ? " and accuracy" : "") << "\n\n";
+  out << "## Every file and method: runtime" << (columns.accuracy ? " and accuracy" : "") << "\n\n";
   out << "| scene | method | median ms | min ms | x floodplane |" << (columns.normals ? " normals ms |" : "")
       << " planes |";
   if (columns.accuracy) out << " mean IoU | weighted IoU | correct | over | under | missed | noise | false planes |";
@@ -296,37 +296,98 @@ std::string mainTableRow(const SceneResult& scene, const MethodResult& result, c
   return out.str();
 }
 
-// `label` is "**mean**" or "**mean <sensor>**".
-std::string mainTableMeanRow(const std::string& label, const std::string& method, const MeanRow& row,
-                             const MainColumns& columns) {
+std::string meanTableHeader(const MainColumns& columns) {
   std::ostringstream out;
-  out << "| " << label << " (" << row.scenes << " scenes) | " << method << " | " << fixed(row.time(row.median_ms), 2)
-      << " | " << fixed(row.time(row.min_ms), 2) << " | " << fixed(row.ratio(), 2) << " |";
+  out << "| method | files | median ms | min ms | x floodplane |" << (columns.normals ? " normals ms |" : "")
+      << " planes |";
+  if (columns.accuracy) out << " mean IoU | weighted IoU | correct | over | under | missed | noise | false planes |";
+  out << "\n|---|---:|---:|---:|---:|" << (columns.normals ? "---:|" : "") << "---:|";
+  if (columns.accuracy) out << "---:|---:|---:|---:|---:|---:|---:|---:|";
+  return out.str() + "\n";
+}
+
+std::string meanTableRow(const std::string& method, const MeanRow& row, const MainColumns& columns) {
+  std::ostringstream out;
+  out << "| " << method << " | " << row.scenes << " | " << fixed(row.time(row.median_ms), 2) << " | "
+      << fixed(row.time(row.min_ms), 2) << " | " << fixed(row.ratio(), 2) << " |";
   if (columns.normals) out << " " << fixed(row.part("normals"), 2) << " |";
   out << " " << fixed(row.time(row.planes), 1) << " |";
   if (columns.accuracy) out << accuracyCells(meanCells(row));
-  out << "\n";
-  return out.str();
+  return out.str() + "\n";
 }
 
-// Runtime and accuracy: a row per scene and method, the means per method, then the means per
-// sensor model and method.
+// One table of means: a row per method, in `order`.
+std::string meanTable(const std::string& title, const std::map<std::string, MeanRow>& rows,
+                      const std::vector<std::string>& order, const MainColumns& columns) {
+  std::string out = "### " + title + "\n\n" + meanTableHeader(columns);
+  for (const std::string& method : order) {
+    const auto row = rows.find(method);
+    if (row != rows.end()) out += meanTableRow(method, row->second, columns);
+  }
+  return out + "\n";
+}
+
+std::size_t sceneCount(const std::map<std::string, MeanRow>& rows) {
+  std::size_t count = 0;
+  for (const auto& [method, row] : rows) {
+    (void)method;
+    count = std::max(count, row.scenes);
+  }
+  return count;
+}
+
+// The means per method over every file, then over the files of each sensor model: one table
+// per block, so that many methods and sensor models stay readable.
+std::string meanTables(const Report& report) {
+  const MainColumns columns{anyGroundTruth(report), anyPart(report, "normals")};
+  const std::vector<std::string> order = methodOrder(report);
+  const Means means = methodMeans(report);
+  std::string out = "## Means per method\n\n";
+  out += meanTable("all files (" + std::to_string(report.scenes.size()) + ")", means.overall, order, columns);
+  for (const auto& [sensor, rows] : means.by_sensor) {
+    out +=
+        meanTable("sensor model " + sensor + " (" + std::to_string(sceneCount(rows)) + " files)", rows, order, columns);
+  }
+  return out;
+}
+
+// Mean IoU of every method on every file with ground truth, one column per method; the best
+// of a row in bold.
+std::string iouTable(const Report& report) {
+  if (!anyGroundTruth(report)) return "";
+  const std::vector<std::string> order = methodOrder(report);
+  std::string out = "## Mean IoU per file (best in bold)\n\n| file |";
+  std::string rule = "|---|";
+  for (const std::string& method : order) {
+    out += " " + method + " |";
+    rule += "---:|";
+  }
+  out += "\n" + rule + "\n";
+  for (const SceneResult& scene : report.scenes) {
+    if (!scene.has_ground_truth) continue;
+    double best = -1.0;
+    for (const MethodResult& result : scene.methods) {
+      if (result.scores && std::isfinite(result.scores->mean_iou)) best = std::max(best, result.scores->mean_iou);
+    }
+    out += "| " + scene.name + " |";
+    for (const std::string& method : order) {
+      const MethodResult* result = findMethod(scene, method);
+      const double iou = result != nullptr && result->scores ? result->scores->mean_iou : kNaN;
+      const std::string cell = fixed(iou, 3);
+      // Bold every method that ties the best at the printed precision.
+      out += " " + (std::isfinite(iou) && cell == fixed(best, 3) ? "**" + cell + "**" : cell) + " |";
+    }
+    out += "\n";
+  }
+  return out + "\n";
+}
+
+// Runtime and accuracy of every method on every file.
 std::string mainTable(const Report& report) {
   const MainColumns columns{anyGroundTruth(report), anyPart(report, "normals")};
   std::string out = mainTableHeader(columns);
   for (const SceneResult& scene : report.scenes) {
     for (const MethodResult& result : scene.methods) out += mainTableRow(scene, result, columns);
-  }
-  const std::vector<std::string> order = methodOrder(report);
-  const Means means = methodMeans(report);
-  for (const std::string& method : order) {
-    out += mainTableMeanRow("**mean**", method, means.overall.at(method), columns);
-  }
-  for (const auto& [sensor, rows] : means.by_sensor) {
-    for (const std::string& method : order) {
-      const auto row = rows.find(method);
-      if (row != rows.end()) out += mainTableMeanRow("**mean " + sensor + "**", method, row->second, columns);
-    }
   }
   return out + "\n";
 }
@@ -429,7 +490,7 @@ std::string markdownConfiguration(const Report& report) {
 }
 
 std::string markdownTables(const Report& report) {
-  return mainTable(report) + resolutionTable(report) + phaseTable(report);
+  return meanTables(report) + iouTable(report) + mainTable(report) + resolutionTable(report) + phaseTable(report);
 }
 
 std::string csvReport(const Report& report) {

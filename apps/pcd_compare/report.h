@@ -55,8 +55,9 @@ struct Report {
   std::vector<std::string> failed;  ///< files that could not be compared
 };
 
-/// The tables: one row per scene and method, a mean row per method, and a mean row per sensor
-/// model and method; then the sub-sampling and phase tables when they were measured.
+/// The tables: the means per method (over every file, then one table per sensor model), the
+/// mean IoU per file and method, one row per file and method; then the sub-sampling and phase
+/// tables when they were measured.
 std::string markdownTables(const Report& report);
 /// The configuration as a Markdown list.
 std::string markdownConfiguration(const Report& report);

@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "common/cli.h"
+#include "common/display_check.h"
+#include "common/plane_view.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "io/atomic_file.h"
 #include "io/input_files.h"
@@ -30,6 +32,7 @@
 #include "output_paths.h"
 #include "planes_json.h"
 #include "progress.h"
+#include "view_output.h"
 
 namespace {
 
@@ -55,6 +58,9 @@ struct Options {
   bool png = false;
   bool json = false;
   bool quiet = false;
+  bool view = false;
+  std::optional<std::string> snapshot;  ///< given: the file, or empty for <name>.snapshot.png
+  pcd_segment::SnapshotSettings snapshot_settings;
 };
 
 void addInputOutputOptions(CLI::App& app, Options& options) {
@@ -138,6 +144,48 @@ void addOutputFlags(CLI::App& app, Options& options) {
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
 }
 
+// The 3-D outputs. The checks run while parsing, so a bad value fails before any work.
+void addViewOptions(CLI::App& app, Options& options) {
+  app.add_flag("--view", options.view,
+               "Show the result in 3-D in a window (one input): points coloured as in the PNG, normals as "
+               "arrows, outlines; keys n, z, b toggle normals, unlabelled points, outlines; v switches the camera "
+               "between the sensor's view and an oblique one");
+  CLI::Option* snapshot =
+      app.add_option_function<std::string>(
+             "--snapshot", [&options](const std::string& path) { options.snapshot = path; },
+             "Also render that 3-D view, without a window, to FILE.png (one input) or, given no FILE, to "
+             "<name>.snapshot.png beside the other outputs. Needs an X display: on a machine without "
+             "one, run under xvfb-run -a")
+          ->expected(0, 1)
+          ->type_name("[FILE.png]")
+          ->check([](const std::string& path) -> std::string {
+            const bool png = path.size() > 4 && path.compare(path.size() - 4, 4, ".png") == 0;
+            return path.empty() || png ? "" : "takes a file name ending in .png, not '" + path + "'";
+          });
+  app.add_option_function<std::string>(
+         "--snapshot-size",
+         [&options](const std::string& text) {
+           const auto size = pcd_segment::parseImageSize(text);
+           options.snapshot_settings.width = size->first;
+           options.snapshot_settings.height = size->second;
+         },
+         "Snapshot width x height in pixels, each 16..8192 (default 800x600)")
+      ->type_name("WxH")
+      ->check([](const std::string& text) -> std::string {
+        return pcd_segment::parseImageSize(text) ? "" : "'" + text + "' is not WxH with sides 16..8192";
+      })
+      ->needs(snapshot);
+  app.add_option_function<std::string>(
+         "--snapshot-camera",
+         [&options](const std::string& name) {
+           options.snapshot_settings.camera = *floodplane::view::parseCameraView(name);
+         },
+         "oblique (default: above and to the right of the sensor, so that the planes' tilt shows) or "
+         "sensor (the label image's view)")
+      ->check(CLI::IsMember({"oblique", "sensor"}))
+      ->needs(snapshot);
+}
+
 // Feeds the options to the library's setters, which reject bad values with a message naming
 // the setter; the app reports that message rather than repeating the rules here.
 void applyParams(Segmentation& segmentation, const floodplane::Params& params) {
@@ -215,6 +263,7 @@ struct FileResult {
   double segmentation_ms = 0.0;
   std::size_t width = 0;
   std::size_t height = 0;
+  std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
 };
 
 // Reads, segments and writes one input; throws std::runtime_error saying what went wrong.
@@ -231,7 +280,17 @@ FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths&
   }
   if (options.png) writeLabelPng(paths.png, *segmented.labels);
   if (options.json) writeReport(paths.json, input, *points, segmentation.getParams(), segmented);
-  return {segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height};
+  FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}};
+  if (options.snapshot || options.view) {
+    floodplane::view::PlaneScene scene =
+        pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients);
+    if (options.snapshot) {
+      const std::string& path = options.snapshot->empty() ? paths.snapshot : *options.snapshot;
+      pcd_segment::writeSnapshot(path, scene, options.snapshot_settings);
+    }
+    if (options.view) result.scene = std::move(scene);
+  }
+  return result;
 }
 
 bool createOutputDirectory(const fs::path& directory) {
@@ -271,6 +330,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       const FileResult result = segmentFile(file.path, paths, segmentation, options);
       progress.clear();
       if (!options.quiet) printResult(file.path, result, paths.pcd);
+      if (result.scene) floodplane::view::showWindow(*result.scene, "pcd_segment: " + file.path);
     } catch (const std::exception& error) {
       progress.clear();
       std::cerr << "pcd_segment: error: " << file.path << ": " << error.what() << "\n";
@@ -279,6 +339,27 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
   }
   progress.clear();
   return failed;
+}
+
+// --view and --snapshot FILE are about one input, and both need a display: checked before any
+// work, so that a batch does not segment everything and then fail on every image. Returns
+// the exit code when the program is done.
+std::optional<int> checkViewOptions(const CLI::App& app, const Options& options, std::size_t inputs) {
+  if (options.view && inputs > 1) {
+    return floodplane::apps::usageError(app, "--view shows one input, but there are " + std::to_string(inputs));
+  }
+  if (options.snapshot && !options.snapshot->empty() && inputs > 1) {
+    return floodplane::apps::usageError(
+        app, "--snapshot " + *options.snapshot + " names one image, but there are " + std::to_string(inputs) +
+                 " inputs; give --snapshot without a file name for <name>.snapshot.png in the output directory");
+  }
+  if (options.view || options.snapshot) {
+    if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {
+      std::cerr << "pcd_segment: error: cannot draw in 3-D: " << *reason << "\n";
+      return 1;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -294,6 +375,7 @@ int main(int argc, char** argv) {
   addParameterOptions(app, options.params);
   addDepthImageOptions(app, options);
   addOutputFlags(app, options);
+  addViewOptions(app, options);
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
 
   Segmentation segmentation;
@@ -315,6 +397,7 @@ int main(int argc, char** argv) {
     return floodplane::apps::usageError(app, "-o " + options.output + " names one .pcd file, but there are " +
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
+  if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
   if (!createOutputDirectory(single_file ? fs::path(options.output).parent_path() : fs::path(options.output))) {
     return 1;
   }

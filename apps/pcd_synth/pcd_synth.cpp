@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cli.h"
 #include "io/atomic_file.h"
 #include "io/label_palette.h"
 #include "io/pcd_file.h"
@@ -26,7 +27,6 @@
 #include "synth/renderer.h"
 #include "synth/scene_file.h"
 #include "synth/scene_generator.h"
-#include "floodplane/version.h"
 
 namespace {
 
@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
       "and sensor model into OUTDIR. Random scene i (from 0) has seed S + i and is named random_<seed, 4 "
       "digits>; the kinect and none frames show a room, the scanner frame blocks on a table.",
       "pcd_synth"};
-  app.set_version_flag("--version", FLOODPLANE_VERSION_STRING);
+  floodplane::apps::addVersionFlag(app);
   // No existence check here: a missing file is reported with the others at the end.
   app.add_option("scenes", options.scene_files, "Scene files to render");
   app.add_option("-o,--output-dir", options.output_dir, "Directory for the outputs (created if missing)")->required();
@@ -252,20 +252,8 @@ int main(int argc, char** argv) {
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
-  if (const std::string problem = inconsistency(options); !problem.empty()) {
-    std::cerr << "pcd_synth: error: " << problem << "\n";
-    return 2;
-  }
+  if (const std::optional<int> done = floodplane::apps::parseCommandLine(app, argc, argv)) return *done;
+  if (const std::string problem = inconsistency(options); !problem.empty()) return floodplane::apps::usageError(app, problem);
   if (!options.sensor) {
     options.sensor = options.random_count ? "all" : "both";
   }

@@ -27,7 +27,8 @@ std::string groundTruthJson(const RenderedFrame& frame) {
                       {"normal", {plane.normal.x(), plane.normal.y(), plane.normal.z()}},
                       {"d", plane.d},
                       {"pixels", plane.pixel_count},
-                      {"faces_camera", plane.faces_camera}});
+                      {"faces_camera", plane.faces_camera},
+                      {"merged_into", plane.merged_into}});
   }
   document["planes"] = std::move(planes);
   return document.dump(2) + "\n";

@@ -26,6 +26,11 @@ struct GroundTruthPlane {
   /// unless seen exactly edge-on.
   bool faces_camera = false;
   std::size_t pixel_count = 0;  ///< pixels carrying `id` in the rendered frame
+  /// The plane whose label this face's pixels carry instead of `id`, when the face touches a
+  /// face of that plane in the image and lies in the same plane (a shelf board's front flush
+  /// with the side panels' fronts): one continuous flat surface is one ground-truth plane,
+  /// whichever primitives make it up. 0: none (the face is its own plane).
+  std::uint32_t merged_into = 0;
 };
 
 /// An organized frame, row-major, width * height entries in `points` and `labels`.

@@ -51,6 +51,48 @@ std::optional<double> measuredDepth(const Scene& scene, const RenderSettings& se
   return std::nullopt;
 }
 
+// Faces of one plane (normals and offsets equal up to round-off).
+bool coplanar(const GroundTruthPlane& a, const GroundTruthPlane& b) {
+  constexpr double kEpsilon = 1e-6;
+  return a.normal.dot(b.normal) > 1.0 - kEpsilon && std::abs(a.d - b.d) < kEpsilon * std::max(1.0, std::abs(a.d));
+}
+
+// One continuous flat surface is one ground-truth plane: faces that lie in one plane and meet
+// in the image (4-neighbouring pixels of the exact hits `surface`, measured or not) carry the
+// label of the face with the smallest id. Primitives flush with each other (the fronts of a
+// shelf's boards and side panels, two stacked boxes of one size) form one surface, which no
+// segmentation could cut where the primitives happen to meet.
+void mergeTouchingCoplanarFaces(RenderedFrame& frame, const std::vector<std::uint32_t>& surface) {
+  std::vector<std::uint32_t> root(frame.planes.size() + 1);
+  for (std::uint32_t id = 0; id < root.size(); ++id) root[id] = id;
+  const auto find = [&](std::uint32_t id) {
+    while (root[id] != id) id = root[id] = root[root[id]];
+    return id;
+  };
+  const auto unite = [&](std::uint32_t a, std::uint32_t b) {
+    if (a == 0 || b == 0 || a == b || !coplanar(frame.planes[a - 1], frame.planes[b - 1])) return;
+    a = find(a);
+    b = find(b);
+    if (a != b) root[std::max(a, b)] = std::min(a, b);
+  };
+  const auto width = static_cast<std::size_t>(frame.intrinsics.width);
+  for (std::size_t i = 0; i < surface.size(); ++i) {
+    if (i % width + 1 < width) unite(surface[i], surface[i + 1]);
+    if (i + width < surface.size()) unite(surface[i], surface[i + width]);
+  }
+  bool merged = false;
+  for (GroundTruthPlane& plane : frame.planes) {
+    const std::uint32_t into = find(plane.id);
+    if (into == plane.id) continue;
+    plane.merged_into = into;
+    frame.planes[into - 1].pixel_count += plane.pixel_count;
+    plane.pixel_count = 0;
+    merged = true;
+  }
+  if (!merged) return;
+  for (std::uint32_t& label : frame.labels) label = find(label);
+}
+
 }  // namespace
 
 RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
@@ -73,6 +115,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
   const Eigen::Vector3f no_point = Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN());
   frame.points.assign(pixel_count, no_point);
   frame.labels.assign(pixel_count, 0);
+  std::vector<std::uint32_t> surface(pixel_count, 0);  // the exact hit's plane, measured or not
 
   for (int v = 0; v < intrinsics.height; ++v) {
     for (int u = 0; u < intrinsics.width; ++u) {
@@ -82,6 +125,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
       if (!std::isfinite(hit.t)) {
         continue;
       }
+      surface[index] = hit.plane_id;
       const std::optional<double> depth =
           measuredDepth(scene, settings, projector ? &*projector : nullptr, direction, hit, index);
       if (!depth) {
@@ -94,6 +138,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
       }
     }
   }
+  mergeTouchingCoplanarFaces(frame, surface);
   return frame;
 }
 

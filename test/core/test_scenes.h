@@ -5,9 +5,12 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -28,6 +31,13 @@ struct ScenePlane {
   double offset = 0.0;
   int id = 1;
   std::function<bool(const Eigen::Vector3d&)> contains = [](const Eigen::Vector3d&) { return true; };
+};
+
+// A curved surface: the ray parameter t of a ray's nearest hit (the point t * ray), or
+// infinity.
+struct SceneSurface {
+  std::function<double(const Eigen::Vector3d& ray)> hit;
+  int id = 1;
 };
 
 struct RenderedGrid {
@@ -65,8 +75,17 @@ inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>&
       camera, planes, [range_noise](double) { return range_noise; }, seed);
 }
 
+// Planes and curved surfaces together.
+inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes,
+                           const std::vector<SceneSurface>& surfaces, const RangeNoise& noise_of, unsigned seed);
+
 inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes, const RangeNoise& noise_of,
                            unsigned seed) {
+  return render(camera, planes, {}, noise_of, seed);
+}
+
+inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>& planes,
+                           const std::vector<SceneSurface>& surfaces, const RangeNoise& noise_of, unsigned seed) {
   RenderedGrid out;
   out.width = camera.width;
   out.height = camera.height;
@@ -86,6 +105,13 @@ inline RenderedGrid render(const Pinhole& camera, const std::vector<ScenePlane>&
         if (t > 0.0 && t < best && plane.contains(t * ray)) {
           best = t;
           id = plane.id;
+        }
+      }
+      for (const SceneSurface& surface : surfaces) {
+        const double t = surface.hit(ray);
+        if (t > 0.0 && t < best) {
+          best = t;
+          id = surface.id;
         }
       }
       if (id == 0) continue;
@@ -111,6 +137,37 @@ inline ScenePlane frontalPlane(double z, int id = 1) {
   return p;
 }
 
+// An upright cylinder (axis along y through (x, ., z)) of the given radius.
+inline SceneSurface uprightCylinder(double x, double z, double radius, int id) {
+  SceneSurface s;
+  s.id = id;
+  s.hit = [x, z, radius](const Eigen::Vector3d& ray) {
+    // |(t ray - c) projected on x z| = radius, the nearer root.
+    const double a = ray.x() * ray.x() + ray.z() * ray.z();
+    const double b = -2.0 * (ray.x() * x + ray.z() * z);
+    const double c = x * x + z * z - radius * radius;
+    const double discriminant = b * b - 4.0 * a * c;
+    if (discriminant < 0.0) return std::numeric_limits<double>::infinity();
+    return (-b - std::sqrt(discriminant)) / (2.0 * a);
+  };
+  return s;
+}
+
+// A ball of the given radius centred at `centre`.
+inline SceneSurface ball(const Eigen::Vector3d& centre, double radius, int id) {
+  SceneSurface s;
+  s.id = id;
+  s.hit = [centre, radius](const Eigen::Vector3d& ray) {
+    const double a = ray.squaredNorm();
+    const double b = -2.0 * ray.dot(centre);
+    const double c = centre.squaredNorm() - radius * radius;
+    const double discriminant = b * b - 4.0 * a * c;
+    if (discriminant < 0.0) return std::numeric_limits<double>::infinity();
+    return (-b - std::sqrt(discriminant)) / (2.0 * a);
+  };
+  return s;
+}
+
 // A room corner seen from 1 m above the floor: floor (id 1), back wall at z = 4 (id 2),
 // left wall at x = -1.5 (id 3).
 inline std::vector<ScenePlane> roomCorner() {
@@ -125,6 +182,23 @@ inline std::vector<ScenePlane> roomCorner() {
   left.offset = 1.5;
   left.id = 3;
   return {floor, back, left};
+}
+
+// IoU of ground-truth surface `id` with its best-matching label.
+inline double bestIoU(const RenderedGrid& scene, const std::vector<std::uint32_t>& labels, int id) {
+  std::map<std::uint32_t, std::size_t> overlap;
+  std::map<std::uint32_t, std::size_t> label_size;
+  std::size_t truth_size = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] != 0) ++label_size[labels[i]];
+    if (scene.truth[i] != id) continue;
+    ++truth_size;
+    if (labels[i] != 0) ++overlap[labels[i]];
+  }
+  double best = 0.0;
+  for (const auto& [label, shared] : overlap)
+    best = std::max(best, static_cast<double>(shared) / static_cast<double>(truth_size + label_size[label] - shared));
+  return best;
 }
 
 }  // namespace floodplane::test

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <vector>
 
 #include "floodplane/segmenter.h"
@@ -18,6 +17,7 @@ namespace {
 using test::Pinhole;
 using test::RenderedGrid;
 using test::ScenePlane;
+using test::bestIoU;
 
 Pinhole camera() {
   Pinhole c;
@@ -32,23 +32,6 @@ Params exactParams() {
   p.depth_noise_coefficient = 0.0;
   p.min_inliers = 100;
   return p;
-}
-
-// IoU of ground-truth plane `id` with its best-matching label.
-double bestIoU(const RenderedGrid& scene, const std::vector<std::uint32_t>& labels, int id) {
-  std::map<std::uint32_t, std::size_t> overlap;
-  std::map<std::uint32_t, std::size_t> label_size;
-  std::size_t truth_size = 0;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] != 0) ++label_size[labels[i]];
-    if (scene.truth[i] != id) continue;
-    ++truth_size;
-    if (labels[i] != 0) ++overlap[labels[i]];
-  }
-  double best = 0.0;
-  for (const auto& [label, shared] : overlap)
-    best = std::max(best, static_cast<double>(shared) / static_cast<double>(truth_size + label_size[label] - shared));
-  return best;
 }
 
 double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -253,6 +254,29 @@ TEST(Renderer, BoxShowsAtMostThreeFacesAndEachPixelLiesOnTheFaceItsLabelNames) {
       EXPECT_EQ(plane.pixels, counts[plane.id]) << "face id " << plane.id;
     }
   }
+}
+
+TEST(Renderer, FacesFlushInOnePlaneAreOneGroundTruthPlaneApartTheyAreTwo) {
+  // Two rectangles side by side at z = 2, touching at x = 0: one surface, one label. Two more
+  // at z = 3 with a gap between them: two planes.
+  const auto panel = [](double x, double z, double width) {
+    return Primitive{"panel", Rectangle{Eigen::Vector3d(x, -0.2, z), Eigen::Vector3d(width, 0.0, 0.0),
+                                        Eigen::Vector3d(0.0, 0.3, 0.0)}};
+  };
+  const Scene scene =
+      sceneInCameraFrame({panel(-0.2, 2.0, 0.4), panel(0.2, 2.0, 0.4), panel(-0.4, 3.0, 0.2), panel(0.4, 3.0, 0.2)});
+  const RenderedFrame frame = render(scene, SensorModel::none);
+  std::map<std::uint32_t, std::size_t> pixels;
+  for (const std::uint32_t label : frame.labels) ++pixels[label];
+  EXPECT_GT(pixels[1], 0u);
+  EXPECT_EQ(pixels[2], 0u);  // flush with panel 1: its label
+  EXPECT_EQ(frame.planes[1].merged_into, 1u);
+  EXPECT_EQ(frame.planes[1].pixel_count, 0u);
+  EXPECT_EQ(frame.planes[0].pixel_count, pixels[1]);
+  EXPECT_GT(pixels[3], 0u);  // coplanar, but a gap apart: two planes
+  EXPECT_GT(pixels[4], 0u);
+  EXPECT_EQ(frame.planes[2].merged_into, 0u);
+  EXPECT_EQ(frame.planes[3].merged_into, 0u);
 }
 
 TEST(Renderer, SpherePointsLieOnTheSphereAndAreNotPlanar) {

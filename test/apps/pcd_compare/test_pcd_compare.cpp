@@ -8,6 +8,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +81,19 @@ void expectIouAveragesOfThePlanes(const nlohmann::json& result, const std::strin
   EXPECT_NEAR(result["weighted_iou"].get<double>(), weighted / pixels, 1e-12) << what;
 }
 
+// Number of rows `| <method> | <files> |` in the Markdown table of means under `### <block>`
+// ("all files (2)", "sensor model kinect (1 files)").
+int meanRowCount(const std::string& markdown, const std::string& block, const std::string& method, int files) {
+  const std::size_t start = markdown.find("### " + block + "\n");
+  if (start == std::string::npos) return 0;
+  const std::size_t end = std::min(markdown.find("\n#", start + 1), markdown.size());
+  const std::string table = markdown.substr(start, end - start);
+  const std::string row = "\n| " + method + " | " + std::to_string(files) + " |";
+  int count = 0;
+  for (std::size_t at = table.find(row); at != std::string::npos; at = table.find(row, at + 1)) ++count;
+  return count;
+}
+
 // Number of Markdown rows `| <scene> | <method> |`.
 int rowCount(const std::string& markdown, const std::string& scene, const std::string& method) {
   const std::string row = "| " + scene + " | " + method + " |";
@@ -92,13 +107,14 @@ int rowCount(const std::string& markdown, const std::string& scene, const std::s
 TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
   const fs::path json_file = dir_ / "out.json";
   const fs::path csv_file = dir_ / "out.csv";
-  const Outcome outcome = run("--repeat 2 --json " + quoted(json_file.string()) + " --csv " +
-                              quoted(csv_file.string()) + " " + quoted(kTabletop) + " " + quoted(kStaircase));
+  const Outcome outcome =
+      run("--repeat 2 --methods floodplane,ransac,omps --json " + quoted(json_file.string()) + " --csv " +
+          quoted(csv_file.string()) + " " + quoted(kTabletop) + " " + quoted(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   for (const std::string method : {"floodplane", "ransac", "omps"}) {
     EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", method), 1) << method;
     EXPECT_EQ(rowCount(outcome.out, "staircase.none", method), 1) << method;
-    EXPECT_EQ(rowCount(outcome.out, "**mean** (2 scenes)", method), 1) << method;
+    EXPECT_EQ(meanRowCount(outcome.out, "all files (2)", method, 2), 1) << method;
     // The configuration names every method with its parameters before the numbers.
     const std::size_t config = outcome.out.find("**method " + method + "**");
     ASSERT_NE(config, std::string::npos) << method;
@@ -146,8 +162,8 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
     EXPECT_EQ(mean["false_plane_fraction"], tabletop["methods"][method]["false_plane_fraction"]) << method;
     EXPECT_EQ(mean["scenes_with_non_plane_ground_truth"], 1) << method;
     // One mean per sensor model named in the file names, over that model's one scene here.
-    EXPECT_EQ(rowCount(outcome.out, "**mean kinect** (1 scenes)", method), 1) << method;
-    EXPECT_EQ(rowCount(outcome.out, "**mean none** (1 scenes)", method), 1) << method;
+    EXPECT_EQ(meanRowCount(outcome.out, "sensor model kinect (1 files)", method, 1), 1) << method;
+    EXPECT_EQ(meanRowCount(outcome.out, "sensor model none (1 files)", method, 1), 1) << method;
     EXPECT_EQ(json["means_by_sensor"]["kinect"][method]["mean_iou"], tabletop["methods"][method]["mean_iou"]);
     EXPECT_EQ(json["means_by_sensor"]["none"][method]["mean_iou"], staircase["methods"][method]["mean_iou"]);
   }
@@ -207,7 +223,8 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
 TEST_F(PcdCompare, BadOptionsExitWithCodeTwo) {
   EXPECT_EQ(run("--no-such-option " + quoted(kStaircase)).exit_code, 2);
   EXPECT_EQ(run("--methods floodplane,watershed " + quoted(kStaircase)).exit_code, 2);
-  EXPECT_EQ(run("--repeat 0 " + quoted(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--repeat -1 " + quoted(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--tune-clouds 0 --tune " + quoted(dir_.string())).exit_code, 2);
   const Outcome no_input = run("--repeat 2");
   EXPECT_EQ(no_input.exit_code, 2);
   EXPECT_NE(no_input.err.find("Usage"), std::string::npos) << no_input.err;
@@ -292,8 +309,8 @@ TEST_F(PcdCompare, AveragesPerSensorModelNamedInTheFileName) {
   const Outcome outcome =
       run("--repeat 2 --quiet --methods floodplane --json " + quoted(json_file.string()) + " " + quoted(dir_.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  EXPECT_EQ(rowCount(outcome.out, "**mean** (3 scenes)", "floodplane"), 1) << outcome.out;
-  EXPECT_EQ(rowCount(outcome.out, "**mean scanner** (1 scenes)", "floodplane"), 1) << outcome.out;
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (3)", "floodplane", 3), 1) << outcome.out;
+  EXPECT_EQ(meanRowCount(outcome.out, "sensor model scanner (1 files)", "floodplane", 1), 1) << outcome.out;
   const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
   ASSERT_EQ(json["means_by_sensor"].size(), 1u) << json["means_by_sensor"].dump();
   EXPECT_EQ(json["means_by_sensor"]["scanner"]["floodplane"]["scenes"], 1);
@@ -333,6 +350,110 @@ TEST_F(PcdCompare, ResolutionsAndPhasesAddTheirTables) {
     share_sum += share.get<double>();
   }
   EXPECT_NEAR(share_sum, 1.0, 1e-9);
+}
+
+}  // namespace
+
+namespace {
+
+const std::string kFarWall = std::string(PCD_COMPARE_SCENE_DIR) + "/far_wall.none.pcd";
+
+// A tuning file as --tune writes it, with one OMPS value for the sensor model "none".
+void writeTunedFile(const fs::path& file, double maximum_curvature) {
+  nlohmann::json json;
+  json["methods"]["omps"]["by_sensor"]["none"]["parameters"]["maximum_curvature"] = maximum_curvature;
+  std::ofstream(file) << json.dump();
+}
+
+class PcdCompareTuning : public PcdCompare {
+ protected:
+  // Two exact clouds of one sensor model: far_wall (on which OMPS's default maximum curvature
+  // rejects every region) and the staircase.
+  fs::path tuningFolder() const {
+    const fs::path folder = dir_ / "tune";
+    fs::create_directories(folder);
+    fs::copy_file(kFarWall, folder / "a.none.pcd", fs::copy_options::overwrite_existing);
+    fs::copy_file(kStaircase, folder / "b.none.pcd", fs::copy_options::overwrite_existing);
+    return folder;
+  }
+
+  // OMPS's mean IoU over `folder` at one maximum curvature, through --tuned.
+  double ompsMeanIou(const fs::path& folder, double maximum_curvature) const {
+    const fs::path tuned = dir_ / "by_hand.json";
+    const fs::path json_file = dir_ / "by_hand_out.json";
+    writeTunedFile(tuned, maximum_curvature);
+    const Outcome outcome = run("--repeat 0 --quiet --methods omps --tuned --tuned-file " + quoted(tuned.string()) +
+                                " --json " + quoted(json_file.string()) + " " + quoted(folder.string()));
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    return nlohmann::json::parse(readFile(json_file))["means"]["omps (tuned)"]["mean_iou"].get<double>();
+  }
+};
+
+TEST_F(PcdCompareTuning, PicksTheBetterOfTwoGridPointsAndKeepsOtherMethodsOfTheFile) {
+  const fs::path folder = tuningFolder();
+  const fs::path grid = dir_ / "grid.json";
+  std::ofstream(grid) << R"({"omps": {"maximum_curvature": [0.001, 0.1]}})";
+  const fs::path tuned = dir_ / "tuned.json";
+  std::ofstream(tuned) << R"({"methods": {"ransac": {"by_sensor": {"none": {"parameters": {"min_inliers": 300}}}}}})";
+
+  const Outcome outcome = run("--tune " + quoted(folder.string()) + " --methods omps --tune-grid " +
+                              quoted(grid.string()) + " --tuned-file " + quoted(tuned.string()));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.err.find("tune omps [none] #2"), std::string::npos) << outcome.err;
+  const nlohmann::json result = nlohmann::json::parse(readFile(tuned));
+
+  const double strict = ompsMeanIou(folder, 0.001);
+  const double loose = ompsMeanIou(folder, 0.1);
+  ASSERT_GT(std::abs(strict - loose), 1e-6) << "the two grid points must score differently";
+  const auto& winner = result["methods"]["omps"]["by_sensor"]["none"];
+  EXPECT_DOUBLE_EQ(winner["parameters"]["maximum_curvature"].get<double>(), strict > loose ? 0.001 : 0.1);
+  EXPECT_NEAR(winner["mean_iou"].get<double>(), std::max(strict, loose), 1e-12);
+  EXPECT_NEAR(winner["default_mean_iou"].get<double>(), strict, 1e-12);
+  EXPECT_EQ(winner["clouds"].size(), 2u);
+  EXPECT_EQ(winner["settings_evaluated"], 2);
+  EXPECT_EQ(result["methods"]["omps"]["grid"]["maximum_curvature"].size(), 2u);
+  // The method not tuned in this run keeps its earlier entry.
+  EXPECT_EQ(result["methods"]["ransac"]["by_sensor"]["none"]["parameters"]["min_inliers"], 300);
+}
+
+TEST_F(PcdCompareTuning, TunedRowsFollowTheSensorModelOfEachFile) {
+  const fs::path tuned = dir_ / "tuned.json";
+  writeTunedFile(tuned, 0.1);
+  const Outcome outcome = run("--repeat 0 --methods floodplane,omps --tuned --tuned-file " + quoted(tuned.string()) +
+                              " " + quoted(kStaircase) + " " + quoted(kTabletop));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps"), 1);
+  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps (tuned)"), 1);
+  // No tuned values for the Kinect model in the file: no tuned row, and a note why.
+  EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", "omps (tuned)"), 0);
+  EXPECT_NE(outcome.err.find("tabletop.kinect: no tuned values of omps (tuned)"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.out.find("**method omps (tuned) [none]**"), std::string::npos);
+  EXPECT_NE(outcome.out.find("maximum curvature 0.1;"), std::string::npos);
+  EXPECT_EQ(meanRowCount(outcome.out, "sensor model none (1 files)", "omps (tuned)", 1), 1) << outcome.out;
+}
+
+TEST_F(PcdCompareTuning, BadTuningInputsAreReportedByName) {
+  const fs::path missing = dir_ / "missing.json";
+  const Outcome no_file = run("--tuned --tuned-file " + quoted(missing.string()) + " " + quoted(kStaircase));
+  EXPECT_EQ(no_file.exit_code, 1);
+  EXPECT_NE(no_file.err.find(missing.string() + ": cannot read the tuned parameters"), std::string::npos)
+      << no_file.err;
+
+  const fs::path grid = dir_ / "grid.json";
+  std::ofstream(grid) << R"({"omps": {"bogus": [1.0]}})";
+  const Outcome bad_grid = run("--tune " + quoted(tuningFolder().string()) + " --methods omps --tune-grid " +
+                               quoted(grid.string()) + " --tuned-file " + quoted((dir_ / "out.json").string()));
+  EXPECT_EQ(bad_grid.exit_code, 1);
+  EXPECT_NE(bad_grid.err.find("omps has no parameter 'bogus'"), std::string::npos) << bad_grid.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+
+  const fs::path unnamed = dir_ / "unnamed";
+  fs::create_directories(unnamed);
+  fs::copy_file(kStaircase, unnamed / "staircase.pcd");
+  const Outcome no_sensor = run("--tune " + quoted(unnamed.string()) + " --methods omps --tuned-file " +
+                                quoted((dir_ / "out.json").string()));
+  EXPECT_EQ(no_sensor.exit_code, 1);
+  EXPECT_NE(no_sensor.err.find("no <scene>.<sensor>.pcd files"), std::string::npos) << no_sensor.err;
 }
 
 }  // namespace

@@ -1,0 +1,116 @@
+// Open3D's plane RANSAC (geometry::PointCloud::SegmentPlane), run sequentially as PCL's is:
+// the best plane, its inliers taken away, again, until a plane has too few inliers. The only
+// file that includes Open3D's headers.
+
+#include <omp.h>
+#include <open3d/geometry/PointCloud.h>
+#include <open3d/utility/Logging.h>
+#include <open3d/utility/Random.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "method.h"
+
+namespace pcd_compare {
+
+namespace {
+
+constexpr int kRansacN = 3;  // points per hypothesis: a plane through three points
+constexpr int kIterations = 1000;
+constexpr int kSeed = 12345;
+
+// Open3D 0.16 runs SegmentPlane's hypotheses in an OpenMP loop that stops early once enough
+// have been tried, so with several threads which hypotheses run depends on the scheduling.
+// One thread (as every method here runs) makes the result a function of the seed alone.
+class SingleOpenMpThread {
+ public:
+  SingleOpenMpThread() : previous_(omp_get_max_threads()) { omp_set_num_threads(1); }
+  ~SingleOpenMpThread() { omp_set_num_threads(previous_); }
+  SingleOpenMpThread(const SingleOpenMpThread&) = delete;
+  SingleOpenMpThread& operator=(const SingleOpenMpThread&) = delete;
+
+ private:
+  int previous_;
+};
+
+class Open3dRansacMethod : public Method {
+ public:
+  Open3dRansacMethod(const SequentialRansacParameters& parameters, std::string name)
+      : parameters_(parameters), name_(std::move(name)) {
+    open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Warning);
+  }
+
+  std::string name() const override { return name_; }
+
+  std::string parameters() const override {
+    std::ostringstream text;
+    text << "open3d::geometry::PointCloud::SegmentPlane (Open3D 0.16), distance threshold "
+         << parameters_.distance_threshold << " m, ransac_n " << kRansacN << ", " << kIterations
+         << " iterations, probability 0.99999999 (Open3D's default: it may stop early); sequential: "
+            "the best plane, its inliers removed, again on the rest until a plane has < "
+         << parameters_.min_inliers << " inliers; on the finite points only; one OpenMP thread; utility::random::Seed("
+         << kSeed << ") before every cloud, deterministic";
+    return text.str();
+  }
+
+  MethodRun run(const Cloud::ConstPtr& cloud) override {
+    using Clock = std::chrono::steady_clock;
+    MethodRun result;
+    result.labels.assign(cloud->size(), 0);
+    const auto start = Clock::now();
+    const SingleOpenMpThread one_thread;
+    open3d::utility::random::Seed(kSeed);
+
+    // The remaining points, and for each its pixel in the organized grid.
+    open3d::geometry::PointCloud remaining;
+    std::vector<std::size_t> pixel_of;
+    remaining.points_.reserve(cloud->size());
+    pixel_of.reserve(cloud->size());
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+      const pcl::PointXYZ& p = (*cloud)[i];
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
+        remaining.points_.emplace_back(p.x, p.y, p.z);
+        pixel_of.push_back(i);
+      }
+    }
+    std::uint32_t next_label = 1;
+    while (remaining.points_.size() >= static_cast<std::size_t>(kRansacN)) {
+      const auto [plane, inliers] = remaining.SegmentPlane(parameters_.distance_threshold, kRansacN, kIterations);
+      (void)plane;
+      if (inliers.size() < parameters_.min_inliers) break;
+      for (const std::size_t index : inliers) result.labels[pixel_of[index]] = next_label;
+      ++next_label;
+      removeLabelled(result.labels, remaining, pixel_of);
+    }
+    result.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return result;
+  }
+
+ private:
+  // Drops the points that now carry a label, keeping the order of the rest.
+  static void removeLabelled(const std::vector<std::uint32_t>& labels, open3d::geometry::PointCloud& remaining,
+                             std::vector<std::size_t>& pixel_of) {
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pixel_of.size(); ++k) {
+      if (labels[pixel_of[k]] != 0) continue;
+      remaining.points_[kept] = remaining.points_[k];
+      pixel_of[kept] = pixel_of[k];
+      ++kept;
+    }
+    remaining.points_.resize(kept);
+    pixel_of.resize(kept);
+  }
+
+  SequentialRansacParameters parameters_;
+  std::string name_;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> makeOpen3dRansacMethod(const SequentialRansacParameters& parameters, const std::string& name) {
+  return std::make_unique<Open3dRansacMethod>(parameters, name);
+}
+
+}  // namespace pcd_compare

@@ -1,0 +1,44 @@
+#pragma once
+// pcd_segment's 3-D outputs: the snapshot (an image rendered off screen) and the window of
+// --view, both drawn by common/plane_view.h from the segmentation's planar regions.
+
+#include <pcl/ModelCoefficients.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/plane_scene.h"
+#include "floodplane/flood_fill_plane_segmentation.h"
+
+namespace pcd_segment {
+
+using Regions = floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions;
+
+/// How snapshots are taken.
+struct SnapshotSettings {
+  int width = 800;
+  int height = 600;
+  floodplane::view::CameraView camera = floodplane::view::CameraView::oblique;
+};
+
+/// Parses "WxH" (e.g. "800x600") into a width and a height, each 16..8192; std::nullopt
+/// for anything else.
+std::optional<std::pair<int, int>> parseImageSize(const std::string& text);
+
+/// The scene of one segmented cloud: points coloured by their label, and per plane k (label
+/// k) a marker from regions[k-1] (centroid, size from its covariance, inlier count, contour)
+/// and coefficients[k-1] (the normal, towards the sensor).
+floodplane::view::PlaneScene planeScene(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points,
+                                        const pcl::PointCloud<pcl::Label>& labels, const Regions& regions,
+                                        const std::vector<pcl::ModelCoefficients>& coefficients);
+
+/// Renders `scene` and writes it to `path` as a PNG, atomically. Throws std::runtime_error
+/// with one line when it cannot (no display, VTK error, file not writable).
+void writeSnapshot(const std::string& path, const floodplane::view::PlaneScene& scene,
+                   const SnapshotSettings& settings);
+
+}  // namespace pcd_segment

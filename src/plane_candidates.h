@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "distance_function.h"
+#include "floodplane/params.h"
+#include "floodplane/plane_fit.h"
+#include "plane_sums.h"
+#include "tolerances.h"
+
+namespace floodplane {
+
+/// "No pixel yet" for PlaneCandidate::first_pixel.
+constexpr std::size_t kNoPixel = std::numeric_limits<std::size_t>::max();
+
+/// A plane on its way to the output: its full-resolution inliers and its membership test.
+struct PlaneCandidate {
+  PlaneSums sums;            ///< of its full-resolution inliers
+  FloodCriterion criterion;  ///< its plane and thresholds, for labelling and refinement
+  std::size_t first_pixel = kNoPixel;
+};
+
+/// The candidate planes and their numbers in the label image (1..K, 0: no plane). Planes are
+/// numbered by size, largest first; renumbering maps old numbers to new through remap().
+class PlaneCandidates {
+ public:
+  std::vector<PlaneCandidate>& list() { return candidates_; }
+  const std::vector<PlaneCandidate>& list() const { return candidates_; }
+  PlaneCandidate& operator[](std::uint32_t label) { return candidates_[label - 1]; }
+
+  /// Drops candidates under `min_inliers` and, when `recheck` is given, those whose inliers
+  /// no longer make an acceptable plane under its parameters; orders the rest by size.
+  /// Returns whether any number changed (the label image then needs renumberPixels).
+  bool sortBySize(std::uint32_t min_inliers, const Params* recheck);
+  /// Merges the candidates whose numbers k share a value group[k] (group[0] is ignored), in
+  /// the order of each group's first member. Returns whether any merged.
+  bool regroup(const std::vector<std::uint32_t>& group);
+  /// Drops the candidates whose number k has drop[k] set (drop[0] is ignored), keeping the
+  /// order of the rest. Returns whether any was dropped.
+  bool drop(const std::vector<bool>& drop);
+  /// The new number of old number k, after sortBySize or drop (0: dropped).
+  std::uint32_t remap(std::uint32_t k) const { return remap_[k]; }
+  /// Forgets every plane's first pixel, before a full renumbering.
+  void forgetFirstPixels();
+  /// Applies remap() to labels [begin, end) and notes first pixels (those before `begin`
+  /// already noted).
+  void renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end);
+
+ private:
+  std::vector<PlaneCandidate> candidates_;
+  std::vector<PlaneCandidate> kept_;
+  std::vector<std::uint32_t> remap_;
+  std::vector<std::size_t> order_;
+};
+
+/// What a reported plane must be: a valid fit, no more curved than allowed, facing the sensor.
+bool acceptablePlane(const PlaneFit& fit, const Params& params);
+
+/// A plane's membership test for pixels that join it after merging, from its fit. The
+/// Euclidean tolerance follows from the plane itself: neighbouring pixels on n.P + d = 0 are
+/// alpha r^2 / |d| apart (see FloodCriterion).
+FloodCriterion planeCriterion(const PlaneFit& fit, const Tolerances& tolerances, float angular_pitch);
+
+}  // namespace floodplane

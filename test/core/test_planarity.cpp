@@ -1,0 +1,125 @@
+// Beyond the paper: the planarity test. A noisy plane is kept, a wall bent by a sensor's
+// calibration is kept, patches of a column and of a ball are rejected.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "plane_sums.h"
+#include "planarity.h"
+#include "tolerances.h"
+
+namespace floodplane {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kPitch = 1.0 / 525.0;  // a Kinect's angle between neighbouring pixels
+
+// Kinect-like noise along the rays: sigma(r) = c r^2.
+Tolerances tolerancesFor(double quadratic) {
+  static const Params params;
+  DepthNoise noise;
+  noise.quadratic = quadratic;
+  return Tolerances(params, noise, kPitch, 640 * 480);
+}
+
+// Points of a surface given as a function of two parameters in [0, 1], each moved along its
+// viewing ray by Gaussian noise of sigma(r) = c r^2.
+std::vector<Eigen::Vector3d> sample(const std::function<Eigen::Vector3d(double, double)>& surface, int n,
+                                    double quadratic, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      Eigen::Vector3d p = surface((i + 0.5) / n, (j + 0.5) / n);
+      const double r = p.norm();
+      p *= 1.0 + quadratic * r * r * gauss(rng) / r;
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+// Whether the planarity test calls the points, as one plane, curved.
+bool curved(const std::vector<Eigen::Vector3d>& points, const Tolerances& tolerances) {
+  PlaneSums sums;
+  for (const Eigen::Vector3d& p : points) sums.add(Vec3{float(p.x()), float(p.y()), float(p.z())});
+  PlanarityTest test;
+  test.reset({sums.fit()});
+  for (const Eigen::Vector3d& p : points) test.add(1, Vec3{float(p.x()), float(p.y()), float(p.z())});
+  return test.curved(1, tolerances);
+}
+
+// A 60 cm square facing the camera at 2 m, tilted 30 degrees about the vertical.
+Eigen::Vector3d tiltedSquare(double a, double b) {
+  const double u = (a - 0.5) * 0.6, v = (b - 0.5) * 0.6;
+  return {u * std::cos(kPi / 6), v, 2.0 + u * std::sin(kPi / 6)};
+}
+
+// The front of an upright column (radius 20 cm, axis 2.2 m away), 100 degrees of arc, 60 cm
+// high.
+Eigen::Vector3d columnFront(double a, double b) {
+  const double radius = 0.2, angle = (a - 0.5) * (100.0 * kPi / 180.0);
+  return {radius * std::sin(angle), (b - 0.5) * 0.6, 2.0 + radius - radius * std::cos(angle)};
+}
+
+// The cap of a ball (radius 30 cm, centre 2.3 m away) facing the camera, 90 degrees across.
+Eigen::Vector3d ballCap(double a, double b) {
+  const double radius = 0.3, theta = (a - 0.5) * (kPi / 2), phi = (b - 0.5) * (kPi / 2);
+  const Eigen::Vector3d outward(std::sin(theta) * std::cos(phi), std::sin(phi), -std::cos(theta) * std::cos(phi));
+  return Eigen::Vector3d(0, 0, 2.0 + radius) + radius * outward;
+}
+
+// A 3 m wide wall at 2 m bent with a radius of 50 m (a depth camera's calibration bends real
+// walls far less).
+Eigen::Vector3d bentWall(double a, double b) {
+  const double x = (a - 0.5) * 3.0, radius = 50.0;
+  return {x, (b - 0.5) * 2.0, 2.0 + x * x / (2.0 * radius)};
+}
+
+TEST(PlanarityTest, KeepsANoisyPlane) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    EXPECT_FALSE(curved(sample(tiltedSquare, 80, 0.0019, seed), tolerancesFor(0.0019))) << seed;
+    EXPECT_FALSE(curved(sample(tiltedSquare, 80, 0.0, seed), tolerancesFor(0.0))) << seed;
+  }
+}
+
+TEST(PlanarityTest, RejectsAPatchOfAColumn) {
+  EXPECT_TRUE(curved(sample(columnFront, 60, 0.0019, 4), tolerancesFor(0.0019)));
+  EXPECT_TRUE(curved(sample(columnFront, 60, 0.0, 4), tolerancesFor(0.0)));
+}
+
+TEST(PlanarityTest, RejectsAPatchOfABall) {
+  EXPECT_TRUE(curved(sample(ballCap, 60, 0.0019, 5), tolerancesFor(0.0019)));
+  EXPECT_TRUE(curved(sample(ballCap, 60, 0.0, 5), tolerancesFor(0.0)));
+}
+
+TEST(PlanarityTest, KeepsAWallBentByFarLessThanTheCurvedThingsInRooms) {
+  // The bend is significant (centimetres over a low noise) but its radius is far beyond
+  // that of a column or a ball.
+  EXPECT_FALSE(curved(sample(bentWall, 80, 0.0002, 6), tolerancesFor(0.0002)));
+}
+
+TEST(PlanarityTest, NeedsEnoughPointsToCallAPlaneCurved) {
+  // Five by five points of the ball: too few to tell a bend from noise.
+  EXPECT_FALSE(curved(sample(ballCap, 4, 0.0, 7), tolerancesFor(0.0)));
+}
+
+TEST(PlanarityTest, ReportsTheCurvatureOfTheSurface) {
+  PlaneSums sums;
+  const std::vector<Eigen::Vector3d> points = sample(columnFront, 60, 0.0, 8);
+  for (const Eigen::Vector3d& p : points) sums.add(Vec3{float(p.x()), float(p.y()), float(p.z())});
+  PlanarityTest test;
+  test.reset({sums.fit()});
+  for (const Eigen::Vector3d& p : points) test.add(1, Vec3{float(p.x()), float(p.y()), float(p.z())});
+  // A quadratic over 100 degrees of a circle of radius 0.2 m: about 1 / 0.2 m.
+  EXPECT_NEAR(test.curvature(1), 5.0, 1.5);
+}
+
+}  // namespace
+}  // namespace floodplane
