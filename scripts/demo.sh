@@ -11,10 +11,11 @@ out="$build/demo"
 
 "$root/scripts/install_deps.sh"
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOODPLANE_BUILD_APPS=ON
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOODPLANE_BUILD_APPS=ON \
+        -DFLOODPLANE_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3
 fi
 # render_scenes is part of the default build: data/scenes/*.json -> $build/data/rendered
-cmake --build "$build" --parallel "$(nproc)" --target pcd_compare pcd_segment render_scenes
+cmake --build "$build" --parallel "$(nproc)" --target pcd_compare pcd_segment render_scenes _floodplane
 
 mkdir -p "$out"
 "$build/apps/pcd_compare/pcd_compare" --repeat 5 --png "$out" --json "$out/compare.json" \

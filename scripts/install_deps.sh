@@ -12,6 +12,9 @@ packages=(
   libopen3d-dev                              # pcd_compare's Open3D RANSAC baseline (0.16)
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
   xvfb xauth libgl1-mesa-dri                 # an X display with software OpenGL for 3-D snapshots
+  python3 python3-dev pybind11-dev python3-pybind11  # the Python module (Debian's interpreter)
+  python3-numpy python3-pytest                 # its arrays and its tests
+  python3-dask python3-distributed             # floodplane.distributed and its test cluster
 )
 
 missing=()

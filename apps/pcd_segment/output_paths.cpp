@@ -15,7 +15,7 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 
 std::string outputName(const std::string& input_path) {
   const fs::path path(input_path);
-  return path.extension() == ".pcd" ? path.stem().string() : path.filename().string();
+  return path.extension() == ".pcd" || path.extension() == ".png" ? path.stem().string() : path.filename().string();
 }
 
 bool namesPcdFile(const std::string& output) { return endsWith(output, ".pcd"); }

@@ -6,7 +6,7 @@
 
 namespace pcd_segment {
 
-/// The name outputs are derived from: the file name without its `.pcd` extension.
+/// The name outputs are derived from: the file name without its `.pcd` or `.png` extension.
 std::string outputName(const std::string& input_path);
 
 /// The files written for one input.

@@ -1,6 +1,6 @@
-// pcd_segment: segments organized PCD files into planes and writes the labels (PCD, and
-// optionally PNG and a JSON report). Argument parsing and file I/O only; the segmentation is
-// floodplane::FloodFillPlaneSegmentation.
+// pcd_segment: segments organized PCD files and 16-bit depth PNG images into planes and
+// writes the labels (PCD, and optionally PNG and a JSON report). Argument parsing and file
+// I/O only; the segmentation is floodplane::FloodFillPlaneSegmentation.
 
 #include <CLI/CLI.hpp>
 #include <pcl/common/io.h>
@@ -42,14 +42,18 @@ using Segmentation = floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>;
 
 constexpr const char* kDescription =
     "Segments organized point clouds into planes (flood fill, Roychoudhury et al.). Each "
-    "INPUT is a PCD file with x y z fields, or a directory of them. Writes per input a "
-    "labelled cloud (x y z [rgb] label: 0 no plane, 1..K planes by size, largest first): "
-    "OUT itself for one input and OUT ending in .pcd, otherwise OUT/<name>.labels.pcd.";
+    "INPUT is a PCD file with x y z fields, a 16-bit depth image (.png, 0 = no return; needs "
+    "--intrinsics), or a directory of them. Writes per input a labelled cloud (x y z [rgb] "
+    "label: 0 no plane, 1..K planes by size, largest first; a depth image's back-projected "
+    "points): OUT itself for one input and OUT ending in .pcd, otherwise OUT/<name>.labels.pcd.";
 
 struct Options {
   std::vector<std::string> inputs;
   std::string output;
   floodplane::Params params;
+  std::vector<double> intrinsics;                     ///< fx fy cx cy of depth images
+  double depth_scale = 1000.0;                        ///< depth units per metre
+  std::optional<floodplane::io::DepthCamera> camera;  ///< from the two above, when given
   bool ascii = false;
   bool png = false;
   bool json = false;
@@ -60,7 +64,9 @@ struct Options {
 };
 
 void addInputOutputOptions(CLI::App& app, Options& options) {
-  app.add_option("inputs", options.inputs, "PCD files or directories of PCD files")->required();
+  app.add_option("inputs", options.inputs,
+                 "PCD files, depth PNG files or directories of them (PNG only with --intrinsics)")
+      ->required();
   app.add_option("-o,--output", options.output, "Output .pcd file (one input) or directory (created if missing)")
       ->required();
 }
@@ -91,6 +97,44 @@ void addParameterOptions(CLI::App& app, floodplane::Params& params) {
                  "c [1/m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
   app.add_option("--depth-noise-constant", params.depth_noise_constant,
                  "sigma_0 [m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
+}
+
+void addDepthImageOptions(CLI::App& app, Options& options) {
+  app.add_option("--intrinsics", options.intrinsics,
+                 "fx,fy,cx,cy [pixels] of the depth camera; needed for depth PNG input")
+      ->delimiter(',')
+      ->expected(4);
+  app.add_option("--depth-scale", options.depth_scale,
+                 "Depth PNG units per metre (1000: millimetres; 5000: the TUM RGB-D benchmark)")
+      ->capture_default_str();
+}
+
+// The depth camera of the command line, if it names one; throws std::invalid_argument for
+// intrinsics the back-projection cannot use.
+std::optional<floodplane::io::DepthCamera> depthCamera(const Options& options) {
+  if (options.intrinsics.empty()) return std::nullopt;
+  const std::vector<double>& k = options.intrinsics;
+  const floodplane::io::DepthCamera camera{k.at(0), k.at(1), k.at(2), k.at(3), options.depth_scale};
+  const std::string problem = camera.problem();
+  if (!problem.empty()) throw std::invalid_argument("--intrinsics fx,fy,cx,cy / --depth-scale: " + problem);
+  return camera;
+}
+
+// The files a directory contributes: PCD files, and depth images once there is a camera.
+std::vector<std::string> inputExtensions(const Options& options) {
+  if (!options.camera) return {".pcd"};
+  return {".pcd", floodplane::io::kDepthImageExtension};
+}
+
+// A depth image among the inputs while no camera is given: said once, before any work.
+std::optional<std::string> missingCamera(const std::vector<floodplane::io::InputFile>& files, const Options& options) {
+  if (options.camera) return std::nullopt;
+  for (const floodplane::io::InputFile& file : files) {
+    if (file.error.empty() && floodplane::io::isDepthImagePath(file.path)) {
+      return "depth image " + file.path + " needs --intrinsics fx,fy,cx,cy (and --depth-scale unless in millimetres)";
+    }
+  }
+  return std::nullopt;
 }
 
 void addOutputFlags(CLI::App& app, Options& options) {
@@ -225,7 +269,7 @@ struct FileResult {
 // Reads, segments and writes one input; throws std::runtime_error saying what went wrong.
 FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths& paths, Segmentation& segmentation,
                        const Options& options) {
-  floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(input);
+  floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(input, options.camera);
   const auto points = std::make_shared<Cloud>(std::move(frame.xyz));
   const Segmented segmented = segment(segmentation, points);
   if (frame.xyzrgb) {
@@ -329,6 +373,7 @@ int main(int argc, char** argv) {
   floodplane::apps::addVersionFlag(app);
   addInputOutputOptions(app, options);
   addParameterOptions(app, options.params);
+  addDepthImageOptions(app, options);
   addOutputFlags(app, options);
   addViewOptions(app, options);
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
@@ -336,11 +381,16 @@ int main(int argc, char** argv) {
   Segmentation segmentation;
   try {
     applyParams(segmentation, options.params);
+    options.camera = depthCamera(options);
   } catch (const std::invalid_argument& e) {
     return floodplane::apps::usageError(app, e.what());
   }
 
-  const std::vector<floodplane::io::InputFile> files = floodplane::io::expandInputs(options.inputs);
+  const std::vector<floodplane::io::InputFile> files =
+      floodplane::io::expandInputs(options.inputs, inputExtensions(options));
+  if (const std::optional<std::string> problem = missingCamera(files, options)) {
+    return floodplane::apps::usageError(app, *problem);
+  }
   const bool single_file = pcd_segment::namesPcdFile(options.output);
   if (single_file && files.size() > 1) {
     // A directory called "x.pcd" is almost surely a mistake, so this is refused.

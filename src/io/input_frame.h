@@ -1,7 +1,7 @@
 #pragma once
 // One organized frame read from an input file, in the point types the apps segment. Every
-// input kind (today organized PCD files) is read into this one type, so the apps do not
-// depend on where their frames come from.
+// input kind (organized PCD files, 16-bit depth PNG images) is read into this one type, so the
+// apps do not depend on where their frames come from.
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "io/depth_camera.h"
 
 namespace floodplane::io {
 
@@ -24,9 +26,18 @@ struct InputFrame {
   std::optional<std::vector<std::uint32_t>> labels;
 };
 
-/// Reads the frame in `path`. Every input is read as an organized PCD file (readPcdFrame,
-/// io/pcd_input.h); other kinds of input are told apart here. Throws std::runtime_error with
-/// a one-line reason, without the path, when the file cannot be read as a frame.
-InputFrame loadInputFrame(const std::string& path);
+/// The extension of depth images (16-bit greyscale PNG files).
+inline constexpr const char* kDepthImageExtension = ".png";
+
+/// Whether `path` names a depth image: it ends in .png (in any case).
+bool isDepthImagePath(const std::string& path);
+
+/// Reads the frame in `path`. A depth image (isDepthImagePath) is read with readDepthPng
+/// (io/depth_png.h) and back-projected with `camera` into points without colour, NaN where
+/// the depth is 0; it needs `camera`. Every other input is read as an organized PCD file
+/// (readPcdFrame, io/pcd_input.h). Throws std::runtime_error with a one-line reason, without
+/// the path, when the file cannot be read as a frame, or when a depth image comes without a
+/// camera; std::invalid_argument when `camera` has a problem().
+InputFrame loadInputFrame(const std::string& path, const std::optional<DepthCamera>& camera = std::nullopt);
 
 }  // namespace floodplane::io

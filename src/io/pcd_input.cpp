@@ -6,6 +6,8 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +17,7 @@
 #include <limits>
 #include <new>
 #include <sstream>
+#include <exception>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
@@ -74,53 +77,162 @@ void checkBodySize(const std::string& path, std::uintmax_t file_size, int data_t
   }
 }
 
-// PCL's readHeader allocates (and zero-fills) the whole point buffer the header announces
-// before reading a byte of data, so a corrupt WIDTH or POINTS line can ask for terabytes
-// (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the machine.
-// This reads the header's sizes itself and refuses a body that the file cannot hold; it only
-// rejects, and leaves every other judgement of the header to PCL.
-void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::uint64_t point_step = 0;
-  std::uint64_t points = 0;
-  std::vector<std::uint64_t> sizes;
-  std::vector<std::uint64_t> counts;
-  std::size_t field_count = 0;
-  // A header is a few hundred bytes; 64 KiB without DATA is not a header.
-  while (in.tellg() < 65536 && std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string key;
-    words >> key;
-    std::uint64_t value = 0;
-    if (key == "FIELDS") {
-      std::string name;
-      while (words >> name) ++field_count;
-    } else if (key == "SIZE") {
-      while (words >> value) sizes.push_back(value);
-    } else if (key == "COUNT") {
-      while (words >> value) counts.push_back(value);
-    } else if (key == "POINTS") {
-      words >> points;
-    } else if (key == "DATA") {
-      std::string type;
-      words >> type;
-      if (sizes.size() != field_count || points == 0) return;  // PCL will say what is wrong
-      counts.resize(field_count, 1);
-      for (std::size_t i = 0; i < field_count; ++i) point_step += std::min<std::uint64_t>(sizes[i], 8) * counts[i];
-      const std::streamoff header_end = in.tellg();
-      if (header_end < 0) return;
-      const std::uint64_t body = file_size - static_cast<std::uint64_t>(header_end);
-      // ASCII needs at least two characters (digit and separator) per value; LZF packs at
-      // most about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
-      const std::uint64_t per_point_bound = type == "ascii" ? 2 * field_count : point_step;
-      const std::uint64_t factor = type == "binary_compressed" ? 100 : 1;
-      if (points > std::numeric_limits<std::uint64_t>::max() / 1024 || points * per_point_bound > body * factor) {
-        fail("corrupt or truncated PCD file: the header announces " + std::to_string(points) + " points, the file's " +
-             std::to_string(body) + " bytes of data cannot hold them");
-      }
-      return;
+// A number of the header's SIZE, COUNT or POINTS line: PCL reads it with >> into an int or a
+// size_t, which turns an overflowing or negative value into a huge size. One that does not
+// start with digits or exceeds INT_MAX is refused here.
+std::uint64_t headerCount(const std::string& key, const std::string& word) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (error != std::errc() || value > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    std::string shown = word.substr(0, 24);
+    for (char& c : shown) c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    fail("corrupt PCD header: " + key + " value '" + shown + "' is not a count");
+  }
+  return value;
+}
+
+// The words of a header line as PCL splits them: at spaces, tabs and carriage returns.
+std::vector<std::string> headerWords(const std::string& line) {
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  while (start < line.size()) {
+    const std::size_t end = std::min(line.find_first_of(" \t\r\n", start), line.size());
+    if (end > start) words.push_back(line.substr(start, end - start));
+    start = end + 1;
+  }
+  return words;
+}
+
+// PCL's header loop (PCDReader::readHeader, 1.13), as far as the point buffer goes: it reads
+// lines until one whose first word is no keyword, recognises a keyword by its prefix
+// ("SIZEx" is a SIZE line), parses lines after DATA too, and allocates POINTS x the point
+// size so far at every POINTS line.
+class HeaderSizes {
+ public:
+  /// Takes one line; false when PCL's loop would stop at it. Where this could read a line
+  /// otherwise than PCL (control characters, which PCL's word splitting and its >> treat
+  /// differently; a SIZE or COUNT line that does not give one value per field), the file is
+  /// refused: no valid header has them.
+  bool add(const std::string& line, std::streamoff end_of_line) {
+    if (line.empty() || line == "\n") return true;  // PCL skips empty lines
+    std::vector<std::string> words = headerWords(line);
+    if (words.empty()) return false;  // blanks only: no keyword, PCL stops
+    const std::string key = words.front();
+    words.erase(words.begin());
+    const auto is = [&key](const char* keyword) { return key.rfind(keyword, 0) == 0; };
+    if (is("#")) return true;
+    const bool keyword = is("VERSION") || is("TYPE") || is("VIEWPOINT") || is("WIDTH") || is("HEIGHT") ||
+                         is("FIELDS") || is("COLUMNS") || is("SIZE") || is("COUNT") || is("POINTS") || is("DATA");
+    if (!keyword) return false;
+    if (std::any_of(line.begin(), line.end(), [](char c) {
+          const auto byte = static_cast<unsigned char>(c);
+          return byte < 0x20 && c != '\t' && c != '\r' && c != '\n';
+        })) {
+      fail("corrupt PCD header: control characters in a header line");
     }
+    if (is("FIELDS") || is("COLUMNS")) {
+      sizes_.assign(words.size(), 4);
+      counts_.assign(words.size(), 1);
+    } else if (is("SIZE") || is("COUNT")) {
+      if (words.size() != sizes_.size()) {
+        fail(std::string("corrupt PCD header: ") + (is("SIZE") ? "SIZE" : "COUNT") + " gives " +
+             std::to_string(words.size()) + " values for " + std::to_string(sizes_.size()) + " fields");
+      }
+      std::vector<std::uint64_t>& values = is("SIZE") ? sizes_ : counts_;
+      for (std::size_t i = 0; i < words.size(); ++i) values[i] = headerCount(is("SIZE") ? "SIZE" : "COUNT", words[i]);
+    } else if (is("POINTS")) {
+      const std::uint64_t points = words.empty() ? 0 : headerCount("POINTS", words[0]);
+      largest_buffer_ = std::max(largest_buffer_, points * pointStep());
+    } else if (is("DATA")) {
+      data_type_ = words.empty() ? "" : words[0];
+      data_index_ = end_of_line;
+    }
+    return true;
+  }
+
+  /// Refuses a buffer that the file's body cannot fill.
+  void check(std::uint64_t file_size) const {
+    if (pointStep() > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+      fail("corrupt PCD header: SIZE x COUNT gives points of " + std::to_string(pointStep()) + " bytes");
+    }
+    const std::uint64_t body = data_index_ > 0 && static_cast<std::uint64_t>(data_index_) <= file_size
+                                   ? file_size - static_cast<std::uint64_t>(data_index_)
+                                   : file_size;
+    // An ASCII value takes at least two characters (a digit and a separator) and at most 8
+    // bytes; LZF packs at most about 100:1 (a 3-byte back-reference repeats up to 264 bytes).
+    const std::uint64_t expansion = data_type_.rfind("binary_compressed", 0) == 0 ? 100
+                                    : data_type_.rfind("binary", 0) == 0          ? 1
+                                                                                  : 4;
+    if (largest_buffer_ > body * expansion) {
+      fail("corrupt or truncated PCD file: the header announces " + std::to_string(largest_buffer_) +
+           " bytes of points, the file's " + std::to_string(body) + " bytes of data cannot hold them");
+    }
+  }
+
+ private:
+  // Counts are below 2^31 and a line holds at most 64 Ki fields: no overflow.
+  std::uint64_t pointStep() const {
+    std::uint64_t step = 0;
+    for (std::size_t i = 0; i < sizes_.size(); ++i) step += sizes_[i] * counts_[i];
+    return step;
+  }
+
+  std::vector<std::uint64_t> sizes_;
+  std::vector<std::uint64_t> counts_;
+  std::uint64_t largest_buffer_ = 0;
+  std::string data_type_;
+  std::streamoff data_index_ = 0;
+};
+
+// PCL's readHeader allocates (and zero-fills) the point buffer the header announces before
+// reading a byte of data, so a corrupt POINTS, SIZE or COUNT line can ask for terabytes
+// (std::bad_alloc) or, worse, for a few gigabytes that are granted and swap the machine. This
+// follows PCL's header loop and refuses a buffer that the file cannot fill; it only rejects,
+// and leaves every other judgement of the header to PCL.
+void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
+  // A header is a few hundred bytes: the first 64 KiB hold it, or the file is refused.
+  constexpr std::size_t kHeaderLimit = 65536;
+  std::string start(static_cast<std::size_t>(std::min<std::uintmax_t>(file_size, kHeaderLimit)), '\0');
+  std::ifstream in(path, std::ios::binary);
+  in.read(start.data(), static_cast<std::streamsize>(start.size()));
+  start.resize(static_cast<std::size_t>(in.gcount()));
+  HeaderSizes header;
+  std::size_t line_start = 0;
+  bool header_ended = false;
+  while (line_start < start.size()) {
+    std::size_t line_end = start.find('\n', line_start);
+    if (line_end == std::string::npos && start.size() < file_size) break;  // the line goes on past the limit
+    line_end = line_end == std::string::npos ? start.size() : line_end + 1;
+    if (!header.add(start.substr(line_start, line_end - line_start), static_cast<std::streamoff>(line_end))) {
+      header_ended = true;
+      break;
+    }
+    line_start = line_end;
+  }
+  if (!header_ended && start.size() < file_size) fail("corrupt PCD header: more than 64 KiB of header lines");
+  header.check(file_size);
+}
+
+// PCL parses the header line by line, each line overriding what an earlier one said (and
+// lines after DATA are parsed as header too), and reads the body with the result: a SIZE line
+// after TYPE leaves a float in a 1-byte slot, a SIZE or COUNT line after POINTS leaves a
+// buffer smaller than the points, and PCL then writes past the buffer. So every field must
+// fit in its point with the size of its type, and the buffer must hold the points, before
+// PCL reads a byte of the body. (Found by fuzz_pcd_loader as heap corruption.)
+void checkLayout(const pcl::PCLPointCloud2& cloud) {
+  for (const pcl::PCLPointField& field : cloud.fields) {
+    const std::uint64_t size = pcl::getFieldSize(field.datatype);
+    if (size == 0 || field.count == 0) {
+      fail("corrupt PCD header: field " + field.name.substr(0, 24) + " has no valid SIZE, TYPE and COUNT");
+    }
+    if (std::uint64_t{field.offset} + std::uint64_t{field.count} * size > cloud.point_step) {
+      fail("corrupt PCD header: field " + field.name.substr(0, 24) +
+           " does not fit in its point (SIZE, TYPE and COUNT disagree)");
+    }
+  }
+  if (cloud.data.size() != std::uint64_t{cloud.width} * cloud.height * cloud.point_step) {
+    fail("corrupt PCD header: WIDTH x HEIGHT points of " + std::to_string(cloud.point_step) +
+         " bytes do not match the POINTS line");
   }
 }
 
@@ -161,14 +273,22 @@ RawCloud readRawCloud(const std::string& path) {
            ")");
     }
     if (data_index > file_size) fail("truncated PCD file: the header is incomplete");
+    checkLayout(raw.cloud);
     checkBodySize(path, file_size, data_type, data_index, raw.cloud);
     if (reader.read(path, raw.cloud, raw.origin, raw.orientation, version) < 0) {
       fail("corrupt or truncated PCD file (PCL cannot read its data)");
     }
   } catch (const pcl::PCLException& e) {
     fail(std::string("corrupt PCD file: ") + e.what());
+  } catch (const std::runtime_error&) {
+    throw;  // this reader's own reasons
   } catch (const std::bad_alloc&) {
     fail("corrupt PCD file: its header announces more points than fit in memory");
+  } catch (const std::exception& e) {
+    // PCL's header parser indexes the words of a line with at() and converts them with
+    // boost::lexical_cast: a line with too few words or a bad number throws
+    // std::out_of_range or boost::bad_lexical_cast, not its own exception.
+    fail(std::string("not a PCD file, or its header is invalid (") + e.what() + ")");
   }
   return raw;
 }

@@ -9,13 +9,18 @@
 #include <pcl/io/pcd_io.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "io/depth_png.h"
 #include "temp_path.h"
 
 namespace {
@@ -204,12 +209,210 @@ TEST_F(InputFrame, RejectsACloudWithoutXyz) {
   expectRejected("no x y z");
 }
 
+// Found by fuzz_pcd_loader: PCL's header parser takes any line starting with "DATA" for the
+// DATA line and reads its second word with at(), which throws std::out_of_range when the line
+// is one word; the reader must turn that into its own error, as for every broken header.
+TEST_F(InputFrame, RejectsADataLineOfOneWord) {
+  const std::string header =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\n";
+  const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  for (const std::string& data_line : {std::string("DATAascii\n"), std::string("DATA\x8b\0\0compressed\n", 17)}) {
+    SCOPED_TRACE(data_line);
+    writeBytes(path_, header + data_line + points);
+    expectRejected("PCD");
+  }
+}
+
+// Found by fuzz_pcd_loader: PCL reads COUNT with >> into an int, so an overflowing value
+// became a count near 2^31 and PCL asked for 25 GB before reading the six points of this
+// file; a large but valid COUNT in an ASCII file did the same (the size check counted one
+// value per field).
+TEST_F(InputFrame, RefusesCountsAndSizesThatOverflowOrThatTheFileCannotHold) {
+  const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  const auto header = [](const std::string& count, const std::string& width, const std::string& points_line) {
+    return "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT " + count + "\nWIDTH " + width +
+           "\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + points_line + "\nDATA ascii\n";
+  };
+  const std::string overflow(120, '9');
+  for (const std::string& text :
+       {header(overflow + "1 1 1", "3", "6"), header("100000000 1 1", "3", "6"), header("-1 1 1", "3", "6"),
+        header("1 1 1", overflow, "6"), header("1 1 1", "3", "-6"), header("1 1 1", "2147483647", "6")}) {
+    SCOPED_TRACE(text);
+    writeBytes(path_, text + points);
+    expectRejected("header");  // refused from the header, before PCL allocates
+  }
+}
+
+// Found by fuzz_pcd_loader as heap corruption: PCL lets a later header line override an
+// earlier one and reads the body with what is left. A SIZE line after TYPE put 4-byte floats
+// into 1-byte slots; a second header after DATA (parsed as header too) resized the points
+// after their buffer was allocated. PCL wrote past the buffer; now the header is refused.
+TEST_F(InputFrame, RefusesHeadersWhoseFieldsDoNotFitTheirPoints) {
+  const std::string fields = "VERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\n";
+  const std::string grid = "WIDTH 2\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\n";
+  const std::string values = "1 2 3 4\n1 2 3 4\n1 2 3 4\n1 2 3 4\n";
+  for (const std::string& text :
+       {fields + "SIZECOUNT 1 1 1 1\n" + grid + "DATA ascii\n" + values,
+        fields + "COUNT 1 1 1 1\n" + grid + "SIZE 8 8 8 8\nDATA ascii\n" + values,
+        fields + "COUNT 1 1 1 1\n" + grid + "DATA ascii\nSIZE 1 1 1 1\n" + values,
+        fields + "COUNT 1 1 1 1\n" + grid + "COUNT 2 2 2 2\nDATA ascii\n" + values + values}) {
+    SCOPED_TRACE(text);
+    writeBytes(path_, text);
+    expectRejected("corrupt PCD header");
+  }
+}
+
+// PCL goes on parsing header lines after DATA, and takes "POINTSx" for POINTS: a POINTS line
+// there allocated its buffer (24 GB here) before anything was read.
+TEST_F(InputFrame, RefusesABufferAnnouncedAfterTheDataLine) {
+  const std::string header =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n";
+  const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"POINTS 2000000000\n", "bytes of points"},
+      {"POINTSX 2000000000\n", "bytes of points"},
+      {"# comment\nPOINTS 2000000000\n", "bytes of points"},
+      {"COUNTX 100000000 1 1\nPOINTS 4\n", "bytes of points"},
+      {"COUNT -100 1 1\n", "is not a count"}};
+  for (const auto& [line, reason] : cases) {
+    SCOPED_TRACE(line);
+    writeBytes(path_, header + line + points);
+    expectRejected(reason);
+  }
+}
+
+// PCL counts a line's values at spaces, tabs and carriage returns but reads them with >>,
+// which also stops at a vertical tab; the fuzzer used the difference to make PCL allocate
+// 12 GB behind the size check's back. Such lines are refused.
+TEST_F(InputFrame, RefusesHeaderLinesWithControlCharacters) {
+  const std::string rest =
+      "TYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 6\nDATA ascii\n"
+      "1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
+  for (const std::string& size_line :
+       {std::string("SIZE 4 4\v4\n"), std::string("SIZE 4 4 4\x02\n"), std::string("SIZE\x01 4 4 4\n", 13)}) {
+    SCOPED_TRACE(size_line);
+    writeBytes(path_, "VERSION 0.7\nFIELDS x y z\n" + size_line + rest);
+    expectRejected("control characters");
+  }
+  writeBytes(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\n" + rest);
+  expectRejected("SIZE gives 2 values for 3 fields");
+}
+
+// A binary body is read as lines until one is no keyword; a first data byte of '#' makes PCL
+// take the data up to the next newline for a comment. Such a file still loads.
+TEST_F(InputFrame, ReadsABinaryBodyThatStartsLikeAComment) {
+  pcl::PointCloud<pcl::PointXYZ> cloud = smallGrid();
+  float x = 0.0f;
+  const std::uint32_t bits = 0x3F800023;  // 1.0000042f: its first byte in the file is '#'
+  std::memcpy(&x, &bits, sizeof(x));
+  cloud[0].x = x;
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path_.string(), cloud), 0);
+  const auto frame = loadInputFrame(path_.string());
+  EXPECT_EQ(frame.xyz[0].x, x);
+  EXPECT_EQ(frame.xyz[5].z, cloud[5].z);
+}
+
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
   std::string text =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
   writeBytes(path_, text);
   expectRejected("not a single float or double");
+}
+
+// ---- depth images ----------------------------------------------------------------------
+
+class DepthInputFrame : public ::testing::Test {
+ protected:
+  void TearDown() override { fs::remove(path_); }
+
+  // A 4 x 3 depth image with one pixel without a return.
+  void writeDepth() const {
+    floodplane::io::DepthImage image;
+    image.width = 4;
+    image.height = 3;
+    image.depth = {1000, 1100, 1200, 1300, 2000, 0, 2200, 2300, 3000, 3100, 3200, 65535};
+    floodplane::io::writeDepthPng(path_.string(), image);
+  }
+
+  const floodplane::io::DepthCamera camera_{500.0, 400.0, 1.5, 1.0, 1000.0};
+  fs::path path_ = floodplane::test::uniqueTempPath(".png");
+};
+
+TEST_F(DepthInputFrame, BackProjectsADepthPngOnItsGrid) {
+  writeDepth();
+  const auto frame = loadInputFrame(path_.string(), camera_);
+  ASSERT_EQ(frame.xyz.width, 4u);
+  ASSERT_EQ(frame.xyz.height, 3u);
+  EXPECT_FALSE(frame.xyz.is_dense);
+  EXPECT_FALSE(frame.xyzrgb.has_value());
+  EXPECT_FALSE(frame.labels.has_value());
+  EXPECT_TRUE(frame.xyz.sensor_origin_.isZero());
+  EXPECT_FLOAT_EQ(frame.xyz.at(0, 0).z, 1.0f);
+  EXPECT_FLOAT_EQ(frame.xyz.at(0, 0).x, static_cast<float>(-1.5 * 1.0 / 500.0));
+  EXPECT_FLOAT_EQ(frame.xyz.at(0, 0).y, static_cast<float>(-1.0 * 1.0 / 400.0));
+  EXPECT_FLOAT_EQ(frame.xyz.at(3, 2).z, 65.535f);
+  EXPECT_FLOAT_EQ(frame.xyz.at(3, 2).x, static_cast<float>(1.5 * 65.535 / 500.0));
+  EXPECT_FLOAT_EQ(frame.xyz.at(3, 2).y, static_cast<float>(1.0 * 65.535 / 400.0));
+  EXPECT_TRUE(std::isnan(frame.xyz.at(1, 1).x) && std::isnan(frame.xyz.at(1, 1).z)) << "zero depth: no return";
+}
+
+TEST_F(DepthInputFrame, DividesTheUnitsByTheDepthScale) {
+  writeDepth();
+  floodplane::io::DepthCamera tum = camera_;
+  tum.depth_scale = 5000.0;
+  EXPECT_FLOAT_EQ(loadInputFrame(path_.string(), tum).xyz.at(2, 1).z, 2200.0f / 5000.0f);
+}
+
+TEST_F(DepthInputFrame, TellsAPngByItsExtensionInAnyCase) {
+  EXPECT_TRUE(floodplane::io::isDepthImagePath("a/b/frame.png"));
+  EXPECT_TRUE(floodplane::io::isDepthImagePath("FRAME.PNG"));
+  EXPECT_FALSE(floodplane::io::isDepthImagePath("frame.pcd"));
+  EXPECT_FALSE(floodplane::io::isDepthImagePath("png"));
+  EXPECT_FALSE(floodplane::io::isDepthImagePath("frame.png.pcd"));
+  fs::remove(path_);
+  path_ = floodplane::test::uniqueTempPath(".PNG");
+  writeDepth();
+  EXPECT_EQ(loadInputFrame(path_.string(), camera_).xyz.width, 4u);
+}
+
+TEST_F(DepthInputFrame, NeedsTheIntrinsics) {
+  writeDepth();
+  try {
+    loadInputFrame(path_.string());
+    ADD_FAILURE() << "a depth image without intrinsics was read";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("intrinsics"), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(DepthInputFrame, RefusesIntrinsicsItCannotUse) {
+  writeDepth();
+  floodplane::io::DepthCamera bad = camera_;
+  bad.fy = 0.0;
+  EXPECT_THROW(loadInputFrame(path_.string(), bad), std::invalid_argument);
+}
+
+TEST_F(DepthInputFrame, RefusesADepthImageOfOneRow) {
+  floodplane::io::DepthImage image;
+  image.width = 5;
+  image.height = 1;
+  image.depth.assign(5, 1000);
+  floodplane::io::writeDepthPng(path_.string(), image);
+  EXPECT_THROW(loadInputFrame(path_.string(), camera_), std::runtime_error);
+}
+
+TEST_F(DepthInputFrame, ReportsABrokenPngAsOneLine) {
+  writeBytes(path_, "\x89PNG\r\n\x1a\n but then nothing");
+  try {
+    loadInputFrame(path_.string(), camera_);
+    ADD_FAILURE() << "a broken PNG was read";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("PNG"), std::string::npos) << error.what();
+    EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
+  }
 }
 
 // The checks only reject: on real sensor frames the reader gives what PCL's own loader gives.

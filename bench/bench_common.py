@@ -1,0 +1,50 @@
+"""What the Python benchmarks share: the machine description printed before the figures,
+medians, and the project's default paths (the build tree's package and apps)."""
+
+import os
+import pathlib
+import platform
+import statistics
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+
+
+def use_build_tree(build):
+    """Imports floodplane from `build`/python unless it is importable already."""
+    package = pathlib.Path(build, "python")
+    if package.is_dir() and str(package) not in sys.path:
+        sys.path.insert(0, str(package))
+
+
+def machine():
+    """One line: CPU model, cores, memory, Python and load average."""
+    model = "unknown CPU"
+    try:
+        for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    memory = ""
+    try:
+        kib = int(pathlib.Path("/proc/meminfo").read_text().split()[1])
+        memory = f", {kib / 2**20:.0f} GiB"
+    except (OSError, ValueError, IndexError):
+        pass
+    load = ", load average %.2f %.2f %.2f" % os.getloadavg()
+    return f"{model}, {os.cpu_count()} cores{memory}, Python {platform.python_version()}{load}"
+
+
+def median(values):
+    return statistics.median(values)
+
+
+def run_pcd_segment(binary, inputs, out_dir, *options):
+    """Runs pcd_segment quietly; raises with its stderr when it fails."""
+    completed = subprocess.run([str(binary), *map(str, inputs), "-o", str(out_dir), "-q", *map(str, options)],
+                               capture_output=True, text=True)
+    if completed.returncode != 0:
+        raise RuntimeError(f"pcd_segment failed: {completed.stderr.strip()}")

@@ -1,0 +1,10 @@
+#pragma once
+// The module's file functions (PCD and depth PNG in and out) and the depth back-projection.
+
+#include <pybind11/pybind11.h>
+
+namespace floodplane::python {
+
+void bindFileFunctions(pybind11::module_& module);
+
+}  // namespace floodplane::python

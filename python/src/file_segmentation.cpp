@@ -1,0 +1,68 @@
+#include "file_segmentation.h"
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "io/input_frame.h"
+#include "io/labelled_cloud.h"
+#include "io/pcd_file.h"
+
+namespace floodplane::python {
+namespace {
+
+// The points as the core wants them: in place when the sensor is at the origin (PointXYZ is
+// x y z and a padding float), otherwise shifted there, as the PCL class does.
+PointGrid sensorFrameGrid(const pcl::PointCloud<pcl::PointXYZ>& cloud, std::vector<float>& shifted) {
+  PointGrid grid;
+  grid.width = static_cast<int>(cloud.width);
+  grid.height = static_cast<int>(cloud.height);
+  const Eigen::Vector3f origin = cloud.sensor_origin_.head<3>();
+  if (origin.isZero(0.0f)) {
+    grid.data = &cloud[0].x;
+    grid.stride = sizeof(pcl::PointXYZ) / sizeof(float);
+    return grid;
+  }
+  shifted.resize(cloud.size() * 3);
+  float* out = shifted.data();
+  for (const pcl::PointXYZ& p : cloud) {
+    *out++ = p.x - origin.x();
+    *out++ = p.y - origin.y();
+    *out++ = p.z - origin.z();
+  }
+  grid.data = shifted.data();
+  grid.stride = 3;
+  return grid;
+}
+
+}  // namespace
+
+FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const std::string& output,
+                        const std::optional<io::DepthCamera>& camera) {
+  if (camera && !camera->problem().empty()) throw std::invalid_argument(camera->problem());
+  io::InputFrame frame;
+  try {
+    frame = io::loadInputFrame(input, camera);
+  } catch (const std::runtime_error& error) {
+    throw InputFileError(error.what());
+  }
+  std::vector<float> shifted;
+  const PointGrid grid = sensorFrameGrid(frame.xyz, shifted);
+  Segmenter::Options options;
+  options.refine = true;  // pcd_segment's segmentAndRefine
+  const auto start = std::chrono::steady_clock::now();
+  const Segmentation& result = segmenter.segment(grid, options);
+  const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+  try {
+    if (frame.xyzrgb) {
+      io::savePcd(output, io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, result.labels));
+    } else {
+      io::savePcd(output, io::labelledCloud<pcl::PointXYZL>(frame.xyz, result.labels));
+    }
+  } catch (const std::runtime_error& error) {
+    throw OutputFileError(error.what());
+  }
+  return {result.width, result.height, result.planes.size(), elapsed.count()};
+}
+
+}  // namespace floodplane::python

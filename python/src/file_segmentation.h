@@ -1,0 +1,37 @@
+#pragma once
+// One input file to one label file, as pcd_segment does it: the same reader, the same
+// segmentation (with refinement, the sensor moved to the origin), the same output file
+// (x y z [rgb] label, binary compressed, the input's grid and pose), written atomically.
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "floodplane/segmenter.h"
+#include "io/depth_camera.h"
+
+namespace floodplane::python {
+
+struct FileSummary {
+  int width = 0;
+  int height = 0;
+  std::size_t planes = 0;
+  double ms = 0.0;  ///< the segmentation call alone
+};
+
+/// The input file cannot be read as a frame (the reason, without the path).
+struct InputFileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+/// The output file cannot be written.
+struct OutputFileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Reads `input` (PCD, or a depth PNG with `camera`), segments it with `segmenter` and writes
+/// `output`. Plain C++ (no Python), so that it runs without the GIL. Throws InputFileError,
+/// OutputFileError, std::invalid_argument for a camera with a problem().
+FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const std::string& output,
+                        const std::optional<io::DepthCamera>& camera);
+
+}  // namespace floodplane::python

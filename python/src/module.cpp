@@ -1,0 +1,20 @@
+// The compiled part of the floodplane package (imported as floodplane._floodplane; the
+// package's __init__.py is the public face).
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "file_functions.h"
+#include "floodplane/version.h"
+#include "params_kwargs.h"
+#include "segmentation_result.h"
+#include "segmenter_binding.h"
+
+PYBIND11_MODULE(_floodplane, m) {
+  m.doc() = "Plane segmentation of organized point clouds by seeded flood fill (compiled core).";
+  m.attr("__version__") = FLOODPLANE_VERSION_STRING;
+  m.attr("PARAMETER_NAMES") = pybind11::tuple(pybind11::cast(floodplane::python::parameterNames()));
+  floodplane::python::bindSegmentationResult(m);
+  floodplane::python::bindSegmenter(m);
+  floodplane::python::bindFileFunctions(m);
+}

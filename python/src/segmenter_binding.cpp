@@ -1,0 +1,141 @@
+#include "segmenter_binding.h"
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "errors.h"
+#include "file_segmentation.h"
+#include "floodplane/segmenter.h"
+#include "params_kwargs.h"
+#include "point_arrays.h"
+#include "segmentation_result.h"
+
+namespace floodplane::python {
+namespace {
+
+namespace py = pybind11;
+
+// The core's Segmenter is one-thread-at-a-time; the GIL is released while it works, so two
+// Python threads sharing one Segmenter take turns on this mutex instead.
+struct SharedSegmenter {
+  explicit SharedSegmenter(const Params& params) : core(params) {}
+  Segmenter core;
+  std::mutex mutex;
+};
+
+SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool refine, bool measure_phases) {
+  const GridArray input = gridFromArray(points, "Segmenter.segment: points");
+  auto copy = std::make_shared<Segmentation>();
+  SegmentationResult result;
+  {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(self.mutex);
+    Segmenter::Options options;
+    options.refine = refine;
+    options.measure_phases = measure_phases;
+    const auto start = std::chrono::steady_clock::now();
+    const Segmentation& segmentation = self.core.segment(input.grid, options);
+    const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+    result.ms = elapsed.count();
+    *copy = segmentation;  // the next call overwrites the core's result
+  }
+  result.segmentation = std::move(copy);
+  return result;
+}
+
+std::optional<io::DepthCamera> cameraFrom(const std::optional<std::vector<double>>& intrinsics, double depth_scale,
+                                          const std::string& function) {
+  if (!intrinsics) return std::nullopt;
+  if (intrinsics->size() != 4) {
+    raiseValueError(function + ": intrinsics must be (fx, fy, cx, cy), got " + std::to_string(intrinsics->size()) +
+                    " values");
+  }
+  const std::vector<double>& k = *intrinsics;
+  const io::DepthCamera camera{k[0], k[1], k[2], k[3], depth_scale};
+  const std::string problem = camera.problem();
+  if (!problem.empty()) raiseValueError(function + ": " + problem);
+  return camera;
+}
+
+py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& input_file,
+                            const std::filesystem::path& output_file,
+                            const std::optional<std::vector<double>>& intrinsics, double depth_scale) {
+  const std::string input = input_file.string();
+  const std::string output = output_file.string();
+  const std::string function = "Segmenter.segment_file";
+  const std::optional<io::DepthCamera> camera = cameraFrom(intrinsics, depth_scale, function);
+  FileSummary summary;
+  std::string read_error;
+  std::string write_error;
+  {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(self.mutex);
+    try {
+      summary = segmentFile(self.core, input, output, camera);
+    } catch (const OutputFileError& error) {
+      write_error = error.what();
+    } catch (const InputFileError& error) {
+      read_error = error.what();
+    }
+  }
+  if (!write_error.empty()) raiseFileError(FileAccess::write, function, "output", output, write_error);
+  if (!read_error.empty()) raiseFileError(FileAccess::read, function, "input", input, read_error);
+  py::dict out;
+  out["width"] = summary.width;
+  out["height"] = summary.height;
+  out["planes"] = summary.planes;
+  out["ms"] = summary.ms;
+  return out;
+}
+
+std::string segmenterRepr(const SharedSegmenter& self) {
+  std::string text = "Segmenter(";
+  bool first = true;
+  for (const auto& [name, value] : paramsToDict(self.core.params())) {
+    text += (first ? "" : ", ") + std::string(py::str(name)) + "=" + std::string(py::repr(value));
+    first = false;
+  }
+  return text + ")";
+}
+
+}  // namespace
+
+void bindSegmenter(py::module_& m) {
+  py::class_<SharedSegmenter>(m, "Segmenter",
+                              "Plane segmentation of organized point clouds by seeded flood fill. The keywords are "
+                              "the fields of floodplane::Params; None (the default of the lengths) derives a "
+                              "value from the frame's noise. Keeps its buffers between calls: reuse one for a "
+                              "sequence of frames. Thread-safe (calls on one Segmenter take turns; use one per "
+                              "thread to run in parallel); the GIL is released while it segments.")
+      .def(py::init([](const py::kwargs& keywords) {
+             return std::make_unique<SharedSegmenter>(paramsFromKeywords(keywords, "Segmenter"));
+           }),
+           "Segmenter(**params): distance_threshold, seed_size, angular_threshold, merge_distance, min_inliers, "
+           "maximum_curvature, project_points, subsampling, depth_noise_coefficient, depth_noise_constant")
+      .def_property_readonly(
+          "params", [](const SharedSegmenter& self) { return paramsToDict(self.core.params()); },
+          "every parameter as a dict (None: derived from the frame)")
+      .def("segment", &segmentArray, py::arg("points"), py::kw_only(), py::arg("refine") = true,
+           py::arg("measure_phases") = false,
+           "Segments `points`, an (H, W, 3) float32 or float64 array in metres with the camera at the origin "
+           "(NaN: no return). Read in place when float32 with x y z adjacent, converted otherwise. `refine` grows "
+           "the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the result's "
+           "phases. Returns a Segmentation.")
+      .def("segment_file", &segmentFileSummary, py::arg("input"), py::arg("output"), py::kw_only(),
+           py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0,
+           "Segments the file `input` and writes its labelled cloud to `output` as pcd_segment does (the same "
+           "bytes). `input` is a PCD file, or a 16-bit depth PNG with intrinsics=(fx, fy, cx, cy) and depth_scale "
+           "(units per metre). Returns {'width', 'height', 'planes', 'ms'}. Raises OSError for a file that cannot "
+           "be read or written.")
+      .def("__repr__", &segmenterRepr);
+}
+
+}  // namespace floodplane::python

@@ -1,0 +1,264 @@
+// pcd_segment on 16-bit depth PNG images: the back-projected points and the library's labels
+// in the output, --intrinsics and --depth-scale, directories of depth images, and one clear
+// error for an 8-bit or colour PNG, a broken file and missing or bad intrinsics.
+
+#include <gtest/gtest.h>
+#include <pcl/console/print.h>
+#include <pcl/io/pcd_io.h>
+#include <png.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "floodplane/flood_fill_plane_segmentation.h"
+#include "io/depth_camera.h"
+#include "io/depth_png.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string quote(const std::string& word) {
+  std::string quoted = "'";
+  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::size_t lineCount(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// The camera of the scene: a Kinect's f = 525 at 160 x 120.
+const floodplane::io::DepthCamera kCamera{131.25, 131.25, 79.5, 59.5, 5000.0};
+const std::string kIntrinsics = "131.25,131.25,79.5,59.5";
+
+// A wall at 2 m and a floor 0.5 m below the camera, seen as a TUM-style depth image (units of
+// 0.2 mm), with a block of pixels without a return.
+floodplane::io::DepthImage twoPlaneDepth() {
+  floodplane::io::DepthImage image;
+  image.width = 160;
+  image.height = 120;
+  for (int v = 0; v < image.height; ++v) {
+    for (int u = 0; u < image.width; ++u) {
+      const double ry = (v - kCamera.cy) / kCamera.fy;
+      const double z = ry > 0.0 ? std::min(2.0, 0.5 / ry) : 2.0;
+      const bool hole = v >= 10 && v < 14 && u >= 20 && u < 24;
+      image.depth.push_back(hole ? 0 : static_cast<std::uint16_t>(std::lround(z * kCamera.depth_scale)));
+    }
+  }
+  return image;
+}
+
+// The points pcd_segment should segment: the same back-projection.
+pcl::PointCloud<pcl::PointXYZ> backProjected(const floodplane::io::DepthImage& image) {
+  pcl::PointCloud<pcl::PointXYZ> cloud(static_cast<std::uint32_t>(image.width),
+                                       static_cast<std::uint32_t>(image.height));
+  for (int v = 0; v < image.height; ++v) {
+    for (int u = 0; u < image.width; ++u) {
+      const std::size_t i = static_cast<std::size_t>(v * image.width + u);
+      floodplane::io::backProjectPixel(u, v, image.depth[i], kCamera, cloud[i].data);
+    }
+  }
+  cloud.is_dense = false;
+  return cloud;
+}
+
+std::vector<std::uint32_t> libraryLabels(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;
+  segmentation.setInputCloud(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(cloud));
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
+  pcl::PointCloud<pcl::Label>::Ptr labels;
+  segmentation.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  std::vector<std::uint32_t> out;
+  for (const auto& l : *labels) out.push_back(l.label);
+  return out;
+}
+
+// Writes a 4 x 2 PNG of libpng's simplified `format` (8-bit grey, colour...).
+void writeOtherPng(const fs::path& path, png_uint_32 format) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = 4;
+  png.height = 2;
+  png.format = format;
+  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(png), 7);
+  ASSERT_NE(png_image_write_to_file(&png, path.c_str(), 0, pixels.data(), 0, nullptr), 0) << png.message;
+}
+
+class PcdSegmentDepth : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    std::string pattern = (fs::temp_directory_path() / "pcd_segment_depth.XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  Result run(const std::vector<std::string>& arguments) const {
+    std::string command = quote(PCD_SEGMENT_BINARY);
+    for (const std::string& argument : arguments) command += " " + quote(argument);
+    const fs::path out = dir_ / ".stdout";
+    const fs::path err = dir_ / ".stderr";
+    command = "exec " + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    const int status = std::system(("sh -c " + quote(command)).c_str());
+    Result result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = readFile(out);
+    result.err = readFile(err);
+    fs::remove(out);
+    fs::remove(err);
+    return result;
+  }
+
+  std::string writeDepth(const std::string& name) const {
+    floodplane::io::writeDepthPng(path(name).string(), twoPlaneDepth());
+    return path(name).string();
+  }
+
+  // One error line naming the input, exit code 1, nothing written.
+  void expectRejected(const std::string& input, const std::string& reason) const {
+    const Result result = run({input, "-o", path("out").string(), "--intrinsics", kIntrinsics});
+    EXPECT_EQ(result.exit_code, 1) << result.err;
+    EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+    EXPECT_TRUE(contains(result.err, input)) << result.err;
+    EXPECT_TRUE(contains(result.err, reason)) << "expected '" << reason << "' in: " << result.err;
+    EXPECT_TRUE(fs::is_empty(path("out")));
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(PcdSegmentDepth, WritesTheBackProjectedPointsAndTheLibrarysLabels) {
+  const std::string input = writeDepth("frame.png");
+  const Result result = run({input, "-o", path("out").string(), "--intrinsics", kIntrinsics, "--depth-scale", "5000"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "frame.png: 160x120, 2 planes, ")) << result.out;
+
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/frame.labels.pcd").string(), labelled), 0);
+  const pcl::PointCloud<pcl::PointXYZ> expected = backProjected(twoPlaneDepth());
+  ASSERT_EQ(labelled.width, 160u);
+  ASSERT_EQ(labelled.height, 120u);
+  std::vector<std::uint32_t> labels;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    if (!std::isfinite(expected[i].z)) {
+      ASSERT_FALSE(std::isfinite(labelled[i].z)) << i;
+    } else {
+      ASSERT_EQ(labelled[i].x, expected[i].x) << i;
+      ASSERT_EQ(labelled[i].y, expected[i].y) << i;
+      ASSERT_EQ(labelled[i].z, expected[i].z) << i;
+    }
+    labels.push_back(labelled[i].label);
+  }
+  EXPECT_EQ(labels, libraryLabels(expected));
+  EXPECT_EQ(*std::max_element(labels.begin(), labels.end()), 2u);
+}
+
+TEST_F(PcdSegmentDepth, TheDepthScaleIsUnitsPerMetreAndDefaultsToMillimetres) {
+  const std::string input = writeDepth("frame.png");
+  ASSERT_EQ(run({input, "-o", path("mm.pcd").string(), "--intrinsics", kIntrinsics}).exit_code, 0);
+  pcl::PointCloud<pcl::PointXYZL> millimetres;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("mm.pcd").string(), millimetres), 0);
+  EXPECT_FLOAT_EQ(millimetres.at(0, 0).z, 10.0f);  // 10000 units of 0.2 mm read as millimetres
+}
+
+TEST_F(PcdSegmentDepth, ReadsADirectorysDepthImagesOnlyWithIntrinsics) {
+  writeDepth("b.png");
+  writeDepth("a.png");
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path("c.pcd").string(), backProjected(twoPlaneDepth())), 0);
+  const Result with = run({dir_.string(), "-o", path("out").string(), "--intrinsics", kIntrinsics, "-q"});
+  ASSERT_EQ(with.exit_code, 0) << with.err;
+  EXPECT_TRUE(fs::exists(path("out/a.labels.pcd")));
+  EXPECT_TRUE(fs::exists(path("out/b.labels.pcd")));
+  EXPECT_TRUE(fs::exists(path("out/c.labels.pcd")));
+  // Without intrinsics a directory's PNG files are not inputs (they may be colour images).
+  const Result without = run({dir_.string(), "-o", path("out2").string(), "-q"});
+  ASSERT_EQ(without.exit_code, 0) << without.err;
+  EXPECT_EQ(std::distance(fs::directory_iterator(path("out2")), fs::directory_iterator()), 1);
+}
+
+TEST_F(PcdSegmentDepth, APngWithoutIntrinsicsIsAUsageError) {
+  const std::string input = writeDepth("frame.png");
+  const Result result = run({input, "-o", path("out").string()});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_TRUE(contains(result.err, "needs --intrinsics fx,fy,cx,cy")) << result.err;
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
+TEST_F(PcdSegmentDepth, RefusesBadIntrinsicsWithUsageAndExitCodeTwo) {
+  const std::string input = writeDepth("frame.png");
+  const std::vector<std::vector<std::string>> bad = {{"--intrinsics", "525,525,319.5"},
+                                                     {"--intrinsics", "525,525,319.5,239.5,1"},
+                                                     {"--intrinsics", "0,525,319.5,239.5"},
+                                                     {"--intrinsics", "525,abc,319.5,239.5"},
+                                                     {"--intrinsics", "525,525,nan,239.5"},
+                                                     {"--intrinsics", kIntrinsics, "--depth-scale", "0"},
+                                                     {"--intrinsics", kIntrinsics, "--depth-scale", "-5"}};
+  for (const auto& option : bad) {
+    std::vector<std::string> arguments = {input, "-o", path("out").string()};
+    arguments.insert(arguments.end(), option.begin(), option.end());
+    SCOPED_TRACE(option[1] + (option.size() > 2 ? " " + option[3] : ""));
+    const Result result = run(arguments);
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_TRUE(contains(result.err, "error")) << result.err;
+    EXPECT_FALSE(fs::exists(path("out")));
+  }
+  const Result named = run({input, "-o", path("out").string(), "--intrinsics", "0,525,319.5,239.5"});
+  EXPECT_TRUE(contains(named.err, "fx must be")) << named.err;
+}
+
+TEST_F(PcdSegmentDepth, RejectsAnEightBitPng) {
+  writeOtherPng(path("grey.png"), PNG_FORMAT_GRAY);
+  expectRejected(path("grey.png").string(), "not a depth image: 8 bits per pixel");
+}
+
+TEST_F(PcdSegmentDepth, RejectsAColourPng) {
+  writeOtherPng(path("colour.png"), PNG_FORMAT_RGB);
+  expectRejected(path("colour.png").string(), "not a depth image: a colour PNG");
+}
+
+TEST_F(PcdSegmentDepth, RejectsABrokenPng) {
+  const std::string input = writeDepth("frame.png");
+  const std::string bytes = readFile(input);
+  std::ofstream(input, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+  expectRejected(input, "corrupt or truncated PNG file");
+}
+
+TEST_F(PcdSegmentDepth, BatchGoesOnPastABadDepthImage) {
+  const std::string good = writeDepth("good.png");
+  std::ofstream(path("bad.png")) << "not a png";
+  const Result result = run({path("bad.png").string(), good, "-o", path("out").string(), "--intrinsics", kIntrinsics});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(contains(result.err, "bad.png: not a PNG file")) << result.err;
+  EXPECT_TRUE(fs::exists(path("out/good.labels.pcd")));
+}
+
+}  // namespace
