@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -29,6 +30,7 @@
 #include "io/label_palette.h"
 #include "io/png_file.h"
 #include "label_pcd.h"
+#include "ordered_batch.h"
 #include "output_paths.h"
 #include "planes_json.h"
 #include "progress.h"
@@ -58,6 +60,7 @@ struct Options {
   bool png = false;
   bool json = false;
   bool quiet = false;
+  unsigned jobs = pcd_segment::defaultJobs();  ///< inputs segmented at once
   bool view = false;
   std::optional<std::string> snapshot;  ///< given: the file, or empty for <name>.snapshot.png
   pcd_segment::SnapshotSettings snapshot_settings;
@@ -142,6 +145,11 @@ void addOutputFlags(CLI::App& app, Options& options) {
   app.add_flag("--png", options.png, "Also write <name>.labels.png (a colour per plane)");
   app.add_flag("--json", options.json, "Also write <name>.planes.json (planes, parameters, time)");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
+  app.add_option("-j,--jobs", options.jobs,
+                 "Inputs segmented at once, each on a thread of its own (default: one per core); "
+                 "outputs and messages are those of -j 1, in input order")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
 }
 
 // The 3-D outputs. The checks run while parsing, so a bad value fails before any work.
@@ -282,15 +290,17 @@ FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths&
   if (options.json) writeReport(paths.json, input, *points, segmentation.getParams(), segmented);
   FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}};
   if (options.snapshot || options.view) {
-    floodplane::view::PlaneScene scene =
-        pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients);
-    if (options.snapshot) {
-      const std::string& path = options.snapshot->empty() ? paths.snapshot : *options.snapshot;
-      pcd_segment::writeSnapshot(path, scene, options.snapshot_settings);
-    }
-    if (options.view) result.scene = std::move(scene);
+    result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients);
   }
   return result;
+}
+
+// The snapshot of one input, when asked for; drawn on the main thread (VTK renders from one
+// thread).
+void writeSnapshotOf(const pcd_segment::OutputPaths& paths, const FileResult& result, const Options& options) {
+  if (!options.snapshot || !result.scene) return;
+  const std::string& path = options.snapshot->empty() ? paths.snapshot : *options.snapshot;
+  pcd_segment::writeSnapshot(path, *result.scene, options.snapshot_settings);
 }
 
 bool createOutputDirectory(const fs::path& directory) {
@@ -311,32 +321,91 @@ void printResult(const std::string& input, const FileResult& result, const std::
             << result.segmentation_ms << " ms -> " << output << std::endl;
 }
 
-// Segments every input, going on past failures; returns the number that failed.
-std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, const Options& options, bool single_file,
-                       Segmentation& segmentation) {
-  pcd_segment::ProgressBar progress(files.size(), !options.quiet && files.size() > 3 && ::isatty(2));
-  std::map<std::string, std::string> file_of_name;  // two inputs of one name, one output
-  std::size_t failed = 0;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    progress.show(i);
-    const floodplane::io::InputFile& file = files[i];
-    try {
-      if (!file.error.empty()) throw std::runtime_error(file.error);
+// One input of a batch: where its outputs go, and why it cannot be segmented if it cannot.
+struct BatchItem {
+  const floodplane::io::InputFile* file = nullptr;
+  pcd_segment::OutputPaths paths;
+  std::string error;
+};
+
+// The batch's items in input order. Refused here, before any work, so that the outcome does
+// not depend on which thread gets there first: inputs the expansion found bad, and an input
+// whose outputs would overwrite an earlier one's (two inputs of one name).
+std::vector<BatchItem> batchItems(const std::vector<floodplane::io::InputFile>& files, const Options& options,
+                                  bool single_file) {
+  std::vector<BatchItem> items;
+  std::map<std::string, std::string> file_of_name;
+  for (const floodplane::io::InputFile& file : files) {
+    BatchItem item;
+    item.file = &file;
+    item.error = file.error;
+    if (item.error.empty()) {
       const auto [previous, inserted] = file_of_name.emplace(pcd_segment::outputName(file.path), file.path);
-      if (!inserted) {
-        throw std::runtime_error("has the same name as " + previous->second + ", whose outputs it would overwrite");
-      }
-      const pcd_segment::OutputPaths paths = pcd_segment::outputPaths(file.path, options.output, single_file);
-      const FileResult result = segmentFile(file.path, paths, segmentation, options);
-      progress.clear();
-      if (!options.quiet) printResult(file.path, result, paths.pcd);
-      if (result.scene) floodplane::view::showWindow(*result.scene, "pcd_segment: " + file.path);
+      if (!inserted) item.error = "has the same name as " + previous->second + ", whose outputs it would overwrite";
+      item.paths = pcd_segment::outputPaths(file.path, options.output, single_file);
+    }
+    items.push_back(std::move(item));
+  }
+  return items;
+}
+
+// What segmenting one input came to: its result, or the error that stopped it.
+struct Outcome {
+  std::optional<FileResult> result;
+  std::string error;
+};
+
+// Segments every input, options.jobs at a time, going on past failures; prints results and
+// errors in input order and returns the number of inputs that failed.
+std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, const Options& options, bool single_file,
+                       const floodplane::Params& params) {
+  const std::vector<BatchItem> items = batchItems(files, options, single_file);
+  pcd_segment::ProgressBar progress(items.size(), !options.quiet && items.size() > 3 && ::isatty(2));
+  progress.show(0);
+  std::size_t failed = 0;
+  const auto make_segmentation = [&params]() {
+    auto segmentation = std::make_unique<Segmentation>();
+    segmentation->setParams(params);
+    return segmentation;
+  };
+  const auto segment_item = [&](std::unique_ptr<Segmentation>& segmentation, std::size_t i) {
+    Outcome outcome;
+    const BatchItem& item = items[i];
+    if (!item.error.empty()) {
+      outcome.error = item.error;
+      return outcome;
+    }
+    try {
+      outcome.result = segmentFile(item.file->path, item.paths, *segmentation, options);
     } catch (const std::exception& error) {
-      progress.clear();
-      std::cerr << "pcd_segment: error: " << file.path << ": " << error.what() << "\n";
+      outcome.error = error.what();
+    } catch (...) {
+      outcome.error = "unknown error";
+    }
+    return outcome;
+  };
+  const auto report = [&](std::size_t i, Outcome& outcome) {
+    const BatchItem& item = items[i];
+    progress.clear();
+    if (outcome.result) {
+      try {
+        writeSnapshotOf(item.paths, *outcome.result, options);
+        if (!options.quiet) printResult(item.file->path, *outcome.result, item.paths.pcd);
+        if (options.view && outcome.result->scene) {
+          floodplane::view::showWindow(*outcome.result->scene, "pcd_segment: " + item.file->path);
+        }
+      } catch (const std::exception& error) {
+        outcome.error = error.what();
+      }
+    }
+    if (!outcome.error.empty()) {
+      std::cerr << "pcd_segment: error: " << item.file->path << ": " << outcome.error << "\n";
       ++failed;
     }
-  }
+    progress.show(i + 1);
+  };
+  // --view opens a window per input on the main thread: one at a time.
+  pcd_segment::runInOrder(items.size(), options.view ? 1u : options.jobs, make_segmentation, segment_item, report);
   progress.clear();
   return failed;
 }
@@ -401,7 +470,7 @@ int main(int argc, char** argv) {
   if (!createOutputDirectory(single_file ? fs::path(options.output).parent_path() : fs::path(options.output))) {
     return 1;
   }
-  const std::size_t failed = segmentAll(files, options, single_file, segmentation);
+  const std::size_t failed = segmentAll(files, options, single_file, segmentation.getParams());
   if (failed > 0 && files.size() > 1) {
     std::cerr << "pcd_segment: " << failed << " of " << files.size() << " inputs failed\n";
   }

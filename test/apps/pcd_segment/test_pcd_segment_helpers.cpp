@@ -2,6 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ordered_batch.h"
 #include "output_paths.h"
 #include "planes_json.h"
 
@@ -55,6 +64,82 @@ TEST(ReportJson, HoldsTheParametersAndEveryPlane) {
   EXPECT_EQ(json["planes"][0]["inliers"], 7);
   EXPECT_EQ(json["planes"][0]["normal"][2], -1.0);
   EXPECT_EQ(json["planes"][0]["boundary_box"]["max_column"], 2);
+}
+
+// The items finish in reverse order (the first sleeps longest), yet are reported in order,
+// each once, with its own result; every thread makes one worker.
+TEST(RunInOrder, ReportsItemsInOrderWhateverOrderTheyFinishIn) {
+  constexpr std::size_t kItems = 12;
+  std::atomic<int> workers{0};
+  std::vector<std::size_t> reported;
+  std::vector<std::string> results;
+  pcd_segment::runInOrder(
+      kItems, 3,
+      [&workers]() {
+        ++workers;
+        return std::this_thread::get_id();
+      },
+      [](std::thread::id&, std::size_t i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2 * static_cast<int>(kItems - i)));
+        return "item " + std::to_string(i);
+      },
+      [&](std::size_t i, std::string& result) {
+        reported.push_back(i);
+        results.push_back(result);
+      });
+  ASSERT_EQ(reported.size(), kItems);
+  for (std::size_t i = 0; i < kItems; ++i) {
+    EXPECT_EQ(reported[i], i);
+    EXPECT_EQ(results[i], "item " + std::to_string(i));
+  }
+  EXPECT_EQ(workers.load(), 3);
+}
+
+// Work runs on other threads than the reports, and never more than 2 * jobs items ahead of
+// the last report: a slow first item holds the rest back.
+TEST(RunInOrder, RunsOnThreadsAndKeepsAtMostTwiceTheJobsWaiting) {
+  constexpr unsigned kJobs = 2;
+  std::mutex mutex;
+  std::size_t reported = 0;
+  std::size_t furthest_ahead = 0;
+  std::set<std::thread::id> work_threads;
+  const std::thread::id caller = std::this_thread::get_id();
+  pcd_segment::runInOrder(
+      20, kJobs, []() { return 0; },
+      [&](int&, std::size_t i) {
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          furthest_ahead = std::max(furthest_ahead, i + 1 - reported);
+          work_threads.insert(std::this_thread::get_id());
+        }
+        if (i == 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        return i;
+      },
+      [&](std::size_t, std::size_t&) {
+        std::lock_guard<std::mutex> lock(mutex);
+        ++reported;
+      });
+  EXPECT_EQ(reported, 20u);
+  EXPECT_LE(furthest_ahead, 2 * kJobs);
+  EXPECT_EQ(work_threads.count(caller), 0u);
+  EXPECT_GE(work_threads.size(), 1u);
+}
+
+// One job: everything on the calling thread, in order, without threads.
+TEST(RunInOrder, RunsOnTheCallingThreadWithOneJob) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<std::size_t> order;
+  bool all_on_caller = true;
+  pcd_segment::runInOrder(
+      5, 1, []() { return 0; },
+      [&](int&, std::size_t i) {
+        all_on_caller = all_on_caller && std::this_thread::get_id() == caller;
+        order.push_back(i);
+        return i;
+      },
+      [&](std::size_t i, std::size_t& result) { EXPECT_EQ(result, i); });
+  EXPECT_TRUE(all_on_caller);
+  EXPECT_EQ(order, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
 }
 
 }  // namespace
