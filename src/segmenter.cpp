@@ -101,7 +101,7 @@ struct Segmenter::Workspace {
     // Kinect). A noise model the user gives describes the raw data: no smoothing then.
     DepthNoise segment_noise = depth_noise;
     frame.source = &filled;
-    if (params.estimatesNoise() && !depth_noise.negligible()) {
+    if (params.estimatesNoise() && !depth_noise.negligibleAgainstPixels(frame.full_pitch)) {
       frame.source = &smoothing.smooth(filled, depth_noise);
       segment_noise = DepthNoise::of(noise_estimator.estimate(*frame.source));
     }
@@ -109,7 +109,8 @@ struct Segmenter::Workspace {
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(params, frame.tolerances,
-                            1.0 / (segment_noise.negligible() ? kNoiseFreeFineSeedDivisor : kFineSeedDivisor),
+                            1.0 / (segment_noise.negligibleAgainstPixels(frame.full_pitch) ? kNoiseFreeFineSeedDivisor
+                                                                                           : kFineSeedDivisor),
                             frame.pitch, frame.grid.width, frame.grid.height);
     buffer.reset(frame.grid.size());
     segments.assign(1, Segment());  // label 0: no segment

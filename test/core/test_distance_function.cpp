@@ -106,6 +106,30 @@ TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
   EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 100.0), 0.01);
 }
 
+// Exact data, and exact data rounded to a 0.2 mm depth lattice (a TUM depth PNG: the noise
+// estimator measures about 0.067 mm), count as noise-free for a Kinect's pixels (1/525 rad);
+// a Kinect's own noise, a 1 mm depth lattice at close range and a structured-light scanner's
+// noise (1 mm at 1 m, pixels of 1/1600 rad) do not.
+TEST(DepthNoise, IsNegligibleAgainstPixelsBelowATenthOfTheirFootprint) {
+  const double kinect_pitch = 1.0 / 525.0;
+  DepthNoise exact;
+  EXPECT_TRUE(exact.negligible());
+  EXPECT_TRUE(exact.negligibleAgainstPixels(kinect_pitch));
+  DepthNoise lattice;
+  lattice.constant = 6.7e-5;
+  EXPECT_FALSE(lattice.negligible());
+  EXPECT_TRUE(lattice.negligibleAgainstPixels(kinect_pitch));
+  DepthNoise millimetres;  // a depth PNG in millimetres: 0.29 mm against 0.1 mm at 0.5 m
+  millimetres.constant = 2.9e-4;
+  EXPECT_FALSE(millimetres.negligibleAgainstPixels(kinect_pitch));
+  DepthNoise kinect;
+  kinect.quadratic = 0.0015;
+  EXPECT_FALSE(kinect.negligibleAgainstPixels(kinect_pitch));
+  DepthNoise scanner;
+  scanner.quadratic = 0.001;
+  EXPECT_FALSE(scanner.negligibleAgainstPixels(1.0 / 1600.0));
+}
+
 // --- FloodCriterion ------------------------------------------------------------------------
 
 // The plane z = 2 facing the camera, sigma_plane = 1 cm, neighbouring pixels 1 cm apart at the
