@@ -30,6 +30,7 @@ void runFloodplane(benchmark::State& state, const Frame& frame, int subsampling,
     benchmark::DoNotOptimize(regions.data());
     if (phases) {
       const PhaseTimes& t = seg.getLastSegmentation().phases;
+      sum.preparation += t.preparation;
       sum.seed_selection += t.seed_selection;
       sum.flood_fill += t.flood_fill;
       sum.relabelling += t.relabelling;
@@ -42,6 +43,7 @@ void runFloodplane(benchmark::State& state, const Frame& frame, int subsampling,
                                                benchmark::Counter::kIsIterationInvariantRate);
   if (phases) {
     const double n = static_cast<double>(state.iterations());
+    state.counters["prep_ms"] = sum.preparation / n;
     state.counters["seed_ms"] = sum.seed_selection / n;
     state.counters["flood_ms"] = sum.flood_fill / n;
     state.counters["relabel_ms"] = sum.relabelling / n;

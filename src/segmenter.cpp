@@ -210,7 +210,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   const bool timed = options.measure_phases;
   Frame frame;
   {
-    PhaseTimer timer(timed, result_.phases.seed_selection);
+    PhaseTimer timer(timed, result_.phases.preparation);
     frame = ws.prepare(full, params_, result_.noise);
   }
   ws.seedAndFlood(frame, params_, timed, result_);

@@ -338,11 +338,10 @@ PhaseResult measurePhases(Method& phase_timer, const InputCloud& input, int repe
     for (const MethodRun& run : timed.runs) times.push_back((*run.phases).*phase);
     return median(times);
   };
-  phases.median.seed_selection = phaseMedian(&floodplane::PhaseTimes::seed_selection);
-  phases.median.flood_fill = phaseMedian(&floodplane::PhaseTimes::flood_fill);
-  phases.median.relabelling = phaseMedian(&floodplane::PhaseTimes::relabelling);
-  phases.median.merging = phaseMedian(&floodplane::PhaseTimes::merging);
-  phases.median.region_output = phaseMedian(&floodplane::PhaseTimes::region_output);
+  for (const auto& [key, member] : phaseMembers()) {
+    (void)key;
+    phases.median.*member = phaseMedian(member);
+  }
   return phases;
 }
 

@@ -219,11 +219,6 @@ nlohmann::json resultJson(const SceneResult& scene, const MethodResult& result) 
   return json;
 }
 
-const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>> kPhases = {
-    {"seed_selection", &floodplane::PhaseTimes::seed_selection}, {"flood_fill", &floodplane::PhaseTimes::flood_fill},
-    {"relabelling", &floodplane::PhaseTimes::relabelling},       {"merging", &floodplane::PhaseTimes::merging},
-    {"region_output", &floodplane::PhaseTimes::region_output},
-};
 
 // The accuracy columns of a table row, from one scene's scores or from the means.
 struct AccuracyCells {
@@ -440,7 +435,7 @@ std::string resolutionTable(const Report& report) {
 std::string phaseRow(const std::string& name, const floodplane::PhaseTimes& phases, double call_ms) {
   const double total = phases.total();
   std::string row = "| " + name + " |";
-  for (const auto& [key, member] : kPhases) {
+  for (const auto& [key, member] : phaseMembers()) {
     (void)key;
     row += " " + fixed(total > 0.0 ? 100.0 * (phases.*member) / total : kNaN, 1) + "% |";
   }
@@ -450,17 +445,24 @@ std::string phaseRow(const std::string& name, const floodplane::PhaseTimes& phas
 // floodplane's time by phase (Fig. 5): a row per scene and the mean. Empty when --phases was
 // not given.
 std::string phaseTable(const Report& report) {
-  std::string out =
-      "## floodplane's time by phase (Fig. 5), share of the phases' total\n\n"
-      "| scene | seed selection | flood fill | relabelling | merging | region output | phases ms | call ms |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::string header = "| scene |";
+  std::string rule = "|---|";
+  for (const auto& [key, member] : phaseMembers()) {
+    (void)member;
+    std::string name = key;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    header += " " + name + " |";
+    rule += "---:|";
+  }
+  std::string out = "## floodplane's time by phase (Fig. 5), share of the phases' total\n\n" + header +
+                    " phases ms | call ms |\n" + rule + "---:|---:|\n";
   floodplane::PhaseTimes sum;
   double call_sum = 0.0;
   std::size_t count = 0;
   for (const SceneResult& scene : report.scenes) {
     if (!scene.phases) continue;
     out += phaseRow(scene.name, scene.phases->median, scene.phases->call_median_ms);
-    for (const auto& [key, member] : kPhases) {
+    for (const auto& [key, member] : phaseMembers()) {
       (void)key;
       sum.*member += scene.phases->median.*member;
     }
@@ -469,7 +471,7 @@ std::string phaseTable(const Report& report) {
   }
   if (count == 0) return "";
   floodplane::PhaseTimes mean;
-  for (const auto& [key, member] : kPhases) {
+  for (const auto& [key, member] : phaseMembers()) {
     (void)key;
     mean.*member = sum.*member / static_cast<double>(count);
   }
@@ -530,7 +532,7 @@ namespace {
 nlohmann::json phasesJson(const PhaseResult& phases) {
   nlohmann::json json;
   const double total = phases.median.total();
-  for (const auto& [key, member] : kPhases) {
+  for (const auto& [key, member] : phaseMembers()) {
     json["median_ms"][key] = phases.median.*member;
     json["share"][key] = number(total > 0.0 ? (phases.median.*member) / total : kNaN);
   }
@@ -597,6 +599,18 @@ std::string jsonReport(const Report& report) {
   for (const auto& [sensor, rows] : means.by_sensor) json["means_by_sensor"][sensor] = meansJson(rows);
   json["failed"] = report.failed;
   return json.dump(2) + "\n";
+}
+
+const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>>& phaseMembers() {
+  static const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>> members = {
+      {"preparation", &floodplane::PhaseTimes::preparation},
+      {"seed_selection", &floodplane::PhaseTimes::seed_selection},
+      {"flood_fill", &floodplane::PhaseTimes::flood_fill},
+      {"relabelling", &floodplane::PhaseTimes::relabelling},
+      {"merging", &floodplane::PhaseTimes::merging},
+      {"region_output", &floodplane::PhaseTimes::region_output},
+  };
+  return members;
 }
 
 }  // namespace pcd_compare

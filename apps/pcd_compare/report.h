@@ -27,6 +27,10 @@ struct MethodResult {
   std::optional<floodplane::eval::SegmentationScores> scores;
 };
 
+/// floodplane's phases (Fig. 5, and the preparation before it) in call order: each one's name
+/// in the JSON and its member of PhaseTimes.
+const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>>& phaseMembers();
+
 struct PhaseResult {
   floodplane::PhaseTimes median;  ///< per phase, the median over the timed runs [ms]
   double call_median_ms = 0.0;    ///< the whole call with the phase timer on [ms]

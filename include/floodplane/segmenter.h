@@ -14,12 +14,13 @@ namespace floodplane {
 /// Time spent in each phase of one segmentation (the paper's Fig. 5), in milliseconds.
 /// Filled only when Segmenter::Options::measure_phases is set.
 struct PhaseTimes {
+  double preparation = 0.0;     ///< noise estimation, hole filling, smoothing, sub-sampling
   double seed_selection = 0.0;  ///< scanning for seeds and testing them (Sec. III-C)
   double flood_fill = 0.0;      ///< growing segments (Sec. III-A, III-B)
   double relabelling = 0.0;     ///< connected components after Eq. 4 reassignments
   double merging = 0.0;         ///< agglomerative plane merging (Sec. III-D)
   double region_output = 0.0;   ///< labels at full resolution, refinement, plane fits
-  double total() const { return seed_selection + flood_fill + relabelling + merging + region_output; }
+  double total() const { return preparation + seed_selection + flood_fill + relabelling + merging + region_output; }
 };
 
 /// What happened inside one segmentation, for tests, benchmarks and curious users.

@@ -45,6 +45,7 @@ void bindPhaseTimes(py::module_& m) {
   py::class_<PhaseTimes>(m, "PhaseTimes",
                          "Milliseconds spent in each phase of one segmentation; zeros unless segment() was called "
                          "with measure_phases=True.")
+      .def_readonly("preparation", &PhaseTimes::preparation)
       .def_readonly("seed_selection", &PhaseTimes::seed_selection)
       .def_readonly("flood_fill", &PhaseTimes::flood_fill)
       .def_readonly("relabelling", &PhaseTimes::relabelling)
@@ -52,7 +53,7 @@ void bindPhaseTimes(py::module_& m) {
       .def_readonly("region_output", &PhaseTimes::region_output)
       .def_property_readonly("total", &PhaseTimes::total)
       .def("__repr__", [](const PhaseTimes& t) {
-        return "PhaseTimes(seed_selection=" + fixed(t.seed_selection, 3) + ", flood_fill=" + fixed(t.flood_fill, 3) +
+        return "PhaseTimes(preparation=" + fixed(t.preparation, 3) + ", seed_selection=" + fixed(t.seed_selection, 3) + ", flood_fill=" + fixed(t.flood_fill, 3) +
                ", relabelling=" + fixed(t.relabelling, 3) + ", merging=" + fixed(t.merging, 3) +
                ", region_output=" + fixed(t.region_output, 3) + ")";
       });

@@ -297,6 +297,7 @@ TEST(Segmenter, HandsPixelsToLaterFloodsThatFitThemBetter) {
   EXPECT_GE(result.stats.seeds, 3u);
   for (const ScenePlane& truth : test::roomCorner()) EXPECT_GT(bestIoU(scene, result.labels, truth.id), 0.97);
   // The phases are measured inside the call: each was timed, and together they fit in it.
+  EXPECT_GT(result.phases.preparation, 0.0);
   EXPECT_GT(result.phases.flood_fill, 0.0);
   EXPECT_GT(result.phases.seed_selection, 0.0);
   EXPECT_GT(result.phases.region_output, 0.0);
