@@ -10,14 +10,16 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "support/files.h"
+#include "support/one_line_error.h"
+#include "support/png_images.h"
 #include "temp_path.h"
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -34,47 +36,15 @@ DepthImage smallDepth() {
   return image;
 }
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
-void writeBytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-// Writes a 4 x 2 PNG of `format` (libpng's simplified API) with arbitrary samples.
-void writeOtherPng(const fs::path& path, png_uint_32 format) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  png.width = 4;
-  png.height = 2;
-  png.format = format;
-  if (format & PNG_FORMAT_FLAG_COLORMAP) png.colormap_entries = 256;
-  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(png), 7);
-  std::vector<std::uint8_t> colormap(256 * 3, 9);
-  ASSERT_NE(png_image_write_to_file(&png, path.c_str(), 0, pixels.data(), 0,
-                                    (format & PNG_FORMAT_FLAG_COLORMAP) ? colormap.data() : nullptr),
-            0)
-      << png.message;
-}
-
 class DepthPng : public ::testing::Test {
  protected:
   void TearDown() override { fs::remove(path_); }
 
   void expectRejected(const std::string& reason) const {
-    try {
-      readDepthPng(path_.string());
-      ADD_FAILURE() << "no error, expected '" << reason << "'";
-    } catch (const std::runtime_error& error) {
-      EXPECT_NE(std::string(error.what()).find(reason), std::string::npos)
-          << "expected '" << reason << "' in: " << error.what();
-      EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << "one line: " << error.what();
-    }
+    expectOneLineError([&] { readDepthPng(path_.string()); }, reason);
   }
 
-  fs::path path_ = floodplane::test::uniqueTempPath(".png");
+  fs::path path_ = uniqueTempPath(".png");
 };
 
 TEST_F(DepthPng, ReadsBackEveryUnitOfA16BitImageExactly) {
@@ -132,12 +102,12 @@ TEST_F(DepthPng, RejectsAMissingFile) {
 }
 
 TEST_F(DepthPng, RejectsAnEmptyFile) {
-  writeBytes(path_, "");
+  writeFile(path_, "");
   expectRejected("not a PNG file");
 }
 
 TEST_F(DepthPng, RejectsAFileThatIsNotAPng) {
-  writeBytes(path_, "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\n");
+  writeFile(path_, "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\n");
   expectRejected("not a PNG file");
 }
 
@@ -147,10 +117,10 @@ TEST_F(DepthPng, RejectsATruncatedFile) {
   image.height = 48;
   for (int i = 0; i < 64 * 48; ++i) image.depth.push_back(static_cast<std::uint16_t>(i * 7919));
   writeDepthPng(path_.string(), image);
-  const std::string bytes = readBytes(path_);
+  const std::string bytes = readFile(path_);
   for (const std::size_t size :
        {std::size_t{8}, std::size_t{20}, std::size_t{40}, bytes.size() / 2, bytes.size() - 13}) {
-    writeBytes(path_, bytes.substr(0, size));
+    writeFile(path_, bytes.substr(0, size));
     SCOPED_TRACE("truncated to " + std::to_string(size) + " bytes");
     expectRejected("PNG file");
   }
@@ -158,11 +128,11 @@ TEST_F(DepthPng, RejectsATruncatedFile) {
 
 TEST_F(DepthPng, RejectsCorruptCompressedData) {
   writeDepthPng(path_.string(), smallDepth());
-  std::string bytes = readBytes(path_);
+  std::string bytes = readFile(path_);
   const std::size_t idat = bytes.find("IDAT");
   ASSERT_NE(idat, std::string::npos);
   bytes[idat + 6] = static_cast<char>(bytes[idat + 6] ^ 0x5A);
-  writeBytes(path_, bytes);
+  writeFile(path_, bytes);
   expectRejected("corrupt or truncated PNG file");
 }
 
@@ -170,7 +140,7 @@ TEST_F(DepthPng, RejectsCorruptCompressedData) {
 // refuse a size the file cannot hold before it allocates the pixels.
 TEST_F(DepthPng, RefusesAHeaderAnnouncingMorePixelsThanTheFileHolds) {
   writeDepthPng(path_.string(), smallDepth());
-  std::string bytes = readBytes(path_);
+  std::string bytes = readFile(path_);
   const std::size_t ihdr = bytes.find("IHDR");
   ASSERT_NE(ihdr, std::string::npos);
   const std::uint8_t side[4] = {0x00, 0x00, 0xF0, 0x00};  // 61440 a side: 7.5 GB of pixels
@@ -181,7 +151,7 @@ TEST_F(DepthPng, RefusesAHeaderAnnouncingMorePixelsThanTheFileHolds) {
   const auto* chunk = reinterpret_cast<const Bytef*>(bytes.data() + ihdr);
   const uLong crc = crc32(0L, chunk, 4 + 13);
   for (int k = 0; k < 4; ++k) bytes[ihdr + 17 + k] = static_cast<char>((crc >> (24 - 8 * k)) & 0xFF);
-  writeBytes(path_, bytes);
+  writeFile(path_, bytes);
   expectRejected("more than its");
 }
 
@@ -196,3 +166,4 @@ TEST_F(DepthPng, WritesAtomicallyAndRefusesAnInconsistentImage) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

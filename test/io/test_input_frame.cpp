@@ -12,17 +12,18 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "io/depth_png.h"
+#include "support/files.h"
+#include "support/one_line_error.h"
 #include "temp_path.h"
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,39 +42,23 @@ pcl::PointCloud<pcl::PointXYZ> smallGrid() {
   return cloud;
 }
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
-void writeBytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
 class InputFrame : public ::testing::Test {
  protected:
   void TearDown() override { fs::remove(path_); }
 
   // Loads `path_` expecting a std::runtime_error that contains `reason`.
   void expectRejected(const std::string& reason) const {
-    try {
-      loadInputFrame(path_.string());
-      ADD_FAILURE() << "no error, expected '" << reason << "'";
-    } catch (const std::runtime_error& error) {
-      EXPECT_NE(std::string(error.what()).find(reason), std::string::npos)
-          << "expected '" << reason << "' in: " << error.what();
-      EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << "one line: " << error.what();
-    }
+    expectOneLineError([&] { loadInputFrame(path_.string()); }, reason);
   }
 
   // A header of x y z floats announcing `width` x `height` points, then `data`.
   void writeHeader(const std::string& encoding, int width, int height, const std::string& data) const {
-    writeBytes(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " + std::to_string(width) +
-                          "\nHEIGHT " + std::to_string(height) + "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
-                          std::to_string(width * height) + "\nDATA " + encoding + "\n" + data);
+    writeFile(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " + std::to_string(width) +
+                         "\nHEIGHT " + std::to_string(height) + "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
+                         std::to_string(width * height) + "\nDATA " + encoding + "\n" + data);
   }
 
-  const fs::path path_ = floodplane::test::uniqueTempPath(".pcd");
+  const fs::path path_ = uniqueTempPath(".pcd");
 };
 
 TEST_F(InputFrame, ReadsThePointsOnTheirGridWithTheSensorPose) {
@@ -125,7 +110,7 @@ TEST_F(InputFrame, IgnoresALabelFieldThatIsNotAnUnsignedInteger) {
       "VERSION 0.7\nFIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 1\nWIDTH 2\n"
       "HEIGHT 2\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n";
   for (int i = 0; i < 4; ++i) text += "0 0 1 2.5\n";
-  writeBytes(path_, text);
+  writeFile(path_, text);
   const auto frame = loadInputFrame(path_.string());
   EXPECT_EQ(frame.xyz.size(), 4u);
   EXPECT_FALSE(frame.labels.has_value());
@@ -136,7 +121,7 @@ TEST_F(InputFrame, ReadsDoublePrecisionCoordinates) {
       "VERSION 0.7\nFIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4\nHEIGHT 3\n"
       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 12\nDATA ascii\n";
   for (int i = 0; i < 12; ++i) text += std::to_string(0.25 * i) + " 0.5 1.5\n";
-  writeBytes(path_, text);
+  writeFile(path_, text);
   const auto frame = loadInputFrame(path_.string());
   ASSERT_EQ(frame.xyz.size(), 12u);
   EXPECT_FLOAT_EQ(frame.xyz[5].x, 1.25f);
@@ -147,12 +132,12 @@ TEST_F(InputFrame, ReadsDoublePrecisionCoordinates) {
 TEST_F(InputFrame, RejectsAMissingFile) { expectRejected("cannot read file"); }
 
 TEST_F(InputFrame, RejectsAnEmptyFile) {
-  writeBytes(path_, "");
+  writeFile(path_, "");
   expectRejected("empty file");
 }
 
 TEST_F(InputFrame, RejectsAFileThatIsNotAPcd) {
-  writeBytes(path_, "this is not a point cloud\n");
+  writeFile(path_, "this is not a point cloud\n");
   expectRejected("not a PCD file");
 }
 
@@ -162,23 +147,23 @@ TEST_F(InputFrame, RejectsATruncatedFileOfEveryEncoding) {
         std::pair{"binary", &pcl::io::savePCDFileBinary<pcl::PointXYZ>}}) {
     SCOPED_TRACE(encoding);
     ASSERT_EQ(save(path_.string(), smallGrid()), 0);
-    const std::string full = readBytes(path_);
-    writeBytes(path_, full.substr(0, full.size() * 2 / 3));
+    const std::string full = readFile(path_);
+    writeFile(path_, full.substr(0, full.size() * 2 / 3));
     expectRejected("truncated");
   }
   ASSERT_EQ(pcl::io::savePCDFileASCII(path_.string(), smallGrid()), 0);
-  const std::string ascii = readBytes(path_);
-  writeBytes(path_, ascii.substr(0, ascii.size() * 2 / 3));
+  const std::string ascii = readFile(path_);
+  writeFile(path_, ascii.substr(0, ascii.size() * 2 / 3));
   expectRejected("truncated");
 }
 
 TEST_F(InputFrame, RejectsCompressedDataThatUnpacksToTheWrongSize) {
   ASSERT_EQ(pcl::io::savePCDFileBinaryCompressed(path_.string(), smallGrid()), 0);
-  std::string bytes = readBytes(path_);
+  std::string bytes = readFile(path_);
   const std::size_t data = bytes.find("DATA binary_compressed\n") + 23;
   ASSERT_LT(data + 8, bytes.size());
   bytes[data + 4] = static_cast<char>(bytes[data + 4] + 1);  // the uncompressed size
-  writeBytes(path_, bytes);
+  writeFile(path_, bytes);
   expectRejected("corrupt");
 }
 
@@ -219,7 +204,7 @@ TEST_F(InputFrame, RejectsADataLineOfOneWord) {
   const std::string points = "1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
   for (const std::string& data_line : {std::string("DATAascii\n"), std::string("DATA\x8b\0\0compressed\n", 17)}) {
     SCOPED_TRACE(data_line);
-    writeBytes(path_, header + data_line + points);
+    writeFile(path_, header + data_line + points);
     expectRejected("PCD");
   }
 }
@@ -239,7 +224,7 @@ TEST_F(InputFrame, RefusesCountsAndSizesThatOverflowOrThatTheFileCannotHold) {
        {header(overflow + "1 1 1", "3", "6"), header("100000000 1 1", "3", "6"), header("-1 1 1", "3", "6"),
         header("1 1 1", overflow, "6"), header("1 1 1", "3", "-6"), header("1 1 1", "2147483647", "6")}) {
     SCOPED_TRACE(text);
-    writeBytes(path_, text + points);
+    writeFile(path_, text + points);
     expectRejected("header");  // refused from the header, before PCL allocates
   }
 }
@@ -258,7 +243,7 @@ TEST_F(InputFrame, RefusesHeadersWhoseFieldsDoNotFitTheirPoints) {
         fields + "COUNT 1 1 1 1\n" + grid + "DATA ascii\nSIZE 1 1 1 1\n" + values,
         fields + "COUNT 1 1 1 1\n" + grid + "COUNT 2 2 2 2\nDATA ascii\n" + values + values}) {
     SCOPED_TRACE(text);
-    writeBytes(path_, text);
+    writeFile(path_, text);
     expectRejected("corrupt PCD header");
   }
 }
@@ -278,7 +263,7 @@ TEST_F(InputFrame, RefusesABufferAnnouncedAfterTheDataLine) {
       {"COUNT -100 1 1\n", "is not a count"}};
   for (const auto& [line, reason] : cases) {
     SCOPED_TRACE(line);
-    writeBytes(path_, header + line + points);
+    writeFile(path_, header + line + points);
     expectRejected(reason);
   }
 }
@@ -293,10 +278,10 @@ TEST_F(InputFrame, RefusesHeaderLinesWithControlCharacters) {
   for (const std::string& size_line :
        {std::string("SIZE 4 4\v4\n"), std::string("SIZE 4 4 4\x02\n"), std::string("SIZE\x01 4 4 4\n", 13)}) {
     SCOPED_TRACE(size_line);
-    writeBytes(path_, "VERSION 0.7\nFIELDS x y z\n" + size_line + rest);
+    writeFile(path_, "VERSION 0.7\nFIELDS x y z\n" + size_line + rest);
     expectRejected("control characters");
   }
-  writeBytes(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\n" + rest);
+  writeFile(path_, "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\n" + rest);
   expectRejected("SIZE gives 2 values for 3 fields");
 }
 
@@ -318,7 +303,7 @@ TEST_F(InputFrame, RejectsIntegerCoordinates) {
   std::string text =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n";
-  writeBytes(path_, text);
+  writeFile(path_, text);
   expectRejected("not a single float or double");
 }
 
@@ -338,7 +323,7 @@ class DepthInputFrame : public ::testing::Test {
   }
 
   const floodplane::io::DepthCamera camera_{500.0, 400.0, 1.5, 1.0, 1000.0};
-  fs::path path_ = floodplane::test::uniqueTempPath(".png");
+  fs::path path_ = uniqueTempPath(".png");
 };
 
 TEST_F(DepthInputFrame, BackProjectsADepthPngOnItsGrid) {
@@ -373,7 +358,7 @@ TEST_F(DepthInputFrame, TellsAPngByItsExtensionInAnyCase) {
   EXPECT_FALSE(floodplane::io::isDepthImagePath("png"));
   EXPECT_FALSE(floodplane::io::isDepthImagePath("frame.png.pcd"));
   fs::remove(path_);
-  path_ = floodplane::test::uniqueTempPath(".PNG");
+  path_ = uniqueTempPath(".PNG");
   writeDepth();
   EXPECT_EQ(loadInputFrame(path_.string(), camera_).xyz.width, 4u);
 }
@@ -405,7 +390,7 @@ TEST_F(DepthInputFrame, RefusesADepthImageOfOneRow) {
 }
 
 TEST_F(DepthInputFrame, ReportsABrokenPngAsOneLine) {
-  writeBytes(path_, "\x89PNG\r\n\x1a\n but then nothing");
+  writeFile(path_, "\x89PNG\r\n\x1a\n but then nothing");
   try {
     loadInputFrame(path_.string(), camera_);
     ADD_FAILURE() << "a broken PNG was read";
@@ -447,3 +432,4 @@ TEST(InputFrameOfRealData, AgreesWithPclsLoaderOnEveryRealFrame) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

@@ -1,35 +1,18 @@
 #include "io/png_file.h"
+#include "support/png_images.h"
 #include "temp_path.h"
 
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Reads an RGB PNG back with libpng's simplified API, independent of the writer's code path.
-floodplane::io::RgbImage readPng(const std::string& path) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  if (png_image_begin_read_from_file(&png, path.c_str()) == 0) {
-    throw std::runtime_error(png.message);
-  }
-  png.format = PNG_FORMAT_RGB;
-  floodplane::io::RgbImage image;
-  image.width = png.width;
-  image.height = png.height;
-  image.pixels.resize(PNG_IMAGE_SIZE(png));
-  if (png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr) == 0) {
-    throw std::runtime_error(png.message);
-  }
-  return image;
-}
 
 TEST(PngFile, RoundTripsEveryPixelThroughLibpng) {
   floodplane::io::RgbImage image;
@@ -38,7 +21,7 @@ TEST(PngFile, RoundTripsEveryPixelThroughLibpng) {
   for (std::size_t i = 0; i < image.width * image.height * 3; ++i) {
     image.pixels.push_back(static_cast<std::uint8_t>((i * 37 + 11) % 256));
   }
-  const fs::path path = floodplane::test::uniqueTempPath(".png");
+  const fs::path path = uniqueTempPath(".png");
   floodplane::io::writePng(path.string(), image);
   const auto read = readPng(path.string());
   fs::remove(path);
@@ -72,3 +55,4 @@ TEST(PngFile, ReportsAnUnwritableDirectoryAsARuntimeError) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

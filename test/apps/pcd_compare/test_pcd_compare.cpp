@@ -5,19 +5,18 @@
 #include <nlohmann/json.hpp>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "support/app_run.h"
+
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -25,45 +24,10 @@ namespace fs = std::filesystem;
 const std::string kTabletop = std::string(PCD_COMPARE_SCENE_DIR) + "/tabletop.kinect.pcd";
 const std::string kStaircase = std::string(PCD_COMPARE_SCENE_DIR) + "/staircase.none.pcd";
 
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-class PcdCompare : public ::testing::Test {
+class PcdCompare : public AppTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("pcd_compare_test_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Runs pcd_compare with `arguments` (already quoted where needed).
-  Outcome run(const std::string& arguments) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command =
-        quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
-    const int status = std::system(command.c_str());
-    Outcome outcome;
-    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.out = readFile(out);
-    outcome.err = readFile(err);
-    return outcome;
-  }
-
-  fs::path dir_;
+  Result run(const std::string& arguments) const { return runShell(quote(PCD_COMPARE_BINARY) + " " + arguments); }
 };
 
 // A result's mean and weighted IoU are the plain and the size-weighted averages of the IoU of
@@ -107,9 +71,8 @@ int rowCount(const std::string& markdown, const std::string& scene, const std::s
 TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
   const fs::path json_file = dir_ / "out.json";
   const fs::path csv_file = dir_ / "out.csv";
-  const Outcome outcome =
-      run("--repeat 2 --methods floodplane,ransac,omps --json " + quoted(json_file.string()) + " --csv " +
-          quoted(csv_file.string()) + " " + quoted(kTabletop) + " " + quoted(kStaircase));
+  const Result outcome = run("--repeat 2 --methods floodplane,ransac,omps --json " + quote(json_file.string()) +
+                             " --csv " + quote(csv_file.string()) + " " + quote(kTabletop) + " " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   for (const std::string method : {"floodplane", "ransac", "omps"}) {
     EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", method), 1) << method;
@@ -181,7 +144,7 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
 }
 
 TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
-  const Outcome outcome = run("--repeat 2 --quiet --methods omps,floodplane " + quoted(kStaircase));
+  const Result outcome = run("--repeat 2 --quiet --methods omps,floodplane " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps"), 1);
@@ -192,7 +155,7 @@ TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
 
 TEST_F(PcdCompare, MissingFileIsReportedByNameAndTheOtherFilesAreStillCompared) {
   const std::string missing = (dir_ / "no_such_scene.pcd").string();
-  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(missing) + " " + quoted(kStaircase));
+  const Result outcome = run("--repeat 2 --methods floodplane " + quote(missing) + " " + quote(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
   EXPECT_NE(outcome.err.find(missing + ": no such file"), std::string::npos) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1) << outcome.out;
@@ -211,8 +174,8 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
   const fs::path no_xyz = dir_ / "labels_only.pcd";
   pcl::io::savePCDFileBinary(no_xyz.string(), labels_only);
 
-  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(text.string()) + " " + quoted(flat.string()) +
-                              " " + quoted(no_xyz.string()) + " " + quoted(kStaircase));
+  const Result outcome = run("--repeat 2 --methods floodplane " + quote(text.string()) + " " + quote(flat.string()) +
+                             " " + quote(no_xyz.string()) + " " + quote(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
   EXPECT_NE(outcome.err.find(text.string() + ": not a PCD file"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find(flat.string() + ": unorganized cloud"), std::string::npos) << outcome.err;
@@ -221,20 +184,20 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
 }
 
 TEST_F(PcdCompare, BadOptionsExitWithCodeTwo) {
-  EXPECT_EQ(run("--no-such-option " + quoted(kStaircase)).exit_code, 2);
-  EXPECT_EQ(run("--methods floodplane,watershed " + quoted(kStaircase)).exit_code, 2);
-  EXPECT_EQ(run("--repeat -1 " + quoted(kStaircase)).exit_code, 2);
-  EXPECT_EQ(run("--tune-clouds 0 --tune " + quoted(dir_.string())).exit_code, 2);
-  const Outcome no_input = run("--repeat 2");
+  EXPECT_EQ(run("--no-such-option " + quote(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--methods floodplane,watershed " + quote(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--repeat -1 " + quote(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--tune-clouds 0 --tune " + quote(dir_.string())).exit_code, 2);
+  const Result no_input = run("--repeat 2");
   EXPECT_EQ(no_input.exit_code, 2);
   EXPECT_NE(no_input.err.find("Usage"), std::string::npos) << no_input.err;
 }
 
 TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
-  const Outcome help = run("--help");
+  const Result help = run("--help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("--resolutions"), std::string::npos);
-  const Outcome version = run("--version");
+  const Result version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_FALSE(version.out.empty());
 }
@@ -247,15 +210,15 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
 TEST_F(PcdCompare, OmpsOverAWholeSceneBatchFinishesAndEachSceneIsIndependent) {
   const fs::path alone_json = dir_ / "alone.json";
   const fs::path batch_json = dir_ / "batch.json";
-  const Outcome batch = run("--quiet --repeat 3 --methods omps --json " + quoted(batch_json.string()) + " " +
-                            quoted(FLOODPLANE_RENDERED_DIR));
+  const Result batch = run("--quiet --repeat 3 --methods omps --json " + quote(batch_json.string()) + " " +
+                           quote(FLOODPLANE_RENDERED_DIR));
   ASSERT_EQ(batch.exit_code, 0) << batch.err;
   const nlohmann::json scenes = nlohmann::json::parse(readFile(batch_json))["scenes"];
   ASSERT_GE(scenes.size(), 10u);
   const std::string last_scene = std::string(FLOODPLANE_RENDERED_DIR) + "/tabletop.none.pcd";
-  ASSERT_EQ(run("--quiet --repeat 3 --methods omps --json " + quoted(alone_json.string()) + " " + quoted(last_scene))
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run("--quiet --repeat 3 --methods omps --json " + quote(alone_json.string()) + " " + quote(last_scene)).exit_code,
+      0);
   const nlohmann::json alone = nlohmann::json::parse(readFile(alone_json))["scenes"][0];
   bool found = false;
   for (const auto& scene : scenes) {
@@ -276,8 +239,8 @@ TEST_F(PcdCompare, CloudWithoutLabelsGivesRuntimeOnly) {
   const fs::path file = dir_ / "unlabelled.pcd";
   pcl::io::savePCDFileBinary(file.string(), xyz);
   const fs::path json_file = dir_ / "out.json";
-  const Outcome outcome =
-      run("--repeat 2 --methods floodplane,omps --json " + quoted(json_file.string()) + " " + quoted(file.string()));
+  const Result outcome =
+      run("--repeat 2 --methods floodplane,omps --json " + quote(json_file.string()) + " " + quote(file.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "unlabelled", "floodplane"), 1);
   EXPECT_EQ(outcome.out.find("mean IoU"), std::string::npos);
@@ -292,7 +255,7 @@ TEST_F(PcdCompare, DirectoryInputComparesItsPcdFilesInSortedOrder) {
   fs::copy_file(kTabletop, dir_ / "b_tabletop.pcd");
   fs::copy_file(kStaircase, dir_ / "a_staircase.pcd");
   std::ofstream(dir_ / "notes.txt") << "not a cloud, and not named .pcd\n";
-  const Outcome outcome = run("--repeat 2 --methods floodplane " + quoted(dir_.string()));
+  const Result outcome = run("--repeat 2 --methods floodplane " + quote(dir_.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::size_t first = outcome.out.find("| a_staircase | floodplane |");
   const std::size_t second = outcome.out.find("| b_tabletop | floodplane |");
@@ -306,8 +269,8 @@ TEST_F(PcdCompare, AveragesPerSensorModelNamedInTheFileName) {
   fs::copy_file(kStaircase, dir_ / "frame_1.250.pcd");  // a time stamp, not a sensor model
   fs::copy_file(kStaircase, dir_ / "plain.pcd");
   const fs::path json_file = dir_ / "out.json";
-  const Outcome outcome =
-      run("--repeat 2 --quiet --methods floodplane --json " + quoted(json_file.string()) + " " + quoted(dir_.string()));
+  const Result outcome =
+      run("--repeat 2 --quiet --methods floodplane --json " + quote(json_file.string()) + " " + quote(dir_.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(meanRowCount(outcome.out, "all files (3)", "floodplane", 3), 1) << outcome.out;
   EXPECT_EQ(meanRowCount(outcome.out, "sensor model scanner (1 files)", "floodplane", 1), 1) << outcome.out;
@@ -318,8 +281,8 @@ TEST_F(PcdCompare, AveragesPerSensorModelNamedInTheFileName) {
 
 TEST_F(PcdCompare, PngShowsGroundTruthAndEachMethodSideBySide) {
   const fs::path png_dir = dir_ / "images";
-  const Outcome outcome =
-      run("--repeat 2 --quiet --methods floodplane,omps --png " + quoted(png_dir.string()) + " " + quoted(kStaircase));
+  const Result outcome =
+      run("--repeat 2 --quiet --methods floodplane,omps --png " + quote(png_dir.string()) + " " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const std::string png = readFile(png_dir / "staircase.none.png");
   ASSERT_GT(png.size(), 24u);
@@ -333,8 +296,8 @@ TEST_F(PcdCompare, PngShowsGroundTruthAndEachMethodSideBySide) {
 
 TEST_F(PcdCompare, ResolutionsAndPhasesAddTheirTables) {
   const fs::path json_file = dir_ / "out.json";
-  const Outcome outcome = run("--repeat 2 --quiet --methods ransac --resolutions --phases --json " +
-                              quoted(json_file.string()) + " " + quoted(kStaircase));
+  const Result outcome = run("--repeat 2 --quiet --methods ransac --resolutions --phases --json " +
+                             quote(json_file.string()) + " " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("Table III"), std::string::npos);
   EXPECT_NE(outcome.out.find("Fig. 5"), std::string::npos);
@@ -382,8 +345,8 @@ class PcdCompareTuning : public PcdCompare {
     const fs::path tuned = dir_ / "by_hand.json";
     const fs::path json_file = dir_ / "by_hand_out.json";
     writeTunedFile(tuned, maximum_curvature);
-    const Outcome outcome = run("--repeat 0 --quiet --methods omps --tuned --tuned-file " + quoted(tuned.string()) +
-                                " --json " + quoted(json_file.string()) + " " + quoted(folder.string()));
+    const Result outcome = run("--repeat 0 --quiet --methods omps --tuned --tuned-file " + quote(tuned.string()) +
+                               " --json " + quote(json_file.string()) + " " + quote(folder.string()));
     EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
     return nlohmann::json::parse(readFile(json_file))["means"]["omps (tuned)"]["mean_iou"].get<double>();
   }
@@ -396,8 +359,8 @@ TEST_F(PcdCompareTuning, PicksTheBetterOfTwoGridPointsAndKeepsOtherMethodsOfTheF
   const fs::path tuned = dir_ / "tuned.json";
   std::ofstream(tuned) << R"({"methods": {"ransac": {"by_sensor": {"none": {"parameters": {"min_inliers": 300}}}}}})";
 
-  const Outcome outcome = run("--tune " + quoted(folder.string()) + " --methods omps --tune-grid " +
-                              quoted(grid.string()) + " --tuned-file " + quoted(tuned.string()));
+  const Result outcome = run("--tune " + quote(folder.string()) + " --methods omps --tune-grid " +
+                             quote(grid.string()) + " --tuned-file " + quote(tuned.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_NE(outcome.err.find("tune omps [none] #2"), std::string::npos) << outcome.err;
   const nlohmann::json result = nlohmann::json::parse(readFile(tuned));
@@ -419,8 +382,8 @@ TEST_F(PcdCompareTuning, PicksTheBetterOfTwoGridPointsAndKeepsOtherMethodsOfTheF
 TEST_F(PcdCompareTuning, TunedRowsFollowTheSensorModelOfEachFile) {
   const fs::path tuned = dir_ / "tuned.json";
   writeTunedFile(tuned, 0.1);
-  const Outcome outcome = run("--repeat 0 --methods floodplane,omps --tuned --tuned-file " + quoted(tuned.string()) +
-                              " " + quoted(kStaircase) + " " + quoted(kTabletop));
+  const Result outcome = run("--repeat 0 --methods floodplane,omps --tuned --tuned-file " + quote(tuned.string()) +
+                             " " + quote(kStaircase) + " " + quote(kTabletop));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps"), 1);
   EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps (tuned)"), 1);
@@ -434,15 +397,15 @@ TEST_F(PcdCompareTuning, TunedRowsFollowTheSensorModelOfEachFile) {
 
 TEST_F(PcdCompareTuning, BadTuningInputsAreReportedByName) {
   const fs::path missing = dir_ / "missing.json";
-  const Outcome no_file = run("--tuned --tuned-file " + quoted(missing.string()) + " " + quoted(kStaircase));
+  const Result no_file = run("--tuned --tuned-file " + quote(missing.string()) + " " + quote(kStaircase));
   EXPECT_EQ(no_file.exit_code, 1);
   EXPECT_NE(no_file.err.find(missing.string() + ": cannot read the tuned parameters"), std::string::npos)
       << no_file.err;
 
   const fs::path grid = dir_ / "grid.json";
   std::ofstream(grid) << R"({"omps": {"bogus": [1.0]}})";
-  const Outcome bad_grid = run("--tune " + quoted(tuningFolder().string()) + " --methods omps --tune-grid " +
-                               quoted(grid.string()) + " --tuned-file " + quoted((dir_ / "out.json").string()));
+  const Result bad_grid = run("--tune " + quote(tuningFolder().string()) + " --methods omps --tune-grid " +
+                              quote(grid.string()) + " --tuned-file " + quote((dir_ / "out.json").string()));
   EXPECT_EQ(bad_grid.exit_code, 1);
   EXPECT_NE(bad_grid.err.find("omps has no parameter 'bogus'"), std::string::npos) << bad_grid.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.json"));
@@ -450,10 +413,11 @@ TEST_F(PcdCompareTuning, BadTuningInputsAreReportedByName) {
   const fs::path unnamed = dir_ / "unnamed";
   fs::create_directories(unnamed);
   fs::copy_file(kStaircase, unnamed / "staircase.pcd");
-  const Outcome no_sensor = run("--tune " + quoted(unnamed.string()) + " --methods omps --tuned-file " +
-                                quoted((dir_ / "out.json").string()));
+  const Result no_sensor =
+      run("--tune " + quote(unnamed.string()) + " --methods omps --tuned-file " + quote((dir_ / "out.json").string()));
   EXPECT_EQ(no_sensor.exit_code, 1);
   EXPECT_NE(no_sensor.err.find("no <scene>.<sensor>.pcd files"), std::string::npos) << no_sensor.err;
 }
 
 }  // namespace
+}  // namespace floodplane::test

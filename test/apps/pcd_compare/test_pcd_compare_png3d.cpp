@@ -5,22 +5,20 @@
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
-#include <png.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "common/plane_scene.h"
 #include "io/rgb_image.h"
+#include "support/app_run.h"
+#include "support/png_images.h"
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -30,28 +28,6 @@ constexpr std::size_t kWidth = 320;  // the test scenes' grid
 constexpr std::size_t kHeight = 240;
 constexpr std::size_t kPanelGap = 4;
 constexpr std::size_t kTitleStrip = 7 * 2 + 2 * 4;  // the 5x7 font at scale 2 and its margins
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
-floodplane::io::RgbImage readPng(const fs::path& path) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  if (png_image_begin_read_from_file(&png, path.c_str()) == 0) throw std::runtime_error(png.message);
-  png.format = PNG_FORMAT_RGB;
-  floodplane::io::RgbImage image;
-  image.width = png.width;
-  image.height = png.height;
-  image.pixels.resize(PNG_IMAGE_SIZE(png));
-  if (png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr) == 0) {
-    throw std::runtime_error(png.message);
-  }
-  return image;
-}
 
 using Rgb = std::array<std::uint8_t, 3>;
 
@@ -78,43 +54,12 @@ std::size_t arrowColoured(const std::map<Rgb, std::size_t>& colours) {
   return count;
 }
 
-// xvfb-run on a display of its own. With -a alone, xvfb-run instances started at the same
-// moment (parallel tests, other builds on the machine) all try display 99 first and trip over
-// each other; each starts its search from a number of its own here. -noreset: otherwise the
-// server resets as the last client leaves, while xvfb-run removes its temporary directory,
-// which then fails now and then (exit 5, "problem while cleaning up temporary directory").
-std::string xvfbRun() { return "xvfb-run -a -n " + std::to_string(1000 + ::getpid() % 30000) + " -s -noreset "; }
-
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-class PcdComparePng3d : public ::testing::Test {
+class PcdComparePng3d : public AppTest {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "pcd_compare_png3d.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Runs pcd_compare with `arguments` (quoted where needed) after the shell text `prefix`.
-  Outcome run(const std::string& arguments, const std::string& prefix = "") const {
-    const fs::path out = dir_ / ".stdout";
-    const fs::path err = dir_ / ".stderr";
-    const std::string command = prefix + quoted(PCD_COMPARE_BINARY) + " " + arguments + " >" + quoted(out.string()) +
-                                " 2>" + quoted(err.string()) + " </dev/null";
-    const int status = std::system(("sh -c " + quoted(command)).c_str());
-    Outcome outcome;
-    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.out = readFile(out);
-    outcome.err = readFile(err);
-    return outcome;
+  Result run(const std::string& arguments, const std::string& prefix = "") const {
+    return runShell(prefix + quote(PCD_COMPARE_BINARY) + " " + arguments);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(PcdComparePng3d, RendersGroundTruthAndEachMethodInThreeDimensions) {
@@ -122,8 +67,8 @@ TEST_F(PcdComparePng3d, RendersGroundTruthAndEachMethodInThreeDimensions) {
       << "xvfb-run is not installed (Debian package xvfb; scripts/install_deps.sh installs it): --png3d cannot "
          "be rendered on this machine";
   const fs::path images = dir_ / "images";
-  const Outcome outcome =
-      run("--repeat 1 --quiet --methods floodplane,omps --png3d " + quoted(images.string()) + " " + quoted(kStaircase),
+  const Result outcome =
+      run("--repeat 1 --quiet --methods floodplane,omps --png3d " + quote(images.string()) + " " + quote(kStaircase),
           xvfbRun());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const floodplane::io::RgbImage image = readPng(images / "staircase.none.png");
@@ -164,9 +109,8 @@ TEST_F(PcdComparePng3d, RendersGroundTruthAndEachMethodInThreeDimensions) {
 
 TEST_F(PcdComparePng3d, WithoutADisplaySaysSoOnOneLineBeforeAnyWork) {
   const fs::path images = dir_ / "images";
-  const Outcome outcome =
-      run("--repeat 1 --methods floodplane --png3d " + quoted(images.string()) + " " + quoted(kStaircase),
-          "env -u DISPLAY ");
+  const Result outcome = run(
+      "--repeat 1 --methods floodplane --png3d " + quote(images.string()) + " " + quote(kStaircase), "env -u DISPLAY ");
   EXPECT_EQ(outcome.exit_code, 1);
   EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
   EXPECT_NE(outcome.err.find("xvfb-run"), std::string::npos) << outcome.err;
@@ -175,3 +119,4 @@ TEST_F(PcdComparePng3d, WithoutADisplaySaysSoOnOneLineBeforeAnyWork) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

@@ -5,14 +5,11 @@
 #include <gtest/gtest.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -20,41 +17,16 @@
 #include <string>
 #include <vector>
 
-#include "floodplane/flood_fill_plane_segmentation.h"
 #include "floodplane/params.h"
 #include "floodplane/version.h"
+#include "support/app_run.h"
+#include "support/library_labels.h"
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
-
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void writeFile(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-std::string quote(const std::string& word) {
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::size_t lineCount(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // A 160x120 pinhole view (a Kinect's f = 525 scaled to the grid) of a wall at z = 2 m and a
 // floor at y = 0.5 m that meet at row 92: two planes of known extent, a few NaN holes.
@@ -83,20 +55,6 @@ Cloud twoPlaneScene() {
   return cloud;
 }
 
-// What the library says about `cloud` with `params`: the reference for the app's labels.
-std::vector<std::uint32_t> libraryLabels(const Cloud& cloud, const floodplane::Params& params = {}) {
-  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation(params);
-  segmentation.setInputCloud(std::make_shared<Cloud>(cloud));
-  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-  pcl::PointCloud<pcl::Label>::Ptr labels;
-  segmentation.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
-  std::vector<std::uint32_t> out;
-  for (const auto& l : *labels) out.push_back(l.label);
-  return out;
-}
-
 std::vector<std::uint32_t> labelsOf(const pcl::PointCloud<pcl::PointXYZL>& cloud) {
   std::vector<std::uint32_t> out;
   for (const auto& p : cloud) out.push_back(p.label);
@@ -108,34 +66,17 @@ bool sameXyz(const pcl::PointXYZ& a, const pcl::PointXYZL& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
-class PcdSegment : public ::testing::Test {
+class PcdSegment : public AppTest {
  protected:
   void SetUp() override {
     pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    std::string pattern = (fs::temp_directory_path() / "pcd_segment_test.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
+    AppTest::SetUp();
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
 
   // Runs pcd_segment with `arguments`; `prefix` is shell text put before the command
   // (resource limits).
   Result run(const std::vector<std::string>& arguments, const std::string& prefix = "") const {
-    std::string command = quote(PCD_SEGMENT_BINARY);
-    for (const std::string& argument : arguments) command += " " + quote(argument);
-    const fs::path out = dir_ / ".stdout";
-    const fs::path err = dir_ / ".stderr";
-    command = prefix + "exec " + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-    const int status = std::system(("sh -c " + quote(command)).c_str());
-    Result result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = readFile(out);
-    result.err = readFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return result;
+    return runShell(prefix + "exec " + commandLine(PCD_SEGMENT_BINARY, arguments));
   }
 
   std::string writeScene(const std::string& name, const Cloud& cloud = twoPlaneScene()) const {
@@ -154,8 +95,6 @@ class PcdSegment : public ::testing::Test {
     EXPECT_TRUE(result.out.empty()) << result.out;
     EXPECT_TRUE(fs::is_empty(path("out"))) << "a rejected input must leave no output";
   }
-
-  fs::path dir_;
 };
 
 // ---- the good path ------------------------------------------------------------------------
@@ -707,3 +646,4 @@ TEST_F(PcdSegment, SegmentsARealFrameAsTheLibraryDoes) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

@@ -6,50 +6,24 @@
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 #include <png.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "floodplane/flood_fill_plane_segmentation.h"
 #include "io/depth_camera.h"
 #include "io/depth_png.h"
+#include "support/app_run.h"
+#include "support/library_labels.h"
+#include "support/png_images.h"
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string quote(const std::string& word) {
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::size_t lineCount(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
 
 // The camera of the scene: a Kinect's f = 525 at 160 x 120.
 const floodplane::io::DepthCamera kCamera{131.25, 131.25, 79.5, 59.5, 5000.0};
@@ -86,56 +60,15 @@ pcl::PointCloud<pcl::PointXYZ> backProjected(const floodplane::io::DepthImage& i
   return cloud;
 }
 
-std::vector<std::uint32_t> libraryLabels(const pcl::PointCloud<pcl::PointXYZ>& cloud) {
-  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;
-  segmentation.setInputCloud(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(cloud));
-  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-  pcl::PointCloud<pcl::Label>::Ptr labels;
-  segmentation.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
-  std::vector<std::uint32_t> out;
-  for (const auto& l : *labels) out.push_back(l.label);
-  return out;
-}
-
-// Writes a 4 x 2 PNG of libpng's simplified `format` (8-bit grey, colour...).
-void writeOtherPng(const fs::path& path, png_uint_32 format) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  png.width = 4;
-  png.height = 2;
-  png.format = format;
-  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(png), 7);
-  ASSERT_NE(png_image_write_to_file(&png, path.c_str(), 0, pixels.data(), 0, nullptr), 0) << png.message;
-}
-
-class PcdSegmentDepth : public ::testing::Test {
+class PcdSegmentDepth : public AppTest {
  protected:
   void SetUp() override {
     pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    std::string pattern = (fs::temp_directory_path() / "pcd_segment_depth.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
+    AppTest::SetUp();
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
 
   Result run(const std::vector<std::string>& arguments) const {
-    std::string command = quote(PCD_SEGMENT_BINARY);
-    for (const std::string& argument : arguments) command += " " + quote(argument);
-    const fs::path out = dir_ / ".stdout";
-    const fs::path err = dir_ / ".stderr";
-    command = "exec " + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-    const int status = std::system(("sh -c " + quote(command)).c_str());
-    Result result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = readFile(out);
-    result.err = readFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return result;
+    return runShell("exec " + commandLine(PCD_SEGMENT_BINARY, arguments));
   }
 
   std::string writeDepth(const std::string& name) const {
@@ -152,8 +85,6 @@ class PcdSegmentDepth : public ::testing::Test {
     EXPECT_TRUE(contains(result.err, reason)) << "expected '" << reason << "' in: " << result.err;
     EXPECT_TRUE(fs::is_empty(path("out")));
   }
-
-  fs::path dir_;
 };
 
 TEST_F(PcdSegmentDepth, WritesTheBackProjectedPointsAndTheLibrarysLabels) {
@@ -262,3 +193,4 @@ TEST_F(PcdSegmentDepth, BatchGoesOnPastABadDepthImage) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

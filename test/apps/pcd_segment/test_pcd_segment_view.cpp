@@ -9,55 +9,28 @@
 #include <gtest/gtest.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
-#include <png.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "common/plane_scene.h"
 #include "io/rgb_image.h"
+#include "support/app_run.h"
+#include "support/png_images.h"
 
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
 using floodplane::view::CameraView;
 
 const std::string kScene = std::string(FLOODPLANE_RENDERED_DIR) + "/boxes_on_floor.none.pcd";
-
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string quote(const std::string& word) {
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::size_t lineCount(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 std::vector<fs::path> filesIn(const fs::path& directory) {
   std::vector<fs::path> files;
@@ -66,21 +39,6 @@ std::vector<fs::path> filesIn(const fs::path& directory) {
     if (entry.is_regular_file() && entry.path().filename().string()[0] != '.') files.push_back(entry.path());
   }
   return files;
-}
-
-floodplane::io::RgbImage readPng(const fs::path& path) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  if (png_image_begin_read_from_file(&png, path.c_str()) == 0) throw std::runtime_error(png.message);
-  png.format = PNG_FORMAT_RGB;
-  floodplane::io::RgbImage image;
-  image.width = png.width;
-  image.height = png.height;
-  image.pixels.resize(PNG_IMAGE_SIZE(png));
-  if (png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr) == 0) {
-    throw std::runtime_error(png.message);
-  }
-  return image;
 }
 
 using Rgb = std::array<std::uint8_t, 3>;
@@ -204,40 +162,16 @@ std::map<std::uint32_t, std::size_t> labelCounts(const pcl::PointCloud<pcl::Poin
   return counts;
 }
 
-// xvfb-run on a display of its own. With -a alone, xvfb-run instances started at the same
-// moment (parallel tests, other builds on the machine) all try display 99 first and trip over
-// each other; each starts its search from a number of its own here. -noreset: otherwise the
-// server resets as the last client leaves, while xvfb-run removes its temporary directory,
-// which then fails now and then (exit 5, "problem while cleaning up temporary directory").
-std::string xvfbRun() { return "xvfb-run -a -n " + std::to_string(1000 + ::getpid() % 30000) + " -s -noreset "; }
-
-class PcdSegmentView : public ::testing::Test {
+class PcdSegmentView : public AppTest {
  protected:
   void SetUp() override {
     pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    std::string pattern = (fs::temp_directory_path() / "pcd_segment_view_test.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
+    AppTest::SetUp();
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
 
   // Runs pcd_segment with `arguments`, after the shell text `prefix` (env, xvfb-run).
   Result run(const std::vector<std::string>& arguments, const std::string& prefix = "") const {
-    std::string command = quote(PCD_SEGMENT_BINARY);
-    for (const std::string& argument : arguments) command += " " + quote(argument);
-    const fs::path out = dir_ / ".stdout";
-    const fs::path err = dir_ / ".stderr";
-    command = prefix + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-    const int status = std::system(("sh -c " + quote(command)).c_str());
-    Result result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = readFile(out);
-    result.err = readFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return result;
+    return runShell(prefix + commandLine(PCD_SEGMENT_BINARY, arguments));
   }
 
   // Runs pcd_segment on a virtual X display of its own. Fails the test (does not skip it)
@@ -250,8 +184,6 @@ class PcdSegmentView : public ::testing::Test {
     }
     return run(arguments, xvfbRun());
   }
-
-  fs::path dir_;
 };
 
 // From the sensor's own viewpoint, as large as the grid, the snapshot is the label image in
@@ -391,3 +323,4 @@ TEST_F(PcdSegmentView, RefusesViewOptionsThatCannotWork) {
 }
 
 }  // namespace
+}  // namespace floodplane::test

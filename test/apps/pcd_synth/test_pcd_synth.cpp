@@ -4,71 +4,23 @@
 // arguments.
 
 #include <gtest/gtest.h>
-#include <stdlib.h>
-#include <sys/wait.h>
 
-#include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "support/app_run.h"
+
+namespace floodplane::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string quote(const std::string& word) {
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::size_t lineCount(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
-
-class PcdSynth : public ::testing::Test {
+class PcdSynth : public AppTest {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "pcd_synth_test.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
   Result run(const std::vector<std::string>& arguments) const {
-    std::string command = quote(PCD_SYNTH_BINARY);
-    for (const std::string& argument : arguments) command += " " + quote(argument);
-    const fs::path out = dir_ / ".stdout";
-    const fs::path err = dir_ / ".stderr";
-    command = "exec " + command + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-    const int status = std::system(("sh -c " + quote(command)).c_str());
-    Result result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = readFile(out);
-    result.err = readFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return result;
+    return runShell("exec " + commandLine(PCD_SYNTH_BINARY, arguments));
   }
 
   // Checks the error naming `reason` in its first line, the usage after it (as every
@@ -83,8 +35,6 @@ class PcdSynth : public ::testing::Test {
     EXPECT_TRUE(contains(first_line, reason)) << "expected '" << reason << "' in: " << result.err;
     EXPECT_FALSE(fs::exists(path("rejected")));
   }
-
-  fs::path dir_;
 };
 
 TEST_F(PcdSynth, RandomWritesEveryOutputOfEverySeedAndSensorWithAProgressLineEach) {
@@ -158,3 +108,4 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
 }
 
 }  // namespace
+}  // namespace floodplane::test
