@@ -91,12 +91,18 @@ std::uint64_t headerCount(const std::string& key, const std::string& word) {
   return value;
 }
 
-// The words of a header line as PCL splits them: at spaces, tabs and carriage returns.
+// What separates the words of a header line. PCL splits a line at spaces, tabs and carriage
+// returns, but takes its first word with operator>>, which skips vertical tabs and form feeds
+// too: with them here, "\vPOINTS" is a POINTS line as for PCL (and refused for its control
+// character) rather than the end of the header.
+constexpr const char* kHeaderSeparators = " \t\r\n\v\f";
+
+// The words of a header line as PCL reads them.
 std::vector<std::string> headerWords(const std::string& line) {
   std::vector<std::string> words;
   std::size_t start = 0;
   while (start < line.size()) {
-    const std::size_t end = std::min(line.find_first_of(" \t\r\n", start), line.size());
+    const std::size_t end = std::min(line.find_first_of(kHeaderSeparators, start), line.size());
     if (end > start) words.push_back(line.substr(start, end - start));
     start = end + 1;
   }
@@ -201,7 +207,19 @@ void checkAnnouncedSize(const std::string& path, std::uintmax_t file_size) {
   bool header_ended = false;
   while (line_start < start.size()) {
     std::size_t line_end = start.find('\n', line_start);
-    if (line_end == std::string::npos && start.size() < file_size) break;  // the line goes on past the limit
+    if (line_end == std::string::npos && start.size() < file_size) {
+      // The line goes on past the limit: a binary body after DATA without a newline byte in
+      // the rest of the 64 KiB. PCL stops at it unless its first word starts with a keyword
+      // (PCL compares prefixes), which the part read shows once it holds that word's first
+      // kLongestKeyword characters or its end.
+      constexpr std::size_t kLongestKeyword = 9;  // VIEWPOINT
+      const std::string part = start.substr(line_start);
+      const std::size_t word = part.find_first_not_of(kHeaderSeparators);
+      const bool word_known = word == std::string::npos || part.size() - word >= kLongestKeyword ||
+                              part.find_first_of(kHeaderSeparators, word) != std::string::npos;
+      header_ended = word_known && !header.add(part, static_cast<std::streamoff>(start.size()));
+      break;
+    }
     line_end = line_end == std::string::npos ? start.size() : line_end + 1;
     if (!header.add(start.substr(line_start, line_end - line_start), static_cast<std::streamoff>(line_end))) {
       header_ended = true;

@@ -299,6 +299,35 @@ TEST_F(InputFrame, ReadsABinaryBodyThatStartsLikeAComment) {
   EXPECT_EQ(frame.xyz[5].z, cloud[5].z);
 }
 
+// A binary body without a newline byte in the first 64 KiB: the "line" after DATA runs past the
+// part of the file read for the header check, and is still known for data by its first word.
+// (All points at (1, 1, 1): 0x3F800000 has no 0x0A byte.)
+TEST_F(InputFrame, ReadsABinaryBodyWithoutANewlineInItsFirst64KiB) {
+  pcl::PointCloud<pcl::PointXYZ> cloud(160, 120);
+  for (pcl::PointXYZ& p : cloud) p.x = p.y = p.z = 1.0f;
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path_.string(), cloud), 0);
+  ASSERT_GT(fs::file_size(path_), 65536u);
+  const auto frame = loadInputFrame(path_.string());
+  ASSERT_EQ(frame.xyz.size(), cloud.size());
+  EXPECT_EQ(frame.xyz[19199].z, 1.0f);
+}
+
+// ... but a header line that goes on for 64 KiB is refused.
+TEST_F(InputFrame, RefusesAHeaderLineLongerThan64KiB) {
+  writeHeader("ascii", 1, 1, "1 2 3\n");
+  const std::string text = readFile(path_);
+  writeFile(path_, "# " + std::string(70000, 'x') + "\n" + text);
+  expectRejected("more than 64 KiB of header lines");
+}
+
+// A vertical tab before a POINTS line after DATA: PCL's operator>> skips it and would allocate
+// what that line announces, so it is a POINTS line here too, and refused for the control
+// character.
+TEST_F(InputFrame, TakesALineAfterDataThatStartsWithAVerticalTabAsPclDoes) {
+  writeHeader("ascii", 1, 1, "\vPOINTS 4000000000\n1 2 3\n");
+  expectRejected("control characters");
+}
+
 TEST_F(InputFrame, RejectsIntegerCoordinates) {
   std::string text =
       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE I I I\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"

@@ -384,6 +384,64 @@ TEST_F(PcdSegment, BatchGoesOnPastABadFileAndExitsWithOne) {
   EXPECT_TRUE(contains(result.err, "1 of 3 inputs failed")) << result.err;
 }
 
+// -j 3 over seven inputs, one of them broken: every output byte for byte that of -j 1, and
+// the same lines on stdout and stderr in input order (the times aside), whichever thread
+// finishes first. The scenes differ (scaled), so swapped outputs would show.
+TEST_F(PcdSegment, SegmentsInParallelExactlyAsOneAtATime) {
+  fs::create_directory(path("in"));
+  for (int i = 0; i < 7; ++i) {
+    const std::string name = "in/f" + std::to_string(i) + ".pcd";
+    if (i == 3) {
+      writeFile(path(name), "not a point cloud\n");
+      continue;
+    }
+    Cloud cloud = twoPlaneScene();
+    for (pcl::PointXYZ& p : cloud) {
+      p.x *= 1.0f + 0.1f * static_cast<float>(i);
+      p.y *= 1.0f + 0.1f * static_cast<float>(i);
+      p.z *= 1.0f + 0.1f * static_cast<float>(i);
+    }
+    writeScene(name, cloud);
+  }
+  const auto withoutTimes = [](std::string text, const std::string& out_dir) {
+    std::string kept;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      const std::size_t ms = line.find(" ms -> ");
+      if (ms != std::string::npos) line = line.substr(0, line.rfind(", ", ms)) + line.substr(ms + 3);
+      const std::size_t dir = line.find(out_dir);
+      if (dir != std::string::npos) line.replace(dir, out_dir.size(), "OUT");
+      kept += line + "\n";
+    }
+    return kept;
+  };
+  const std::string serial_dir = path("serial").string();
+  const std::string parallel_dir = path("parallel").string();
+  const Result serial = run({path("in").string(), "-o", serial_dir, "--png", "--json", "-j", "1"});
+  const Result parallel = run({path("in").string(), "-o", parallel_dir, "--png", "--json", "-j", "3"});
+  EXPECT_EQ(serial.exit_code, 1) << serial.err;
+  EXPECT_EQ(parallel.exit_code, 1) << parallel.err;
+  EXPECT_EQ(lineCount(serial.out), 6u) << serial.out << serial.err;
+  EXPECT_EQ(withoutTimes(parallel.out, parallel_dir), withoutTimes(serial.out, serial_dir));
+  EXPECT_EQ(parallel.err, serial.err);
+  EXPECT_TRUE(contains(parallel.err, "f3.pcd: not a PCD file")) << parallel.err;
+  std::size_t compared = 0;
+  for (const auto& entry : fs::directory_iterator(serial_dir)) {
+    const fs::path name = entry.path().filename();
+    if (name.extension() == ".json") continue;  // holds the time of the call
+    EXPECT_EQ(readFile(fs::path(parallel_dir) / name), readFile(entry.path())) << name;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 12u);  // six label PCDs and six PNGs
+  for (int i : {0, 1, 2, 4, 5, 6}) {
+    nlohmann::json a = nlohmann::json::parse(readFile(fs::path(serial_dir) / ("f" + std::to_string(i) + ".planes.json")));
+    nlohmann::json b = nlohmann::json::parse(readFile(fs::path(parallel_dir) / ("f" + std::to_string(i) + ".planes.json")));
+    a.erase("segmentation_ms");
+    b.erase("segmentation_ms");
+    EXPECT_EQ(a, b) << i;
+  }
+}
+
 TEST_F(PcdSegment, QuietPrintsNothingOnSuccess) {
   const Result result = run({writeScene("scene.pcd"), "-o", path("out").string(), "--quiet"});
   EXPECT_EQ(result.exit_code, 0);
@@ -526,6 +584,8 @@ TEST_F(PcdSegment, RejectsBadOptionValuesWithUsageAndExitCodeTwo) {
                                                      {"--min-inliers", "-4"},
                                                      {"--seed-size", "abc"},
                                                      {"--depth-noise-coefficient", "-1"},
+                                                     {"--jobs", "0"},
+                                                     {"-j", "many"},
                                                      {"--no-such-option"}};
   for (const auto& option : bad) {
     std::vector<std::string> arguments = {input, "-o", path("out").string()};
