@@ -15,13 +15,7 @@ namespace {
 using test::Pinhole;
 using test::RenderedGrid;
 
-Pinhole camera() {
-  Pinhole c;
-  c.width = 120;
-  c.height = 90;
-  c.focal = 98.4;
-  return c;
-}
+Pinhole camera() { return test::kinectView(120, 90); }
 
 DepthNoise constantNoise(double sigma) {
   DepthNoise noise;

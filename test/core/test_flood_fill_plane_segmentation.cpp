@@ -19,13 +19,7 @@
 namespace floodplane {
 namespace {
 
-test::Pinhole kinect() {
-  test::Pinhole c;
-  c.width = 640;
-  c.height = 480;
-  c.focal = 525.0;
-  return c;
-}
+test::Pinhole kinect() { return test::kinectView(640, 480); }
 
 template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr toCloud(const test::RenderedGrid& scene) {

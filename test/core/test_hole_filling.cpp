@@ -19,13 +19,7 @@ using test::RenderedGrid;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-Pinhole camera() {
-  Pinhole c;
-  c.width = 160;
-  c.height = 120;
-  c.focal = 131.25;
-  return c;
-}
+Pinhole camera() { return test::kinectView(160, 120); }
 
 Tolerances exactTolerances(std::size_t pixels) {
   static const Params params;

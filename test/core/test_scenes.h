@@ -26,6 +26,15 @@ struct Pinhole {
   double cy() const { return (height - 1) / 2.0; }
 };
 
+/// A width x height grid with a Kinect's field of view: f = 525 px at 640 x 480, scaled.
+inline Pinhole kinectView(int width, int height) {
+  Pinhole c;
+  c.width = width;
+  c.height = height;
+  c.focal = 525.0 * width / 640.0;
+  return c;
+}
+
 struct ScenePlane {
   Eigen::Vector3d normal;  // unit; n . P + d = 0
   double offset = 0.0;

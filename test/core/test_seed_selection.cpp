@@ -14,13 +14,7 @@ using test::Pinhole;
 using test::ScenePlane;
 
 // 320 x 240 with the Kinect's field of view: f = 262.5 px, so rho = 8 px at 1 m.
-Pinhole camera() {
-  Pinhole c;
-  c.width = 320;
-  c.height = 240;
-  c.focal = 262.5;
-  return c;
-}
+Pinhole camera() { return test::kinectView(320, 240); }
 
 // The pixel column of a point.
 double column(const Eigen::Vector3d& p) { return camera().focal * p.x() / p.z() + camera().cx(); }

@@ -35,14 +35,6 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // ---- helpers -------------------------------------------------------------------------------
 
-// A camera of the given size with a Kinect's field of view.
-test::Pinhole pinhole(int width, int height) {
-  test::Pinhole c;
-  c.width = width;
-  c.height = height;
-  c.focal = width * 525.0 / 640.0;
-  return c;
-}
 
 Cloud::Ptr toCloud(const std::vector<float>& xyz, int width, int height) {
   Cloud::Ptr cloud(new Cloud);
@@ -298,7 +290,7 @@ struct RandomCloud {
 RandomCloud randomCloud(std::mt19937& rng, int width, int height) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   std::uniform_int_distribution<int> planes_count(1, 4);
-  test::Pinhole camera = pinhole(width, height);
+  test::Pinhole camera = test::kinectView(width, height);
   camera.focal *= 0.6 + 0.9 * u01(rng);
   std::vector<test::ScenePlane> planes;
   const int count = planes_count(rng);
@@ -407,7 +399,7 @@ TEST(SegmentationProperties, ACopyGivesTheSameResultInAFreshOrAReusedInstance) {
   }
   {
     RandomCloud room;
-    room.cloud = toCloud(test::render(pinhole(320, 240), test::roomCorner(), 0.004, 3));
+    room.cloud = toCloud(test::render(test::kinectView(320, 240), test::roomCorner(), 0.004, 3));
     room.description = "room corner 320 x 240";
     clouds.push_back(room);
   }
@@ -456,7 +448,7 @@ std::vector<test::ScenePlane> roomWithABox() {
 }
 
 TEST(SegmentationProperties, NaNHolesSmallerThanThePlanesLoseNoPlane) {
-  const test::Pinhole camera = pinhole(320, 240);
+  const test::Pinhole camera = test::kinectView(320, 240);
   std::size_t found_planes = 0;
   for (unsigned trial = 0; trial < 8; ++trial) {
     const bool box = trial % 2 == 1;
@@ -579,7 +571,7 @@ TEST(SegmentationProperties, ThinStripsGiveConsistentOutputs) {
 
 // The room corner (floor, back wall, left wall) at a high resolution: each found with IoU > 0.9.
 void findsTheRoomAt(int width, int height) {
-  const test::Pinhole camera = pinhole(width, height);
+  const test::Pinhole camera = test::kinectView(width, height);
   std::vector<int> truth;
   Cloud::Ptr cloud;
   {
@@ -705,7 +697,7 @@ TEST(SegmentationProperties, FindsAPlane100KilometresAway) {
     test::ScenePlane plane;
     plane.normal = c.normal;
     plane.offset = 1e5;
-    const test::RenderedGrid scene = test::render(pinhole(160, 120), {plane}, c.noise, 3);
+    const test::RenderedGrid scene = test::render(test::kinectView(160, 120), {plane}, c.noise, 3);
     const Cloud::Ptr cloud = toCloud(scene);
     ASSERT_GT((*cloud)[0].getVector3fMap().norm(), 1e5f);
     for (const double coefficient : {0.0019, 0.0}) {
@@ -736,7 +728,7 @@ struct FarPointScene {
 };
 
 FarPointScene roomWithFarPoints() {
-  const test::RenderedGrid scene = test::render(pinhole(320, 240), test::roomCorner(), 0.003, 31);
+  const test::RenderedGrid scene = test::render(test::kinectView(320, 240), test::roomCorner(), 0.003, 31);
   FarPointScene out;
   out.cloud = toCloud(scene);
   out.truth = scene.truth;
@@ -800,14 +792,14 @@ Cloud::Ptr floorWithOnePixelAt(bool wall, const Eigen::Vector3f& far) {
   floor.id = 1;
   std::vector<test::ScenePlane> planes{floor};
   if (wall) planes.push_back(test::frontalPlane(6.0, 2));
-  Cloud::Ptr cloud = toCloud(test::render(pinhole(160, 120), planes, 0.002, 1));
+  Cloud::Ptr cloud = toCloud(test::render(test::kinectView(160, 120), planes, 0.002, 1));
   (*cloud)[kFloorPixel].getVector3fMap() = far;
   return cloud;
 }
 
 // The viewing ray of pixel (81, 101), unit.
 Eigen::Vector3f floorPixelRay() {
-  const test::Pinhole camera = pinhole(160, 120);
+  const test::Pinhole camera = test::kinectView(160, 120);
   return Eigen::Vector3f(static_cast<float>((81 - camera.cx()) / camera.focal),
                          static_cast<float>((101 - camera.cy()) / camera.focal), 1.0f)
       .normalized();

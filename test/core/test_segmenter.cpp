@@ -19,13 +19,7 @@ using test::RenderedGrid;
 using test::ScenePlane;
 using test::bestIoU;
 
-Pinhole camera() {
-  Pinhole c;
-  c.width = 320;
-  c.height = 240;
-  c.focal = 262.5;
-  return c;
-}
+Pinhole camera() { return test::kinectView(320, 240); }
 
 Params exactParams() {
   Params p;

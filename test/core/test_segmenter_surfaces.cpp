@@ -20,13 +20,7 @@ using test::SceneSurface;
 
 constexpr double kPi = 3.14159265358979323846;
 
-Pinhole camera() {
-  Pinhole c;
-  c.width = 320;
-  c.height = 240;
-  c.focal = 262.5;
-  return c;
-}
+Pinhole camera() { return test::kinectView(320, 240); }
 
 // Noise along the rays of a Kinect (sigma = 0.0019 r^2), or none.
 test::RangeNoise kinectNoise(bool noisy) {
