@@ -3,7 +3,6 @@
 // I/O only; the segmentation is floodplane::FloodFillPlaneSegmentation.
 
 #include <CLI/CLI.hpp>
-#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <unistd.h>
 
@@ -28,6 +27,7 @@
 #include "io/input_files.h"
 #include "io/input_frame.h"
 #include "io/label_palette.h"
+#include "io/labelled_cloud.h"
 #include "io/png_file.h"
 #include "label_pcd.h"
 #include "ordered_batch.h"
@@ -236,16 +236,6 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   return out;
 }
 
-// The label cloud in the input's grid and pose: x y z [rgb] label.
-template <typename PointOut, typename PointIn>
-pcl::PointCloud<PointOut> labelledCloud(const pcl::PointCloud<PointIn>& points,
-                                        const pcl::PointCloud<pcl::Label>& labels) {
-  pcl::PointCloud<PointOut> out;
-  pcl::copyPointCloud(points, out);  // keeps the grid, is_dense and the sensor pose
-  for (std::size_t i = 0; i < out.size(); ++i) out[i].label = labels[i].label;
-  return out;
-}
-
 void writeLabelPng(const std::string& path, const pcl::PointCloud<pcl::Label>& labels) {
   std::vector<std::uint32_t> grid(labels.size());
   for (std::size_t i = 0; i < grid.size(); ++i) grid[i] = labels[i].label;
@@ -280,11 +270,14 @@ FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths&
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(input, options.camera);
   const auto points = std::make_shared<Cloud>(std::move(frame.xyz));
   const Segmented segmented = segment(segmentation, points);
+  // The label cloud in the input's grid and pose (x y z [rgb] label), as the Python module writes it.
+  const std::vector<std::uint32_t>& labels = segmentation.getLastSegmentation().labels;
   if (frame.xyzrgb) {
-    pcd_segment::writeLabelPcd(paths.pcd, labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, *segmented.labels),
+    pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, labels),
                                options.ascii);
   } else {
-    pcd_segment::writeLabelPcd(paths.pcd, labelledCloud<pcl::PointXYZL>(*points, *segmented.labels), options.ascii);
+    pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
+                               options.ascii);
   }
   if (options.png) writeLabelPng(paths.png, *segmented.labels);
   if (options.json) writeReport(paths.json, input, *points, segmentation.getParams(), segmented);
