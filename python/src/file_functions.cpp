@@ -141,8 +141,10 @@ py::array_t<float> depthToPoints(py::handle depth, double fx, double fy, double 
 void bindFileFunctions(py::module_& m) {
   m.def("read_pcd", &readPcd, py::arg("path"),
         "Reads an organized PCD file (x y z as float or double): float32 (H, W, 3) in the file's coordinates, "
-        "NaN where there is no return. Raises OSError (FileNotFoundError) for a file that cannot be read as "
-        "an organized cloud.");
+        "NaN where there is no return. segment() takes the sensor to be at the origin; a file whose VIEWPOINT "
+        "puts it elsewhere (rare for camera frames) needs that translation subtracted first, or segment_file(), "
+        "which applies it as pcd_segment does. Raises OSError (FileNotFoundError) for a file that cannot be read "
+        "as an organized cloud.");
   m.def("read_labels_pcd", &readLabelsPcd, py::arg("path"),
         "Reads the uint32 label field of an organized PCD file (pcd_segment's and write_labels_pcd's outputs, "
         "pcd_synth's ground truth): uint32 (H, W). Raises OSError when there is none.");
