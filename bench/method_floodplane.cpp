@@ -29,13 +29,14 @@ void runFloodplane(benchmark::State& state, const Frame& frame, int subsampling,
     seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
     benchmark::DoNotOptimize(regions.data());
     if (phases) {
-      const PhaseTimes& t = seg.getLastSegmentation().phases;
+      const PhaseTimes& t = seg.getLastPhases();
       sum.preparation += t.preparation;
       sum.seed_selection += t.seed_selection;
       sum.flood_fill += t.flood_fill;
       sum.relabelling += t.relabelling;
       sum.merging += t.merging;
       sum.region_output += t.region_output;
+      sum.pcl_conversion += t.pcl_conversion;
     }
   }
   state.counters["planes"] = static_cast<double>(regions.size());
@@ -49,6 +50,7 @@ void runFloodplane(benchmark::State& state, const Frame& frame, int subsampling,
     state.counters["relabel_ms"] = sum.relabelling / n;
     state.counters["merge_ms"] = sum.merging / n;
     state.counters["output_ms"] = sum.region_output / n;
+    state.counters["pcl_ms"] = sum.pcl_conversion / n;
   }
 }
 

@@ -46,7 +46,7 @@ class FloodplaneMethod : public Method {
       }
     }
     if (measure_phases_) {
-      result.phases = segmentation_.getLastSegmentation().phases;
+      result.phases = segmentation_.getLastPhases();
     }
     return result;
   }

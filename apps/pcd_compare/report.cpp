@@ -609,6 +609,7 @@ const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>>& pha
       {"relabelling", &floodplane::PhaseTimes::relabelling},
       {"merging", &floodplane::PhaseTimes::merging},
       {"region_output", &floodplane::PhaseTimes::region_output},
+      {"pcl_conversion", &floodplane::PhaseTimes::pcl_conversion},
   };
   return members;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -129,7 +130,7 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   /// All parameters at once; throws std::invalid_argument naming the first bad one.
   void setParams(const Params& params);
   const Params& getParams() const { return params_; }
-  /// Record the time of each phase (Fig. 5) in getLastSegmentation().phases.
+  /// Record the time of each phase (Fig. 5) in getLastPhases().
   void setMeasurePhases(bool measure) { measure_phases_ = measure; }
 
   // ---- segmentation, with OrganizedMultiPlaneSegmentation's signatures -------------------
@@ -153,6 +154,9 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   /// The last result as the core produced it: labels, and planes relative to the sensor origin (axes as the cloud's),
   /// the time per phase and statistics. Valid until the next call.
   const Segmentation& getLastSegmentation() const { return *last_; }
+  /// The last call's time per phase when setMeasurePhases(true): the core's phases and this
+  /// class's conversion around them (pcl_conversion), which together make up the call.
+  const PhaseTimes& getLastPhases() const { return phases_; }
 
  protected:
   virtual std::string getClassName() const { return "FloodFillPlaneSegmentation"; }
@@ -185,6 +189,8 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   void fillIndices(std::vector<pcl::PointIndices>& inlier_indices, std::vector<pcl::PointIndices>* label_indices) const;
   void fillLabels(pcl::PointCloud<PointLT>& labels) const;
   void fillRegions(Regions& regions, std::vector<pcl::PointIndices>* boundary_indices);
+  // Adds the time since run() handed over to the conversion phase (when measuring).
+  void finishPhases();
 
   Params params_;
   bool measure_phases_ = false;
@@ -192,6 +198,8 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   std::vector<float> sensor_frame_points_;  // the cloud shifted to its sensor origin, when not at 0
   std::vector<CloudPlane, Eigen::aligned_allocator<CloudPlane>> planes_;
   std::vector<int> contour_;
+  PhaseTimes phases_;
+  std::chrono::steady_clock::time_point conversion_start_;  // when run() handed over
   const Segmentation* last_ = &empty_;
   Segmentation empty_;
 };

@@ -9,6 +9,7 @@
 #include <pcl/segmentation/organized_multi_plane_segmentation.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -326,6 +327,33 @@ TEST(FloodFillPlaneSegmentation, SegmentsWithoutRefinementInSegment) {
     refined_total += refined[k].getCount();
   }
   EXPECT_GE(refined_total, plain_total);
+}
+
+// With the phase timer on, the class's phases are the core's plus its own conversion, and
+// together they fit in the call; off, they are all zero.
+TEST(FloodFillPlaneSegmentation, TimesTheCoresPhasesAndItsOwnConversion) {
+  const auto cloud = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 2));
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud(cloud);
+  FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
+  pcl::PointCloud<pcl::Label>::Ptr labels;
+  seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  EXPECT_EQ(seg.getLastPhases().total(), 0.0);
+
+  seg.setMeasurePhases(true);
+  const auto start = std::chrono::steady_clock::now();
+  seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const PhaseTimes& phases = seg.getLastPhases();
+  const PhaseTimes& core = seg.getLastSegmentation().phases;
+  EXPECT_GT(phases.pcl_conversion, 0.0);
+  EXPECT_EQ(core.pcl_conversion, 0.0);
+  EXPECT_EQ(phases.flood_fill, core.flood_fill);
+  EXPECT_EQ(phases.region_output, core.region_output);
+  EXPECT_DOUBLE_EQ(phases.total(), core.total() + phases.pcl_conversion);
+  EXPECT_LE(phases.total(), wall_ms);
 }
 
 TEST(FloodFillPlaneSegmentation, SegmentsTheRealFrames) {

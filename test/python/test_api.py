@@ -58,6 +58,7 @@ def test_the_result_carries_noise_stats_and_phase_times(scene):
     assert timed.phases.total == pytest.approx(
         timed.phases.preparation + timed.phases.seed_selection + timed.phases.flood_fill + timed.phases.relabelling
         + timed.phases.merging + timed.phases.region_output)
+    assert timed.phases.pcl_conversion == 0  # no PCL class in between
     untimed = segmenter.segment(scene)
     assert untimed.phases.total == 0
     assert timed.stats.seeds >= 2 and timed.stats.segments >= 2

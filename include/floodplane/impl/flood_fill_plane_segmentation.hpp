@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,8 +24,11 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::setParams(const Params& params
 
 template <typename PointT, typename PointLT>
 bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* method) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = measure_phases_ ? Clock::now() : Clock::time_point();
   last_ = &empty_;
   planes_.clear();
+  phases_ = PhaseTimes();
   const std::string name = getClassName();
   if (!input_) {
     PCL_ERROR("[floodplane::%s::%s] No input cloud: call setInputCloud first.\n", name.c_str(), method);
@@ -65,7 +69,13 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
   Segmenter::Options options;
   options.refine = refine;
   options.measure_phases = measure_phases_;
+  const Clock::time_point core_start = measure_phases_ ? Clock::now() : Clock::time_point();
   last_ = &segmenter_.segment(grid, options);
+  if (measure_phases_) {
+    phases_ = last_->phases;
+    phases_.pcl_conversion = std::chrono::duration<double, std::milli>(core_start - start).count();
+    conversion_start_ = Clock::now();
+  }
 
   // The planes in the cloud's frame: only the shift to the sensor's origin is undone.
   planes_.resize(last_->planes.size());
@@ -195,6 +205,13 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
 }
 
 template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::finishPhases() {
+  if (!measure_phases_) return;
+  phases_.pcl_conversion +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - conversion_start_).count();
+}
+
+template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::clearOutputs(std::vector<pcl::ModelCoefficients>& model_coefficients,
                                                                std::vector<pcl::PointIndices>& inlier_indices) const {
   model_coefficients.clear();
@@ -210,6 +227,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::Model
   if (!run(false, "segment")) return;
   fillCoefficients(model_coefficients);
   fillIndices(inlier_indices, nullptr);
+  finishPhases();
 }
 
 template <typename PointT, typename PointLT>
@@ -231,6 +249,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::Model
     centroids.push_back(plane.centroid);
     covariances.push_back(plane.covariance);
   }
+  finishPhases();
 }
 
 template <typename PointT, typename PointLT>
@@ -238,6 +257,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segment(Regions& regions) {
   regions.clear();
   if (!run(false, "segment")) return;
   fillRegions(regions, nullptr);
+  finishPhases();
 }
 
 template <typename PointT, typename PointLT>
@@ -245,6 +265,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(Regions& regi
   regions.clear();
   if (!run(true, "segmentAndRefine")) return;
   fillRegions(regions, nullptr);
+  finishPhases();
 }
 
 template <typename PointT, typename PointLT>
@@ -263,6 +284,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(
   fillIndices(inlier_indices, &label_indices);
   fillLabels(*labels);
   fillRegions(regions, &boundary_indices);
+  finishPhases();
 }
 
 }  // namespace floodplane
