@@ -43,7 +43,6 @@ class HoleFilling {
 
   std::vector<float> points_;
   PointGrid filled_grid_;
-  PointGrid source_;
   bool filled_ = false;
 };
 

@@ -40,7 +40,6 @@ class OcclusionMerging {
   std::vector<Box> boxes_;
   std::vector<PlaneFit> fits_;
   UnionFind sets_;
-  std::vector<bool> merged_;
 };
 
 }  // namespace floodplane

@@ -49,6 +49,11 @@ class PlaneCandidates {
   /// Applies remap() to labels [begin, end) and notes first pixels (those before `begin`
   /// already noted).
   void renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end);
+  /// Applies remap() to the whole label image and notes every plane's first pixel anew.
+  void renumberImage(std::vector<std::uint32_t>& labels) {
+    forgetFirstPixels();
+    renumberPixels(labels.data(), 0, labels.size());
+  }
 
  private:
   std::vector<PlaneCandidate> candidates_;

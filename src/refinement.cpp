@@ -109,10 +109,7 @@ class Refiner {
 void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
                   PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue) {
   if (planes.list().empty()) {
-    if (renumber_first) {
-      planes.forgetFirstPixels();
-      planes.renumberPixels(labels.data(), 0, labels.size());
-    }
+    if (renumber_first) planes.renumberImage(labels);
     return;
   }
   Refiner refiner(full, holes, labels, planes, queue);

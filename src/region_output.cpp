@@ -52,19 +52,12 @@ void RegionBuilder::build(const PointGrid& measured, const PointGrid& full, cons
     // Refinement may also have changed the order by size.
     renumbered = candidates_.sortBySize(0, &params);
   }
-  if (renumbered) {
-    candidates_.forgetFirstPixels();
-    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
-  }
+  // Each stage below reads the labels by the candidates' current numbers: renumber after each.
+  if (renumbered) candidates_.renumberImage(out.labels);
   if (occlusion_merging_.run(full, out.labels, candidates_, MergeCriterion(params, tolerances), tolerances,
-                             angular_pitch)) {
-    candidates_.forgetFirstPixels();
-    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
-  }
-  if (dropCurvedPlanes(full, out.labels, tolerances)) {
-    candidates_.forgetFirstPixels();
-    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
-  }
+                             angular_pitch))
+    candidates_.renumberImage(out.labels);
+  if (dropCurvedPlanes(full, out.labels, tolerances)) candidates_.renumberImage(out.labels);
   // A plane's centroid, covariance and fit are those of its inliers as the caller measured
   // them, not as they were smoothed for segmenting.
   if (measured.data != full.data) sumMeasuredPoints(measured, out.labels);

@@ -35,6 +35,22 @@ typename pcl::PointCloud<PointT>::Ptr toCloud(const test::RenderedGrid& scene) {
   return cloud;
 }
 
+// Every output of segmentAndRefine's full overload.
+template <typename PointT>
+struct AllOutputs {
+  typename FloodFillPlaneSegmentation<PointT>::Regions regions;
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
+  pcl::PointCloud<pcl::Label>::Ptr labels;
+};
+
+template <typename PointT>
+AllOutputs<PointT> segmentAndRefine(FloodFillPlaneSegmentation<PointT>& seg) {
+  AllOutputs<PointT> out;
+  seg.segmentAndRefine(out.regions, out.coefficients, out.inliers, out.labels, out.label_indices, out.boundaries);
+  return out;
+}
+
 template <typename PointT>
 class FloodFillPlaneSegmentationTyped : public ::testing::Test {};
 using PointTypes = ::testing::Types<pcl::PointXYZ, pcl::PointXYZRGB, pcl::PointXYZRGBA, pcl::PointXYZI, pcl::PointXYZL>;
@@ -45,11 +61,8 @@ TYPED_TEST(FloodFillPlaneSegmentationTyped, FillsEveryOutputOfSegmentAndRefineCo
   const auto cloud = toCloud<TypeParam>(test::render(kinect(), test::roomCorner(), 0.004, 1));
   Seg seg;
   seg.setInputCloud(cloud);
-  typename Seg::Regions regions;
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-  pcl::PointCloud<pcl::Label>::Ptr labels;
-  seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  const AllOutputs<TypeParam> out = segmentAndRefine(seg);
+  const auto& [regions, coefficients, inliers, label_indices, boundaries, labels] = out;
 
   ASSERT_EQ(regions.size(), 3u);
   ASSERT_EQ(coefficients.size(), 3u);
@@ -335,16 +348,12 @@ TEST(FloodFillPlaneSegmentation, TimesTheCoresPhasesAndItsOwnConversion) {
   const auto cloud = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 2));
   FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
   seg.setInputCloud(cloud);
-  FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-  pcl::PointCloud<pcl::Label>::Ptr labels;
-  seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  segmentAndRefine(seg);
   EXPECT_EQ(seg.getLastPhases().total(), 0.0);
 
   seg.setMeasurePhases(true);
   const auto start = std::chrono::steady_clock::now();
-  seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+  segmentAndRefine(seg);
   const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const PhaseTimes& phases = seg.getLastPhases();
   const PhaseTimes& core = seg.getLastSegmentation().phases;
@@ -366,11 +375,8 @@ TEST(FloodFillPlaneSegmentation, SegmentsTheRealFrames) {
     ASSERT_EQ(pcl::io::loadPCDFile(entry.path().string(), *cloud), 0) << entry.path();
     FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud(cloud);
-    FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
-    std::vector<pcl::ModelCoefficients> coefficients;
-    std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-    pcl::PointCloud<pcl::Label>::Ptr labels;
-    seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
+    const AllOutputs<pcl::PointXYZ> out = segmentAndRefine(seg);
+    const auto& [regions, coefficients, inliers, label_indices, boundaries, labels] = out;
     ASSERT_FALSE(regions.empty()) << entry.path();
     // Every real frame shows a floor, a table or a wall covering at least a twentieth of the
     // image (the least: five_people, whose floor shows between the people on 8.7 %).
