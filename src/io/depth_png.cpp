@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "io/atomic_file.h"
+#include "io/png_file.h"
 
 namespace floodplane::io {
 namespace {
@@ -172,20 +172,9 @@ void writeDepthPng(const std::string& path, const DepthImage& image) {
     throw std::invalid_argument("writeDepthPng: depth buffer holds " + std::to_string(image.depth.size()) +
                                 " values, expected " + std::to_string(pixels));
   }
-  writeFileAtomically(path, [&](const std::string& temporary) {
-    // The simplified API reports errors in png_image::message instead of longjmp. A linear
-    // greyscale image is written as 16-bit samples, unchanged.
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    png.width = static_cast<png_uint_32>(image.width);
-    png.height = static_cast<png_uint_32>(image.height);
-    png.format = PNG_FORMAT_LINEAR_Y;
-    if (png_image_write_to_file(&png, temporary.c_str(), 0, image.depth.data(), 0, nullptr) == 0) {
-      const std::string reason = png.message;
-      png_image_free(&png);
-      throw std::runtime_error("cannot write PNG file '" + path + "': " + reason);
-    }
-  });
+  // A linear greyscale image is written as 16-bit samples, unchanged.
+  writePngPixels(path, static_cast<unsigned>(image.width), static_cast<unsigned>(image.height), PNG_FORMAT_LINEAR_Y,
+                 image.depth.data());
 }
 
 }  // namespace floodplane::io

@@ -21,17 +21,20 @@ void writePng(const std::string& path, const RgbImage& image) {
                                 std::to_string(image.pixels.size()) + " bytes, expected " +
                                 std::to_string(image.width * image.height * 3));
   }
+  writePngPixels(path, static_cast<unsigned>(image.width), static_cast<unsigned>(image.height), PNG_FORMAT_RGB,
+                 image.pixels.data());
+}
+
+void writePngPixels(const std::string& path, unsigned width, unsigned height, unsigned format, const void* pixels) {
   writeFileAtomically(path, [&](const std::string& temporary) {
     // libpng's simplified API reports errors through png_image::message instead of longjmp,
-    // which would skip C++ destructors.
+    // which would skip C++ destructors. Row stride 0: rows packed.
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
-    png.width = static_cast<png_uint_32>(image.width);
-    png.height = static_cast<png_uint_32>(image.height);
-    png.format = PNG_FORMAT_RGB;
-    const auto row_stride = static_cast<png_int_32>(image.width * 3);
-    if (png_image_write_to_file(&png, temporary.c_str(), 0, image.pixels.data(), row_stride,
-                                nullptr) == 0) {
+    png.width = width;
+    png.height = height;
+    png.format = format;
+    if (png_image_write_to_file(&png, temporary.c_str(), 0, pixels, 0, nullptr) == 0) {
       const std::string reason = png.message;
       png_image_free(&png);
       throw std::runtime_error("cannot write PNG file '" + path + "': " + reason);

@@ -12,4 +12,10 @@ namespace floodplane::io {
 /// width * height * 3 bytes, std::runtime_error naming `path` if the file cannot be written.
 void writePng(const std::string& path, const RgbImage& image);
 
+/// Writes `width` x `height` pixels of libpng's simplified-API `format` (PNG_FORMAT_RGB,
+/// PNG_FORMAT_LINEAR_Y for 16-bit grey, ...) from `pixels`, rows packed, through
+/// writeFileAtomically; throws std::runtime_error naming `path` if the file cannot be written.
+/// The size is the caller's to check.
+void writePngPixels(const std::string& path, unsigned width, unsigned height, unsigned format, const void* pixels);
+
 }  // namespace floodplane::io
