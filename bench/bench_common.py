@@ -11,6 +11,18 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
+REAL_FRAMES = ROOT.parent / "shared/data/real"
+
+
+def pcd_files_or_real_frames(parser, files):
+    """`files`, or when none are given the real frames beside the project; a usage error
+    through `parser` when there are none either."""
+    files = files or sorted(REAL_FRAMES.glob("*.pcd"))
+    if not files:
+        parser.error(f"no PCD files given and none in {REAL_FRAMES}")
+    return files
+
+
 def use_build_tree(build):
     """Imports floodplane from `build`/python unless it is importable already."""
     package = pathlib.Path(build, "python")

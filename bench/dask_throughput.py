@@ -16,7 +16,7 @@ import sys
 import tempfile
 import time
 
-from bench_common import ROOT, machine, median, run_pcd_segment, use_build_tree
+from bench_common import ROOT, machine, median, pcd_files_or_real_frames, run_pcd_segment, use_build_tree
 
 
 def parse_arguments():
@@ -28,10 +28,7 @@ def parse_arguments():
     parser.add_argument("--rounds", type=int, default=3, help="timed runs of each cluster, alternating")
     parser.add_argument("--batch-size", type=int, default=4, help="files per task (segment_files' batch_size)")
     arguments = parser.parse_args()
-    if not arguments.sources:
-        arguments.sources = sorted((ROOT.parent / "shared/data/real").glob("*.pcd"))
-    if not arguments.sources:
-        parser.error("no PCD files given and none in ../shared/data/real")
+    arguments.sources = pcd_files_or_real_frames(parser, arguments.sources)
     return arguments
 
 

@@ -14,7 +14,7 @@ import sys
 import tempfile
 import time
 
-from bench_common import ROOT, machine, median, run_pcd_segment, use_build_tree
+from bench_common import ROOT, machine, median, pcd_files_or_real_frames, run_pcd_segment, use_build_tree
 
 
 def parse_arguments():
@@ -24,10 +24,7 @@ def parse_arguments():
     parser.add_argument("--build", type=pathlib.Path, default=ROOT / "build")
     parser.add_argument("--repeat", type=int, default=30, help="timed calls per frame after one warm-up")
     arguments = parser.parse_args()
-    if not arguments.frames:
-        arguments.frames = sorted((ROOT.parent / "shared/data/real").glob("*.pcd"))
-    if not arguments.frames:
-        parser.error("no frames given and none in ../shared/data/real")
+    arguments.frames = pcd_files_or_real_frames(parser, arguments.frames)
     return arguments
 
 
