@@ -236,12 +236,6 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   return out;
 }
 
-void writeLabelPng(const std::string& path, const pcl::PointCloud<pcl::Label>& labels) {
-  std::vector<std::uint32_t> grid(labels.size());
-  for (std::size_t i = 0; i < grid.size(); ++i) grid[i] = labels[i].label;
-  floodplane::io::writePng(path, floodplane::io::labelImage(grid, labels.width, labels.height));
-}
-
 void writeReport(const std::string& path, const std::string& input, const Cloud& points,
                  const floodplane::Params& params, const Segmented& segmented) {
   pcd_segment::Report report;
@@ -279,7 +273,9 @@ FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths&
     pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
                                options.ascii);
   }
-  if (options.png) writeLabelPng(paths.png, *segmented.labels);
+  if (options.png) {
+    floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, points->width, points->height));
+  }
   if (options.json) writeReport(paths.json, input, *points, segmentation.getParams(), segmented);
   FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}};
   if (options.snapshot || options.view) {
