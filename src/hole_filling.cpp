@@ -75,8 +75,9 @@ void HoleFilling::fillLine(std::size_t first, std::ptrdiff_t step, int count, co
 }
 
 const PointGrid& HoleFilling::fill(const PointGrid& grid, const Tolerances& tolerances) {
+  source_ = grid;
   filled_ = bridgeableShare(grid, tolerances) >= kSmallestShare;
-  if (!filled_) return grid;
+  if (!filled_) return source_;
   const std::size_t n = grid.size();
   points_.resize(4 * n);
   for (std::size_t i = 0; i < n; ++i) {

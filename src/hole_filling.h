@@ -43,6 +43,9 @@ class HoleFilling {
 
   std::vector<float> points_;
   PointGrid filled_grid_;
+  // The unfilled grid as fill() returns it: a copy, so that the reference fill() returns stays
+  // valid when the caller's grid was a temporary (PointGrid is a view, copies are cheap).
+  PointGrid source_;
   bool filled_ = false;
 };
 
