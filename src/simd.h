@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "depth_noise.h"
 #include "floodplane/point_grid.h"
 #include "plane_sums.h"
 #include "vec3.h"
@@ -68,7 +69,24 @@ struct Float4 {
   static Float4 max(Float4 a, Float4 b) { return {_mm_max_ps(a.v, b.v)}; }
   /// a < b, false where either is NaN.
   Mask4 operator<(Float4 o) const { return {_mm_cmplt_ps(v, o.v)}; }
+  /// a <= b, false where either is NaN.
+  Mask4 operator<=(Float4 o) const { return {_mm_cmple_ps(v, o.v)}; }
+  /// mask ? a : b lane by lane.
+  static Float4 select(Mask4 mask, Float4 a, Float4 b) {
+    return {_mm_or_ps(_mm_and_ps(mask.bits, a.v), _mm_andnot_ps(mask.bits, b.v))};
+  }
 };
+
+/// static_cast<float>(factor * noise.sigma(double(range_sq))) lane by lane: the noise in
+/// double, as the scalar code takes it.
+inline Float4 scaledSigma(const DepthNoise& noise, double factor, Float4 range_sq) {
+  const __m128d constant = _mm_set1_pd(noise.constant), quadratic = _mm_set1_pd(noise.quadratic),
+                scale = _mm_set1_pd(factor);
+  const auto half = [&](__m128d r2) { return _mm_mul_pd(scale, _mm_add_pd(constant, _mm_mul_pd(quadratic, r2))); };
+  const __m128 low = _mm_cvtpd_ps(half(_mm_cvtps_pd(range_sq.v)));
+  const __m128 high = _mm_cvtpd_ps(half(_mm_cvtps_pd(_mm_movehl_ps(range_sq.v, range_sq.v))));
+  return {_mm_movelh_ps(low, high)};
+}
 
 /// Whether the four 32-bit labels from `labels` on all equal `value`.
 inline bool allLabelsEqual(const std::int32_t* labels, std::int32_t value) {
@@ -101,6 +119,16 @@ struct PointLanes {
     __m128 pa = _mm_loadu_ps(a), pb = _mm_loadu_ps(b), pc = _mm_loadu_ps(c), pd = _mm_loadu_ps(d);
     _MM_TRANSPOSE4_PS(pa, pb, pc, pd);
     return {{pa}, {pb}, {pc}};
+  }
+
+  /// Stores the four points as x y z 0, four floats each, from `out` on.
+  void storePoints(float* out) const {
+    __m128 a = x.v, b = y.v, c = z.v, d = _mm_setzero_ps();
+    _MM_TRANSPOSE4_PS(a, b, c, d);
+    _mm_storeu_ps(out, a);
+    _mm_storeu_ps(out + 4, b);
+    _mm_storeu_ps(out + 8, c);
+    _mm_storeu_ps(out + 12, d);
   }
 
   /// Vec3::squaredNorm: (x x + y y) + z z.
