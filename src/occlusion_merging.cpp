@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "row_search.h"
+
 namespace floodplane {
 
 namespace {
@@ -13,15 +15,21 @@ constexpr float kBehindTolerances = 2.0f;
 
 void OcclusionMerging::findBoxes(int width, int height, const std::vector<std::uint32_t>& labels, std::size_t planes) {
   boxes_.assign(planes, Box{width, height, -1, -1});
+  // A row is mostly long runs of one label: one box update per run.
   for (int y = 0; y < height; ++y) {
     const std::uint32_t* row = labels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-    for (int x = 0; x < width; ++x) {
-      if (row[x] == 0) continue;
-      Box& box = boxes_[row[x] - 1];
-      box.x_min = std::min(box.x_min, x);
-      box.x_max = std::max(box.x_max, x);
-      box.y_min = std::min(box.y_min, y);
-      box.y_max = std::max(box.y_max, y);
+    int x = 0;
+    while (x < width) {
+      const std::uint32_t k = row[x];
+      const int end = findInRow(row, x, width - 1, k, false);
+      if (k != 0) {
+        Box& box = boxes_[k - 1];
+        box.x_min = std::min(box.x_min, x);
+        box.x_max = std::max(box.x_max, end - 1);
+        box.y_min = std::min(box.y_min, y);
+        box.y_max = std::max(box.y_max, y);
+      }
+      x = end;
     }
   }
 }

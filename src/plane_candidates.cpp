@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
+
+#include "row_search.h"
 
 namespace floodplane {
 
@@ -91,10 +94,18 @@ void PlaneCandidates::forgetFirstPixels() {
 }
 
 void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end) {
-  for (std::size_t i = begin; i < end; ++i) {
-    const std::uint32_t k = remap_[labels[i]];
-    labels[i] = k;
+  // A label image is mostly long runs of one label: one lookup per run.
+  constexpr std::size_t kLongestScan = std::numeric_limits<int>::max();
+  std::size_t i = begin;
+  while (i < end) {
+    const std::uint32_t old_label = labels[i];
+    const std::size_t scan = std::min(end - i, kLongestScan);
+    const std::size_t run_end =
+        i + static_cast<std::size_t>(findInRow(labels + i, 0, static_cast<int>(scan) - 1, old_label, false));
+    const std::uint32_t k = remap_[old_label];
+    if (k != old_label) std::fill(labels + i, labels + run_end, k);
     if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
+    i = run_end;
   }
 }
 

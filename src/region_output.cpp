@@ -257,16 +257,27 @@ void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std
   const auto inside = [&](std::size_t j, std::uint32_t k) {
     return labels[j] == k || !full.isFinite(j) || holes_->isFilled(j);
   };
+  // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
+  // up once. Points are added in raster order, as pixel by pixel.
   for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(full.height); ++y) {
     const std::size_t row = y * width;
-    for (std::size_t x = 1; x + 1 < width; ++x) {
-      const std::size_t i = row + x;
-      const std::uint32_t k = labels[i];
-      if (k == 0) continue;
-      const std::uint32_t s = strides_[k];
-      if (s > 1 && (x % s != 0 || y % s != 0)) continue;
-      if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-        test.add(k, Vec3::load(full.point(i)));
+    const std::uint32_t* row_labels = labels.data() + row;
+    int x = 1;
+    const int x_last = full.width - 2;
+    while (x <= x_last) {
+      const std::uint32_t k = row_labels[x];
+      const int end = findInRow(row_labels, x, x_last, k, false);
+      const std::uint32_t s = k == 0 ? 0 : strides_[k];
+      if (k != 0 && y % s == 0) {
+        // The first column of the run on the plane's lattice.
+        const std::uint32_t first = (static_cast<std::uint32_t>(x) + s - 1) / s * s;
+        for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
+          const std::size_t i = row + u;
+          if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+            test.add(k, Vec3::load(full.point(i)));
+        }
+      }
+      x = end;
     }
   }
 }
