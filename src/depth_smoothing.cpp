@@ -49,15 +49,17 @@ inline void smoothPoint(const float* before, const float* centre, const float* a
 }
 
 #if FLOODPLANE_SIMD
-// smoothPoint for the four points from `centre` on (`in_stride` floats apart), each with its
-// neighbours `step` floats before and after it, into `out` (four floats a point). Every lane
-// operation is smoothPoint's in its order, so each lane holds smoothPoint's result bit for
-// bit; a neighbour left out is not added at all (adding a zero would turn a -0 sum into +0).
-void smoothFour(const float* centre, std::size_t in_stride, std::ptrdiff_t step, float* out, const DepthNoise& noise) {
-  const auto points = [in_stride](const float* first) {
-    return PointLanes::transpose(first, first + in_stride, first + 2 * in_stride, first + 3 * in_stride);
+// smoothPoint for the four points from `centre` on, each with the point at the same place
+// from `before` and from `after` (all three `stride` floats a point), into `out` (four floats
+// a point). Every lane operation is smoothPoint's in its order, so each lane holds
+// smoothPoint's result bit for bit; a neighbour left out is not added at all (adding a zero
+// would turn a -0 sum into +0).
+void smoothFour(const float* before_points, const float* centre, const float* after_points, std::size_t stride,
+                float* out, const DepthNoise& noise) {
+  const auto points = [stride](const float* first) {
+    return PointLanes::transpose(first, first + stride, first + 2 * stride, first + 3 * stride);
   };
-  const PointLanes c = points(centre), before = points(centre - step), after = points(centre + step);
+  const PointLanes c = points(centre), before = points(before_points), after = points(after_points);
   const Float4 gate = scaledSigma(noise, kGateDeviations, c.squaredNorm());
   const Mask4 use_before = (before.z - c.z).abs() <= gate;
   const Mask4 use_after = (after.z - c.z).abs() <= gate;
@@ -79,53 +81,76 @@ void smoothFour(const float* centre, std::size_t in_stride, std::ptrdiff_t step,
 }
 #endif
 
-// smoothPoint over every point of `in` (four floats a point from `in`, `in_stride` floats
-// apart) with its neighbours along rows or columns, into `out` (four floats a point). With
-// `four_at_a_time`, the points that have both neighbours go four at a time (smoothFour).
-void smoothLines(const float* in, std::size_t in_stride, float* out, int width, int height, bool columns,
-                 bool four_at_a_time, const DepthNoise& noise) {
-  const std::size_t w = static_cast<std::size_t>(width);
-  const std::size_t step = (columns ? w : 1) * in_stride;
-  for (int y = 0; y < height; ++y) {
-    const float* row = in + static_cast<std::size_t>(y) * w * in_stride;
-    float* out_row = out + static_cast<std::size_t>(y) * w * 4;
-    const bool has_before_row = !columns || y > 0;
-    const bool has_after_row = !columns || y + 1 < height;
-    int x = 0;
+// The row pass over one row of `width` points (`stride` floats apart), neighbours left and
+// right, into `out` (four floats a point). With `four_at_a_time`, the points that have both
+// neighbours go four at a time.
+void smoothAlongRow(const float* row, std::size_t stride, int width, bool four_at_a_time, float* out,
+                    const DepthNoise& noise) {
+  int x = 0;
 #if FLOODPLANE_SIMD
-    if (four_at_a_time && has_before_row && has_after_row && width > 4) {
-      // Along rows the first and last points lack a neighbour: they go one at a time below.
-      const int first = columns ? 0 : 1;
-      const int end = columns ? width : width - 1;
-      if (first > 0) smoothPoint(nullptr, row, row + step, out_row, noise);
-      for (x = first; x + 4 <= end; x += 4) {
-        smoothFour(row + static_cast<std::size_t>(x) * in_stride, in_stride, static_cast<std::ptrdiff_t>(step),
-                   out_row + 4 * static_cast<std::size_t>(x), noise);
-      }
+  if (four_at_a_time && width > 4) {
+    // The first and last points lack a neighbour: they go one at a time.
+    smoothPoint(nullptr, row, row + stride, out, noise);
+    for (x = 1; x + 4 <= width - 1; x += 4) {
+      const float* centre = row + static_cast<std::size_t>(x) * stride;
+      smoothFour(centre - stride, centre, centre + stride, stride, out + 4 * static_cast<std::size_t>(x), noise);
     }
+  }
 #else
-    (void)four_at_a_time;
+  (void)four_at_a_time;
 #endif
-    for (; x < width; ++x) {
-      const float* centre = row + static_cast<std::size_t>(x) * in_stride;
-      const bool has_before = columns ? has_before_row : x > 0;
-      const bool has_after = columns ? has_after_row : x + 1 < width;
-      smoothPoint(has_before ? centre - step : nullptr, centre, has_after ? centre + step : nullptr,
-                  out_row + 4 * static_cast<std::size_t>(x), noise);
+  for (; x < width; ++x) {
+    const float* centre = row + static_cast<std::size_t>(x) * stride;
+    smoothPoint(x > 0 ? centre - stride : nullptr, centre, x + 1 < width ? centre + stride : nullptr,
+                out + 4 * static_cast<std::size_t>(x), noise);
+  }
+}
+
+// The column pass over one row of `width` points (four floats each), neighbours from the rows
+// `above` and `below` (null beyond the grid's edge), into `out`.
+void smoothAcrossRows(const float* above, const float* row, const float* below, int width, bool four_at_a_time,
+                      float* out, const DepthNoise& noise) {
+  int x = 0;
+#if FLOODPLANE_SIMD
+  if (four_at_a_time && above != nullptr && below != nullptr) {
+    for (; x + 4 <= width; x += 4) {
+      const std::size_t at = 4 * static_cast<std::size_t>(x);
+      smoothFour(above + at, row + at, below + at, 4, out + at, noise);
     }
+  }
+#else
+  (void)four_at_a_time;
+#endif
+  for (; x < width; ++x) {
+    const std::size_t at = 4 * static_cast<std::size_t>(x);
+    smoothPoint(above != nullptr ? above + at : nullptr, row + at, below != nullptr ? below + at : nullptr, out + at,
+                noise);
   }
 }
 
 }  // namespace
 
 const PointGrid& DepthSmoothing::smooth(const PointGrid& grid, const DepthNoise& noise) {
-  rows_.resize(grid.size() * 4);
+  const std::size_t width = static_cast<std::size_t>(grid.width);
   result_points_.resize(grid.size() * 4);
+  // The row pass runs one row ahead of the column pass, into a ring of three rows: the frame
+  // is read once and written once, and the rows in between stay in the cache.
+  rows_.resize(3 * width * 4);
+  const auto ring = [&](int y) { return rows_.data() + static_cast<std::size_t>(y % 3) * width * 4; };
   // Four points at a time where the input has four floats a point (PCL's layout); a packed
   // x y z grid goes pixel by pixel through both passes, which the tests compare.
   const bool four_at_a_time = fourPixelsAtATime(grid);
-  smoothLines(grid.data, grid.stride, rows_.data(), grid.width, grid.height, false, four_at_a_time, noise);
-  smoothLines(rows_.data(), 4, result_points_.data(), grid.width, grid.height, true, four_at_a_time, noise);
+  const auto smoothRow = [&](int y) {
+    smoothAlongRow(grid.data + static_cast<std::size_t>(y) * width * grid.stride, grid.stride, grid.width,
+                   four_at_a_time, ring(y), noise);
+  };
+  if (grid.height > 0) smoothRow(0);
+  for (int y = 0; y < grid.height; ++y) {
+    const bool has_below = y + 1 < grid.height;
+    if (has_below) smoothRow(y + 1);
+    smoothAcrossRows(y > 0 ? ring(y - 1) : nullptr, ring(y), has_below ? ring(y + 1) : nullptr, grid.width,
+                     four_at_a_time, result_points_.data() + static_cast<std::size_t>(y) * width * 4, noise);
+  }
   result_ = grid;
   result_.data = result_points_.data();
   result_.stride = 4;

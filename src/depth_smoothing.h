@@ -25,7 +25,8 @@ class DepthSmoothing {
   const PointGrid& smooth(const PointGrid& grid, const DepthNoise& noise);
 
  private:
-  std::vector<float> rows_, result_points_;
+  std::vector<float> rows_;  // three rows after the row pass
+  std::vector<float> result_points_;
   PointGrid result_;
 };
 
