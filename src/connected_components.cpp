@@ -9,42 +9,63 @@ namespace floodplane {
 std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int width, const PixelBox& box,
                                                    std::int32_t label, std::int32_t& next_label,
                                                    std::size_t smallest_piece) {
-  std::vector<std::int32_t> created;
   runs_.clear();
-  sets_.reset(0);
-  set_size_.clear();
-  released_ = 0;
-  if (box.empty()) return created;
-
-  // Pass 1 over runs, not pixels: each row's maximal runs of `label`, united with the runs
-  // of the row above they overlap (4-connectivity: they share a column). A segment is a few
-  // long runs per row, so the union-find work is per run and the per-pixel work is one
-  // comparison.
-  std::size_t above_begin = 0, above_end = 0;  // the previous row's runs in runs_
-  for (int y = box.y_min; y <= box.y_max; ++y) {
+  for (int y = box.y_min; !box.empty() && y <= box.y_max; ++y) {
     const std::int32_t* row = labels + static_cast<std::size_t>(y) * width;
-    const std::size_t row_begin = runs_.size();
-    std::size_t above = above_begin;
     int x = box.x_min;
     while (true) {
       x = findInRow(row, x, box.x_max, label, true);
       if (x > box.x_max) break;
-      Run run{y, x, findInRow(row, x, box.x_max, label, false) - 1, -1};
-      x = run.x_end + 1;
-      // Runs above that end before this one starts cannot overlap it or any later run.
-      while (above < above_end && runs_[above].x_end < run.x_begin) ++above;
-      for (std::size_t a = above; a < above_end && runs_[a].x_begin <= run.x_end; ++a) {
-        run.set = run.set < 0 ? runs_[a].set : sets_.unite(run.set, runs_[a].set);
-      }
-      if (run.set < 0) {
-        run.set = sets_.add();
-        set_size_.push_back(0);
-      }
-      set_size_[static_cast<std::size_t>(run.set)] += static_cast<std::size_t>(run.x_end - run.x_begin + 1);
+      const Run run{y, x, findInRow(row, x, box.x_max, label, false) - 1, -1};
       runs_.push_back(run);
+      x = run.x_end + 1;
     }
-    above_begin = row_begin;
-    above_end = runs_.size();
+  }
+  return splitRuns(labels, width, label, next_label, smallest_piece);
+}
+
+std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int width, const Run* runs,
+                                                   std::size_t run_count, std::int32_t label, std::int32_t& next_label,
+                                                   std::size_t smallest_piece) {
+  runs_.assign(runs, runs + run_count);
+  for (Run& run : runs_) run.set = -1;
+  return splitRuns(labels, width, label, next_label, smallest_piece);
+}
+
+std::vector<std::int32_t> ComponentSplitter::splitRuns(std::int32_t* labels, int width, std::int32_t label,
+                                                       std::int32_t& next_label, std::size_t smallest_piece) {
+  std::vector<std::int32_t> created;
+  sets_.reset(0);
+  set_size_.clear();
+  released_ = 0;
+
+  // Pass 1 over runs, not pixels: each run is united with the runs of the row above it
+  // overlaps (4-connectivity: they share a column). A segment is a few long runs per row, so
+  // the union-find work is per run.
+  std::size_t above_begin = 0, above_end = 0;  // the runs of the row above in runs_
+  std::size_t above = 0;
+  std::size_t row_begin = 0;
+  int current_row = -2;  // the row of the runs from row_begin on
+  for (std::size_t r = 0; r < runs_.size(); ++r) {
+    Run& run = runs_[r];
+    if (run.y != current_row) {
+      // The previous row's runs are above this row only if it is the row just above.
+      above_begin = run.y == current_row + 1 ? row_begin : r;
+      above_end = r;
+      above = above_begin;
+      current_row = run.y;
+      row_begin = r;
+    }
+    // Runs above that end before this one starts cannot overlap it or any later run.
+    while (above < above_end && runs_[above].x_end < run.x_begin) ++above;
+    for (std::size_t a = above; a < above_end && runs_[a].x_begin <= run.x_end; ++a) {
+      run.set = run.set < 0 ? runs_[a].set : sets_.unite(run.set, runs_[a].set);
+    }
+    if (run.set < 0) {
+      run.set = sets_.add();
+      set_size_.push_back(0);
+    }
+    set_size_[static_cast<std::size_t>(run.set)] += static_cast<std::size_t>(run.x_end - run.x_begin + 1);
   }
 
   // Sizes per root; a segment still in one piece (the common case) needs no second pass.
@@ -87,6 +108,30 @@ std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int wid
     for (int x = run.x_begin; x <= run.x_end; ++x) row[x] = run.set;
   }
   return created;
+}
+
+void RunsByLabel::collect(const std::int32_t* labels, int width, int height, const std::vector<bool>& wanted) {
+  found_.clear();
+  first_.assign(wanted.size() + 1, 0);
+  for (int y = 0; y < height; ++y) {
+    const std::int32_t* row = labels + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    int x = 0;
+    while (x < width) {
+      const std::int32_t label = row[x];
+      const int end = findInRow(row, x, width - 1, label, false);
+      if (label > 0 && static_cast<std::size_t>(label) < wanted.size() && wanted[static_cast<std::size_t>(label)]) {
+        found_.push_back({label, {y, x, end - 1, -1}});
+        ++first_[static_cast<std::size_t>(label) + 1];
+      }
+      x = end;
+    }
+  }
+  // Grouped by label (a counting sort, which keeps the raster order within a label).
+  for (std::size_t label = 1; label < first_.size(); ++label) first_[label] += first_[label - 1];
+  runs_.resize(found_.size());
+  std::vector<std::size_t>& next = scratch_;
+  next.assign(first_.begin(), first_.end() - 1);
+  for (const auto& [label, run] : found_) runs_[next[static_cast<std::size_t>(label)]++] = run;
 }
 
 }  // namespace floodplane

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "union_find.h"
@@ -49,12 +51,44 @@ class ComponentSplitter {
   /// The runs of the last split, in raster order.
   const std::vector<Run>& runs() const { return runs_; }
 
+  /// split() for a segment whose runs are known (`run_count` runs from `runs`: every maximal
+  /// run of `label` in the image, in raster order, as RunsByLabel finds them), without
+  /// scanning its box. The same result as split().
+  std::vector<std::int32_t> split(std::int32_t* labels, int width, const Run* runs, std::size_t run_count,
+                                  std::int32_t label, std::int32_t& next_label, std::size_t smallest_piece = 1);
+
  private:
+  // Both splits once runs_ holds the segment's runs in raster order.
+  std::vector<std::int32_t> splitRuns(std::int32_t* labels, int width, std::int32_t label, std::int32_t& next_label,
+                                      std::size_t smallest_piece);
+
   std::vector<Run> runs_;
   std::vector<std::int32_t> final_label_;  // per set root: the label it receives
   std::vector<std::size_t> set_size_;      // pixels per set; per root after pass 1
   std::size_t released_ = 0;
   UnionFind sets_;
+};
+
+/// The maximal horizontal runs of the labels of a label image that are `wanted` (wanted[label]),
+/// found in one pass over the image and grouped by label, each label's in raster order. The
+/// relabelling splits a few hundred overlapping segments of a frame: one pass over the frame
+/// instead of a scan of each segment's bounding box.
+class RunsByLabel {
+ public:
+  void collect(const std::int32_t* labels, int width, int height, const std::vector<bool>& wanted);
+  /// The runs of `label` (wanted when collected): count(label) of them from runs(label) on.
+  const ComponentSplitter::Run* runs(std::int32_t label) const {
+    return runs_.data() + first_[static_cast<std::size_t>(label)];
+  }
+  std::size_t count(std::int32_t label) const {
+    return first_[static_cast<std::size_t>(label) + 1] - first_[static_cast<std::size_t>(label)];
+  }
+
+ private:
+  std::vector<std::pair<std::int32_t, ComponentSplitter::Run>> found_;  // in raster order
+  std::vector<ComponentSplitter::Run> runs_;                            // grouped by label
+  std::vector<std::size_t> first_;                                      // per label: its first run in runs_
+  std::vector<std::size_t> scratch_;
 };
 
 }  // namespace floodplane

@@ -14,11 +14,17 @@ void Relabelling::run(const PointGrid& grid, int subsampling, std::vector<std::i
   const std::size_t width = static_cast<std::size_t>(grid.width);
   const std::int32_t before = static_cast<std::int32_t>(segments.size());
   std::int32_t next_label = before;
+  // The segments to split, and their runs in one pass over the labels. A split only rewrites
+  // its own segment's pixels, so the runs of the segments after it stay as found.
+  const auto lost_pixels = [&](std::int32_t s) { return segments[s].lost_pixels && segments[s].sums.count > 0.0; };
+  to_split_.assign(static_cast<std::size_t>(before), false);
+  for (std::int32_t s = 1; s < before; ++s) to_split_[static_cast<std::size_t>(s)] = lost_pixels(s);
+  runs_.collect(labels.data(), grid.width, grid.height, to_split_);
   for (std::int32_t s = 1; s < before; ++s) {
-    if (!segments[s].lost_pixels || segments[s].sums.count <= 0.0) continue;
+    if (!to_split_[static_cast<std::size_t>(s)]) continue;
     const std::int32_t first_new = next_label;
     const std::vector<std::int32_t> created =
-        splitter_.split(labels.data(), grid.width, segments[s].box, s, next_label, smallest_piece);
+        splitter_.split(labels.data(), grid.width, runs_.runs(s), runs_.count(s), s, next_label, smallest_piece);
     if (created.empty() && splitter_.releasedPixels() == 0) continue;
     const FloodCriterion criterion = segments[s].criterion;
     segments.resize(static_cast<std::size_t>(next_label));

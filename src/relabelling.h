@@ -29,6 +29,8 @@ class Relabelling {
                      const ComponentSplitter::Run& run, std::vector<SegmentEdge>& edges) const;
 
   ComponentSplitter splitter_;
+  RunsByLabel runs_;
+  std::vector<bool> to_split_;  // per segment: it lost pixels
 };
 
 }  // namespace floodplane

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "connected_components.h"
@@ -323,6 +324,61 @@ TEST(ComponentSplitter, DoesNothingForAnEmptyBoxOrAnAbsentLabel) {
   EXPECT_TRUE(splitter.split(labels.data.data(), labels.width, labels.box(), 4, next).empty());
   EXPECT_EQ(next, 2);
   EXPECT_EQ(labels.art(), std::vector<std::string>{"1.1"});
+}
+
+// The relabelling finds the runs of every segment to split in one pass (RunsByLabel) and
+// splits each from its runs; that must give what splitting each segment from its bounding box
+// gives, in the same order, on images where segments interleave, skip rows and meet the
+// borders, also after earlier splits have renumbered pixels.
+TEST(ComponentSplitter, SplittingFromCollectedRunsEqualsSplittingFromTheBox) {
+  std::uint32_t state = 12345;
+  const auto random = [&state](std::uint32_t n) {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) % n;
+  };
+  for (int image = 0; image < 20; ++image) {
+    const int width = 5 + static_cast<int>(random(40)), height = 3 + static_cast<int>(random(30));
+    const std::int32_t labels_used = 1 + static_cast<std::int32_t>(random(6));
+    std::vector<std::int32_t> by_box(static_cast<std::size_t>(width) * height);
+    // Blobs: each pixel copies its left or upper neighbour most of the time.
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+        const std::uint32_t r = random(10);
+        by_box[i] = r < 4 && x > 0   ? by_box[i - 1]
+                    : r < 8 && y > 0 ? by_box[i - static_cast<std::size_t>(width)]
+                                     : static_cast<std::int32_t>(random(static_cast<std::uint32_t>(labels_used) + 1));
+      }
+    }
+    std::vector<std::int32_t> by_runs = by_box;
+    std::vector<bool> wanted(static_cast<std::size_t>(labels_used) + 1, false);
+    for (std::int32_t label = 1; label <= labels_used; ++label)
+      wanted[static_cast<std::size_t>(label)] = random(4) != 0;
+    RunsByLabel runs;
+    runs.collect(by_runs.data(), width, height, wanted);
+    ComponentSplitter box_splitter, run_splitter;
+    std::int32_t next_by_box = labels_used + 1, next_by_runs = labels_used + 1;
+    for (std::int32_t label = 1; label <= labels_used; ++label) {
+      if (!wanted[static_cast<std::size_t>(label)]) continue;
+      PixelBox box;
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+          if (by_box[static_cast<std::size_t>(y) * width + x] == label) box.include(x, y);
+      const std::size_t smallest = 1 + random(3);
+      EXPECT_EQ(
+          run_splitter.split(by_runs.data(), width, runs.runs(label), runs.count(label), label, next_by_runs, smallest),
+          box_splitter.split(by_box.data(), width, box, label, next_by_box, smallest))
+          << "image " << image << ", label " << label;
+      EXPECT_EQ(run_splitter.releasedPixels(), box_splitter.releasedPixels());
+      ASSERT_EQ(run_splitter.runs().size(), box_splitter.runs().size());
+      for (std::size_t r = 0; r < box_splitter.runs().size(); ++r) {
+        const ComponentSplitter::Run &a = run_splitter.runs()[r], &b = box_splitter.runs()[r];
+        EXPECT_EQ(std::tie(a.y, a.x_begin, a.x_end, a.set), std::tie(b.y, b.x_begin, b.x_end, b.set));
+      }
+    }
+    EXPECT_EQ(next_by_runs, next_by_box);
+    EXPECT_EQ(by_runs, by_box) << "image " << image;
+  }
 }
 
 }  // namespace
