@@ -24,6 +24,21 @@
 
 namespace floodplane {
 
+/// Asks the memory for the cache lines of [begin, end) ahead of their use (a hint, no effect on
+/// results; nothing where the compiler has no prefetch builtin).
+template <class T>
+inline void prefetchRange(const T* begin, const T* end) {
+#if defined(__GNUC__) || defined(__clang__)
+  constexpr std::size_t kCacheLine = 64;
+  const char* last = reinterpret_cast<const char*>(end) - 1;
+  for (const char* p = reinterpret_cast<const char*>(begin); p <= last; p += kCacheLine) __builtin_prefetch(p);
+  __builtin_prefetch(last);
+#else
+  (void)begin;
+  (void)end;
+#endif
+}
+
 /// Whether the core was built with the four-pixel loops (defined in a source file of the core,
 /// so that callers see the core's setting, not their own).
 bool simdEnabled();

@@ -55,6 +55,10 @@ int joinRunPixelByPixel(Visitor& visitor, std::size_t from, int step, int max) {
 ///
 /// `visitor.span(y, x_begin, x_end)` is told of every span once it is complete.
 ///
+/// `visitor.prefetch(first, last)` is told of the pixels first..last (a shadow) when they are
+/// queued: a fill moves from row to row, and each new row's pixels are a cache miss that the
+/// visitor can ask the memory for while the fill works on the rows queued after it.
+///
 /// `shadows` is scratch space; pass the same vector every time to avoid allocation.
 template <class Visitor>
 void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visitor, std::vector<Shadow>& shadows) {
@@ -68,7 +72,10 @@ void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visit
     visitor.span(y, left, right);
   };
   const auto push = [&](int y, int x_begin, int x_end, int direction) {
-    if (y >= 0 && y < height) shadows.push_back({y, x_begin, x_end, direction});
+    if (y >= 0 && y < height) {
+      shadows.push_back({y, x_begin, x_end, direction});
+      visitor.prefetch(index(x_begin, y), index(x_end, y));
+    }
   };
 
   shadows.clear();

@@ -43,6 +43,12 @@ struct CountingVisitor {
   }
   int joinRun(std::size_t from, int step, int max) { return joinRunPixelByPixel(*this, from, step, max); }
   void span(int, int, int) { ++spans; }
+  void prefetch(std::size_t first, std::size_t last) const {
+    // A shadow: pixels of one row of the grid.
+    EXPECT_LE(first, last);
+    EXPECT_LT(last, mask.inside.size());
+    EXPECT_EQ(first / static_cast<std::size_t>(mask.width), last / static_cast<std::size_t>(mask.width));
+  }
 };
 
 // Reference: breadth-first four-neighbour fill; returns the region and counts examinations.
