@@ -26,8 +26,10 @@ constexpr double kSmallestCurvature = 2.0;  // 1/m
 // round-off).
 constexpr double kFootprintFloor = 0.02;
 
-// Index into the upper triangle of a symmetric 6 x 6 matrix, row i <= column j.
-constexpr int upper(int i, int j) { return i * 6 - i * (i - 1) / 2 + (j - i); }
+// Where entry (i, j) of sum m m^T, m = (1, u, v, u^2, uv, v^2), is kept in Sums::moments
+// (each distinct product once; -1: the count).
+constexpr int kMoment[6][6] = {{-1, 0, 1, 2, 3, 4},   {0, 2, 3, 5, 6, 7},    {1, 3, 4, 8, 9, 10},
+                               {2, 5, 8, 11, 12, 13}, {3, 6, 9, 12, 14, 15}, {4, 7, 10, 13, 15, 16}};
 
 }  // namespace
 
@@ -47,26 +49,12 @@ void PlanarityTest::reset(const std::vector<PlaneFit>& fits) {
   }
 }
 
-void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
-  const Frame& f = frames_[k - 1];
-  const Vec3 d = point - f.centroid;
-  const double u = d.dot(f.u), v = d.dot(f.v), w = d.dot(f.w);
-  const double m[6] = {1.0, u, v, u * u, u * v, v * v};
-  Sums& s = sums_[k - 1];
-  for (int i = 0; i < 6; ++i) {
-    for (int j = i; j < 6; ++j) s.normal[upper(i, j)] += m[i] * m[j];
-    s.rhs[i] += m[i] * w;
-  }
-  s.ww += w * w;
-  s.count += 1.0;
-}
-
 PlanarityTest::Quadric PlanarityTest::fitQuadric(std::uint32_t k) const {
   const Sums& s = sums_[k - 1];
   Eigen::Matrix<double, 6, 6> a;
   Eigen::Matrix<double, 6, 1> b;
   for (int i = 0; i < 6; ++i) {
-    for (int j = i; j < 6; ++j) a(i, j) = a(j, i) = s.normal[upper(i, j)];
+    for (int j = 0; j < 6; ++j) a(i, j) = kMoment[i][j] < 0 ? s.count : s.moments[kMoment[i][j]];
     b(i) = s.rhs[i];
   }
   Quadric q;

@@ -34,9 +34,9 @@ class PlanarityTest {
     Vec3 centroid, u, v, w;  // the plane's frame: w its normal
   };
   struct Sums {
-    double normal[21] = {};  // the upper triangle of sum m m^T, m = (1, u, v, u^2, uv, v^2)
-    double rhs[6] = {};      // sum m w
-    double ww = 0.0;         // sum w^2
+    double moments[17] = {};  // the distinct entries of sum m m^T, m = (1, u, v, u^2, uv, v^2), but the count
+    double rhs[6] = {};       // sum m w
+    double ww = 0.0;          // sum w^2
     double count = 0.0;
   };
   // Plane k's quadratic fit: the sum of squares it explains beyond the plane, and its larger
@@ -50,5 +50,41 @@ class PlanarityTest {
   std::vector<Sums> sums_;
   std::vector<PlaneFit> fits_;
 };
+
+// Inline: it runs for every sampled inlier of every plane, from region output.
+inline void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
+  const Frame& f = frames_[k - 1];
+  const Vec3 d = point - f.centroid;
+  const double u = d.dot(f.u), v = d.dot(f.v), w = d.dot(f.w);
+  const double uu = u * u, uv = u * v, vv = v * v;
+  Sums& s = sums_[k - 1];
+  // The distinct products of m m^T (see kMoment): the same sums as of every entry, each
+  // once (1 * u^2 and u * u are one product).
+  s.moments[0] += u;
+  s.moments[1] += v;
+  s.moments[2] += uu;
+  s.moments[3] += uv;
+  s.moments[4] += vv;
+  s.moments[5] += u * uu;
+  s.moments[6] += u * uv;
+  s.moments[7] += u * vv;
+  s.moments[8] += v * uu;
+  s.moments[9] += v * uv;
+  s.moments[10] += v * vv;
+  s.moments[11] += uu * uu;
+  s.moments[12] += uu * uv;
+  s.moments[13] += uu * vv;
+  s.moments[14] += uv * uv;
+  s.moments[15] += uv * vv;
+  s.moments[16] += vv * vv;
+  s.rhs[0] += w;
+  s.rhs[1] += u * w;
+  s.rhs[2] += v * w;
+  s.rhs[3] += uu * w;
+  s.rhs[4] += uv * w;
+  s.rhs[5] += vv * w;
+  s.ww += w * w;
+  s.count += 1.0;
+}
 
 }  // namespace floodplane
