@@ -28,6 +28,12 @@ class Refiner {
     }
     queue_.clear();
     for (int y = 0; y < height_; ++y) {
+      // The unlabelled pixels are scattered along a row, too far apart for the hardware to
+      // see a stream: the next row's points are requested while this one is worked on.
+      if (y + 1 < height_) {
+        const std::size_t next = static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(width_);
+        prefetchRange(full_.point(next), full_.point(next + static_cast<std::size_t>(width_) - 1) + 3);
+      }
       if (renumber_first && y + 1 < height_) renumberRow(y + 1);
       const std::uint32_t* row = labels_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
       for (int x = findInRow(row, 0, width_ - 1, 0u, true); x < width_;
