@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "row_search.h"
+#include "simd.h"
 
 namespace floodplane {
 

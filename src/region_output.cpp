@@ -97,16 +97,31 @@ void RegionBuilder::selectCandidates(int subsampling, const MergedSegments& merg
 void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& segmented, int subsampling,
                                         const MergedSegments& merged, std::vector<std::uint32_t>& labels) {
   if (subsampling == 1) {
+    // Run by run of one segment: its plane is looked up once.
     const std::uint32_t* table = candidate_of_segment_.data();
-    for (std::size_t i = 0; i < full.size(); ++i) {
-      std::uint32_t k = table[merged.labels[i]];
-      if (k != 0 && holes_->isFilled(i)) {
-        // A filled-in hole: it helped the flood across, but it was never measured.
-        candidates_[k].sums.remove(Vec3::load(segmented.point(i)));
-        k = 0;
+    const std::size_t width = static_cast<std::size_t>(full.width);
+    for (std::size_t row = 0; row < full.size(); row += width) {
+      const std::int32_t* segment_row = merged.labels + row;
+      int x = 0;
+      while (x < full.width) {
+        const int end = findInRow(segment_row, x, full.width - 1, segment_row[x], false);
+        const std::uint32_t k = table[segment_row[x]];
+        const std::size_t first = row + static_cast<std::size_t>(x), last = row + static_cast<std::size_t>(end);
+        if (k == 0 || !holes_->filled()) {
+          std::fill(labels.begin() + static_cast<std::ptrdiff_t>(first),
+                    labels.begin() + static_cast<std::ptrdiff_t>(last), k);
+          if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = first;
+        } else {
+          for (std::size_t i = first; i < last; ++i) {
+            // A filled-in hole: it helped the flood across, but it was never measured.
+            const bool filled = holes_->isFilled(i);
+            if (filled) candidates_[k].sums.remove(Vec3::load(segmented.point(i)));
+            labels[i] = filled ? 0u : k;
+            if (!filled && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = i;
+          }
+        }
+        x = end;
       }
-      labels[i] = k;
-      if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = i;
     }
     return;
   }
