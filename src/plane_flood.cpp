@@ -77,9 +77,11 @@ class FloodVisitor {
 
   // The fill's run along a row (see spanFloodFill): inside a plane, where most pixels are,
   // blocks of kBlock pixels at once while all pixels of a block join the same way (see
-  // joinBlock); pixel by pixel through join() elsewhere, and for kBlock pixels after a block
-  // fails, so that a border costs little more than before. Labels, distances and refits come
-  // out as with join() alone; only the order in which points are added to sums differs.
+  // joinBlock); pixel by pixel through join() elsewhere. Where a block's test fails at one
+  // of its pixels, the pixels before it join as join() would take them, one by one, and
+  // join() decides the failing pixel and the rest of the block: a span's end costs the block
+  // and one join(). Labels, distances and refits come out as with join() alone; only the
+  // order in which points are added to sums differs (a whole block is summed at once).
   FLOODPLANE_ALWAYS_INLINE int joinRun(std::size_t from, int step, int max) {
     int joined = 0;
     [[maybe_unused]] int pixel_by_pixel_until = 0;
@@ -90,12 +92,11 @@ class FloodVisitor {
       // exact pixel.
       if (blocks_ && joined >= pixel_by_pixel_until && max - joined >= kBlock &&
           self_.sums.count + kBlock < next_refit_) {
-        if (joinBlock(pixel, step)) {
-          pixel = step > 0 ? pixel + kBlock : pixel - kBlock;
-          joined += kBlock;
-          continue;
-        }
-        pixel_by_pixel_until = joined + kBlock;
+        const int taken = joinBlock(pixel, step);
+        pixel = step > 0 ? pixel + static_cast<std::size_t>(taken) : pixel - static_cast<std::size_t>(taken);
+        joined += taken;
+        if (taken == kBlock) continue;
+        pixel_by_pixel_until = joined + kBlock - taken;
       }
 #endif
       const std::size_t next = step > 0 ? pixel + 1 : pixel - 1;
@@ -156,19 +157,20 @@ class FloodVisitor {
  private:
 #if FLOODPLANE_SIMD
   // join() for the kBlock pixels after `pixel` in direction `step`, each from its
-  // predecessor, in the two cases where every pixel joins the same way: all unclaimed and
-  // passing Eqs. 2 and 3, or all owned by one other segment and passing Eqs. 2, 3 and 4
-  // (taken over). Then claims them all and returns true; otherwise changes nothing, and
-  // join() decides pixel by pixel. Every float operation is the one join() does, in the same
-  // order, so a block passes exactly when join() would pass each of its pixels.
-  bool joinBlock(std::size_t pixel, int step) {
+  // predecessor, where every pixel is in the same state: all unclaimed, or all owned by one
+  // other segment (a takeover under Eq. 4). Returns how many of them, in the order of the
+  // walk, pass Eqs. 2, 3 (and 4) before the first that does not, and has claimed those as
+  // join() would have; 0 where the pixels are not in the same state. Every float operation is
+  // the one join() does, in the same order, so a lane passes exactly when join() would pass
+  // its pixel.
+  int joinBlock(std::size_t pixel, int step) {
     // Lane j tests pixel first + j from its neighbour first + j - step: the five points from
     // `low` on, as x, y, z across lanes (the fourth float of a point is readable: stride >= 4).
     const std::size_t first = step > 0 ? pixel + 1 : pixel - kBlock;
     const std::size_t low = step > 0 ? pixel : pixel - kBlock;
     // One owner for all four, not this flood: none (0), or a segment to take them from.
     const std::int32_t owner = labels_[first];
-    if (owner == label_ || !allLabelsEqual(labels_ + first, owner)) return false;
+    if (owner == label_ || !allLabelsEqual(labels_ + first, owner)) return 0;
 
     const PointLanes lower = PointLanes::transpose(grid_.point(low), grid_.point(low + 1), grid_.point(low + 2),
                                                    grid_.point(low + 3));  // points low .. low + 3
@@ -188,26 +190,43 @@ class FloodVisitor {
       const Float4 margin = Float4::broadcast(samePlane(owner) ? kTakeoverMargin : 0.0f) * c.planeTolerance(range_sq);
       pass = pass & (distance + margin < Float4::load(buffer_.distances().data() + first));
     }
-    if (!pass.all()) return false;
-
     float distances[kBlock];
     distance.store(distances);
-    buffer_.claimRun(first, kBlock, label_, distances);
-    LaneSums lanes;
-    lanes.add(q);
-    if (owner == 0) {
-      lanes.addTo(self_.sums);
-    } else {
-      PlaneSums block;  // of the four points, once for both segments
-      lanes.addTo(block);
-      Segment& loser = segments_[owner];
-      loser.sums.subtract(block);
-      loser.lost_pixels = true;
-      taken_over_ += kBlock;
-      self_.sums.merge(block);
+    if (pass.all()) {
+      buffer_.claimRun(first, kBlock, label_, distances);
+      LaneSums lanes;
+      lanes.add(q);
+      if (owner == 0) {
+        lanes.addTo(self_.sums);
+      } else {
+        PlaneSums block;  // of the four points, once for both segments
+        lanes.addTo(block);
+        Segment& loser = segments_[owner];
+        loser.sums.subtract(block);
+        loser.lost_pixels = true;
+        taken_over_ += kBlock;
+        self_.sums.merge(block);
+      }
+      attempts_ += kBlock;
+      return kBlock;
     }
-    attempts_ += kBlock;
-    return true;
+    // The pixels before the first that fails, in the order of the walk, as join() takes them.
+    const int passing = step > 0 ? pass.leadingLanes() : pass.trailingLanes();
+    for (int k = 0; k < passing; ++k) {
+      const std::size_t lane = step > 0 ? static_cast<std::size_t>(k) : static_cast<std::size_t>(kBlock - 1 - k);
+      const std::size_t to = first + lane;
+      const Vec3 point = Vec3::load(grid_.point(to));
+      ++attempts_;
+      if (owner != 0) {
+        Segment& loser = segments_[owner];
+        loser.sums.remove(point);
+        loser.lost_pixels = true;
+        ++taken_over_;
+      }
+      buffer_.claim(to, label_, distances[lane]);
+      self_.sums.add(point);
+    }
+    return passing;
   }
 
 #endif

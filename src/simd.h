@@ -55,6 +55,10 @@ struct Mask4 {
   __m128 bits;
 
   bool all() const { return _mm_movemask_ps(bits) == 0xf; }
+  /// How many lanes are set from lane 0 up before the first that is not.
+  int leadingLanes() const { return __builtin_ctz(~static_cast<unsigned>(_mm_movemask_ps(bits))); }
+  /// How many lanes are set from lane 3 down before the first that is not.
+  int trailingLanes() const { return __builtin_clz(~(static_cast<unsigned>(_mm_movemask_ps(bits)) << 28)); }
   Mask4 operator&(Mask4 o) const { return {_mm_and_ps(bits, o.bits)}; }
   Mask4 operator|(Mask4 o) const { return {_mm_or_ps(bits, o.bits)}; }
   /// Writes `label` to the lanes where the mask is set and 0 elsewhere.
