@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 #include <pcl/common/point_tests.h>
@@ -118,15 +119,21 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
     unlabelled->header = input_->header;
     unlabelled->indices.clear();
   }
-  // One pass over the labels; `add_inlier(k, i)` files pixel i under plane k + 1.
-  const auto collect = [&](auto&& add_inlier) {
-    for (std::size_t i = 0; i < labels.size(); ++i) {
+  // One pass over the labels, a run of one label at a time (a label image is mostly long
+  // runs); `add_inliers(k, i, n)` files pixels i .. i + n - 1 under plane k + 1.
+  const auto collect = [&](auto&& add_inliers) {
+    const std::size_t size = labels.size();
+    for (std::size_t i = 0; i < size;) {
       const std::uint32_t k = labels[i];
+      std::size_t end = i + 1;
+      while (end < size && labels[end] == k) ++end;
       if (k != 0) {
-        if (!add_inlier(k - 1, static_cast<int>(i))) return false;
-      } else if (unlabelled && pcl::isXYZFinite((*input_)[i])) {
-        unlabelled->indices.push_back(static_cast<int>(i));
+        if (!add_inliers(k - 1, i, end - i)) return false;
+      } else if (unlabelled) {
+        for (std::size_t j = i; j < end; ++j)
+          if (pcl::isXYZFinite((*input_)[j])) unlabelled->indices.push_back(static_cast<int>(j));
       }
+      i = end;
     }
     return true;
   };
@@ -140,9 +147,10 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
     cursor[k] = indices.data();
     end[k] = indices.data() + indices.size();
   }
-  bool counts_agree = collect([&](std::size_t k, int i) {
-    if (cursor[k] == end[k]) return false;
-    *cursor[k]++ = i;
+  bool counts_agree = collect([&](std::size_t k, std::size_t first, std::size_t n) {
+    if (static_cast<std::size_t>(end[k] - cursor[k]) < n) return false;
+    std::iota(cursor[k], cursor[k] + n, static_cast<int>(first));
+    cursor[k] += n;
     return true;
   });
   for (std::size_t k = 0; counts_agree && k < planes_.size(); ++k) counts_agree = cursor[k] == end[k];
@@ -151,8 +159,8 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
     // the indices are still right, only slower to make.
     if (unlabelled) unlabelled->indices.clear();
     for (pcl::PointIndices& plane : inlier_indices) plane.indices.clear();
-    collect([&](std::size_t k, int i) {
-      inlier_indices[k].indices.push_back(i);
+    collect([&](std::size_t k, std::size_t first, std::size_t n) {
+      for (std::size_t i = first; i < first + n; ++i) inlier_indices[k].indices.push_back(static_cast<int>(i));
       return true;
     });
   }
