@@ -66,8 +66,12 @@ class PlaneMerger {
     }
   };
   void consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums, const MergeCriterion& criterion);
+  // Sorts edges_ by (a, b), as std::sort does, and drops repeats.
+  void sortEdges();
 
   std::vector<std::pair<std::int32_t, std::int32_t>> edges_;
+  std::vector<std::pair<std::int32_t, std::int32_t>> sorted_edges_;  // sortEdges' scratch
+  std::vector<std::size_t> edge_counts_;                             // sortEdges' scratch
   std::vector<std::vector<std::int32_t>> neighbours_;
   std::vector<PlaneFit> fits_;
   std::vector<std::uint32_t> versions_;
