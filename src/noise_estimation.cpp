@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "plane_sums.h"
 #include "vec3.h"
@@ -102,7 +103,6 @@ double NoiseEstimator::latticeStep(std::size_t begin, std::size_t end) {
   // patch, even where a patch repeats its own (exact data of a floor parallel to the image
   // rows has one depth per row).
   std::size_t varying = 0, levels = 0, scattered = 0;
-  scratch_.clear();
   for (std::size_t i = begin; i < end; ++i) {
     // Exact data (surfaces parallel to the image rows have one depth per row there too) fit
     // their planes to round-off; steps leave residuals where a patch spans a level change.
@@ -110,13 +110,31 @@ double NoiseEstimator::latticeStep(std::size_t begin, std::size_t end) {
     if (patches_[i].levels < 2) continue;
     ++varying;
     levels += static_cast<std::size_t>(patches_[i].levels);
-    const auto first = depths_.begin() + static_cast<std::ptrdiff_t>(patches_[i].first_depth);
-    scratch_.insert(scratch_.end(), first, first + kPatchPoints);
   }
   if (varying < kSmallestBin / 2 || 4 * scattered < end - begin) return 0.0;
-  std::sort(scratch_.begin(), scratch_.end());
-  const std::size_t values = static_cast<std::size_t>(std::unique(scratch_.begin(), scratch_.end()) - scratch_.begin());
-  if (static_cast<double>(values) > kLatticeShare * static_cast<double>(levels)) return 0.0;
+  // The distinct depths of those patches, counted in an open-addressing set of their bit
+  // patterns (+0 and -0 as one, as ==); continuous depths, most bins of a smoothed frame, pass
+  // the limit early and end the count there.
+  const double limit = kLatticeShare * static_cast<double>(levels);
+  int bits_of_capacity = 4;
+  while ((std::size_t{1} << bits_of_capacity) < 2 * varying * kPatchPoints) ++bits_of_capacity;
+  constexpr std::uint32_t kEmpty = 0xffffffffu;  // a NaN: never a depth here
+  distinct_.assign(std::size_t{1} << bits_of_capacity, kEmpty);
+  const std::uint32_t mask = static_cast<std::uint32_t>(distinct_.size() - 1);
+  std::size_t values = 0;
+  for (std::size_t i = begin; i < end; ++i) {
+    if (patches_[i].levels < 2) continue;
+    const float* depths = depths_.data() + patches_[i].first_depth;
+    for (int k = 0; k < kPatchPoints; ++k) {
+      std::uint32_t bits = 0;
+      if (depths[k] != 0.f) std::memcpy(&bits, &depths[k], sizeof bits);
+      std::uint32_t slot = (bits * 0x9e3779b1u) >> (32 - bits_of_capacity);
+      while (distinct_[slot] != kEmpty && distinct_[slot] != bits) slot = (slot + 1) & mask;
+      if (distinct_[slot] == bits) continue;
+      distinct_[slot] = bits;
+      if (static_cast<double>(++values) > limit) return 0.0;
+    }
+  }
   scratch_.clear();
   for (std::size_t i = begin; i < end; ++i)
     if (patches_[i].levels >= 2) scratch_.push_back(patches_[i].smallest_gap);

@@ -49,6 +49,7 @@ class NoiseEstimator {
   std::vector<Patch> patches_;
   std::vector<float> depths_;
   std::vector<float> scratch_;
+  std::vector<std::uint32_t> distinct_;  // latticeStep's set of depth bit patterns
 };
 
 }  // namespace floodplane
