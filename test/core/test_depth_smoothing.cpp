@@ -115,12 +115,8 @@ TEST(DepthSmoothing, SmoothingFourPointsAtATimeChangesNoBit) {
       for (int k = 0; k < 3; ++k) scene.xyz[3 * hole + k] = nan;
     }
     scene.xyz[3 * (n / 3) + 2] = std::numeric_limits<float>::infinity();
-    std::vector<float> padded;
-    for (std::size_t i = 0; i < scene.xyz.size(); i += 3)
-      padded.insert(padded.end(), {scene.xyz[i], scene.xyz[i + 1], scene.xyz[i + 2], 1.f});
-    PointGrid four = scene.grid();
-    four.data = padded.data();
-    four.stride = 4;
+    const std::vector<float> padded = scene.fourFloatPoints();
+    const PointGrid four = scene.fourFloatGrid(padded);
     DepthSmoothing by_point, by_four;
     const PointGrid& expected = by_point.smooth(scene.grid(), noise);
     const PointGrid& actual = by_four.smooth(four, noise);

@@ -67,6 +67,21 @@ struct RenderedGrid {
     const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);
     return {xyz[i], xyz[i + 1], xyz[i + 2]};
   }
+  // The points with four floats each (x y z 1), as PCL lays them out: the layout the core's
+  // four-pixel paths take (grid() has three, which they leave to the pixel-by-pixel code).
+  std::vector<float> fourFloatPoints() const {
+    std::vector<float> padded;
+    padded.reserve(xyz.size() / 3 * 4);
+    for (std::size_t i = 0; i < xyz.size(); i += 3) padded.insert(padded.end(), {xyz[i], xyz[i + 1], xyz[i + 2], 1.f});
+    return padded;
+  }
+  // A grid over `points` (from fourFloatPoints(), kept alive by the caller).
+  PointGrid fourFloatGrid(const std::vector<float>& points) const {
+    PointGrid g = grid();
+    g.data = points.data();
+    g.stride = 4;
+    return g;
+  }
 };
 
 // The standard deviation [m] of the noise along a ray at range r [m].

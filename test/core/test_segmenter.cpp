@@ -14,10 +14,10 @@
 namespace floodplane {
 namespace {
 
+using test::bestIoU;
 using test::Pinhole;
 using test::RenderedGrid;
 using test::ScenePlane;
-using test::bestIoU;
 
 Pinhole camera() { return test::kinectView(320, 240); }
 
@@ -163,12 +163,8 @@ TEST(Segmenter, DecidingFourPixelsAtATimeChangesNothing) {
   wide.focal = 131.25;
   for (const double noise : {0.0, 0.01}) {
     const RenderedGrid scene = test::render(wide, test::roomCorner(), noise, 7);
-    std::vector<float> padded;
-    for (std::size_t i = 0; i < scene.xyz.size(); i += 3)
-      padded.insert(padded.end(), {scene.xyz[i], scene.xyz[i + 1], scene.xyz[i + 2], 1.f});
-    PointGrid four = scene.grid();
-    four.data = padded.data();
-    four.stride = 4;
+    const std::vector<float> padded = scene.fourFloatPoints();
+    const PointGrid four = scene.fourFloatGrid(padded);
     for (const int subsampling : {1, 2}) {
       Params params;
       params.min_inliers = 100;
