@@ -13,15 +13,15 @@ constexpr float kBehindTolerances = 2.0f;
 
 }  // namespace
 
-void OcclusionMerging::findBoxes(int width, int height, const std::vector<std::uint32_t>& labels, std::size_t planes) {
+void OcclusionMerging::findBoxes(int width, int height, const RenumberedLabels& labels, std::size_t planes) {
   boxes_.assign(planes, Box{width, height, -1, -1});
   // A row is mostly long runs of one label: one box update per run.
   for (int y = 0; y < height; ++y) {
-    const std::uint32_t* row = labels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    const std::uint32_t* row = labels.image + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
     int x = 0;
     while (x < width) {
-      const std::uint32_t k = row[x];
-      const int end = findInRow(row, x, width - 1, k, false);
+      const std::uint32_t k = labels.number[row[x]];
+      const int end = findInRow(row, x, width - 1, row[x], false);
       if (k != 0) {
         Box& box = boxes_[k - 1];
         box.x_min = std::min(box.x_min, x);
@@ -34,7 +34,7 @@ void OcclusionMerging::findBoxes(int width, int height, const std::vector<std::u
   }
 }
 
-bool OcclusionMerging::occludedBetween(const PointGrid& full, const std::vector<std::uint32_t>& labels, std::uint32_t a,
+bool OcclusionMerging::occludedBetween(const PointGrid& full, const RenumberedLabels& labels, std::uint32_t a,
                                        std::uint32_t b, const FloodCriterion& plane) const {
   const Box& box_a = boxes_[a - 1];
   const Box& box_b = boxes_[b - 1];
@@ -83,7 +83,7 @@ bool OcclusionMerging::occludedBetween(const PointGrid& full, const std::vector<
   return gaps > 0;
 }
 
-bool OcclusionMerging::run(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
+bool OcclusionMerging::run(const PointGrid& full, const RenumberedLabels& labels, PlaneCandidates& planes,
                            const MergeCriterion& criterion, const Tolerances& tolerances, float angular_pitch) {
   std::vector<PlaneCandidate>& list = planes.list();
   const std::size_t n = list.size();

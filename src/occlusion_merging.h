@@ -24,7 +24,7 @@ class OcclusionMerging {
  public:
   /// Merges such candidates of `planes` (labelled in `labels` by number, 1-based). Afterwards
   /// `planes.remap()` maps every old number to its new one; returns whether any merged.
-  bool run(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
+  bool run(const PointGrid& full, const RenumberedLabels& labels, PlaneCandidates& planes,
            const MergeCriterion& criterion, const Tolerances& tolerances, float angular_pitch);
 
  private:
@@ -32,10 +32,10 @@ class OcclusionMerging {
     int x_min, y_min, x_max, y_max;
   };
   // The pixel boxes of the planes (box k - 1 of plane k).
-  void findBoxes(int width, int height, const std::vector<std::uint32_t>& labels, std::size_t planes);
+  void findBoxes(int width, int height, const RenumberedLabels& labels, std::size_t planes);
   // Whether the pixels between a and b along their shared rows and columns allow a merge.
-  bool occludedBetween(const PointGrid& full, const std::vector<std::uint32_t>& labels, std::uint32_t a,
-                       std::uint32_t b, const FloodCriterion& plane) const;
+  bool occludedBetween(const PointGrid& full, const RenumberedLabels& labels, std::uint32_t a, std::uint32_t b,
+                       const FloodCriterion& plane) const;
 
   std::vector<Box> boxes_;
   std::vector<PlaneFit> fits_;

@@ -109,4 +109,31 @@ void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, s
   }
 }
 
+void PlaneCandidates::deferRenumbering(bool pending) {
+  if (pending) {
+    number_ = remap_;
+  } else {
+    number_.resize(candidates_.size() + 1);
+    std::iota(number_.begin(), number_.end(), 0u);
+  }
+}
+
+void PlaneCandidates::composeRenumbering() {
+  for (std::uint32_t& number : number_) number = remap_[number];
+}
+
+void PlaneCandidates::applyRenumbering(std::vector<std::uint32_t>& image) const {
+  constexpr std::size_t kLongestScan = std::numeric_limits<int>::max();
+  std::uint32_t* labels = image.data();
+  std::size_t i = 0;
+  while (i < image.size()) {
+    const std::uint32_t old_label = labels[i];
+    const std::size_t scan = std::min(image.size() - i, kLongestScan);
+    const std::size_t run_end =
+        i + static_cast<std::size_t>(findInRow(labels + i, 0, static_cast<int>(scan) - 1, old_label, false));
+    if (number_[old_label] != old_label) std::fill(labels + i, labels + run_end, number_[old_label]);
+    i = run_end;
+  }
+}
+
 }  // namespace floodplane

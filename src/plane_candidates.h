@@ -16,6 +16,16 @@ namespace floodplane {
 /// "No pixel yet" for PlaneCandidate::first_pixel.
 constexpr std::size_t kNoPixel = std::numeric_limits<std::size_t>::max();
 
+/// A label image read through a renumbering not yet applied to it: the plane number of pixel
+/// i is number[image[i]]. The stages after refinement renumber the planes (sorting them,
+/// merging occluded pieces, dropping curved ones) and read the labels in between; they read
+/// them through this, and the image is rewritten once, at the end.
+struct RenumberedLabels {
+  const std::uint32_t* image = nullptr;
+  const std::uint32_t* number = nullptr;
+  std::uint32_t operator[](std::size_t i) const { return number[image[i]]; }
+};
+
 /// A plane on its way to the output: its full-resolution inliers and its membership test.
 struct PlaneCandidate {
   PlaneSums sums;            ///< of its full-resolution inliers
@@ -55,10 +65,23 @@ class PlaneCandidates {
     renumberPixels(labels.data(), 0, labels.size());
   }
 
+  /// Deferred renumbering. From here on the label image keeps the numbers it has, and
+  /// labels() reads it through the pending renumbering: remap() when `pending` (the last
+  /// sortBySize, regroup or drop changed the numbers and the image was not renumbered), none
+  /// otherwise. First pixels follow the planes through every renumbering, so none is lost.
+  void deferRenumbering(bool pending);
+  /// Adds the last regroup's or drop's remap() to the pending renumbering.
+  void composeRenumbering();
+  /// The image as its pixels' current plane numbers.
+  RenumberedLabels labels(const std::vector<std::uint32_t>& image) const { return {image.data(), number_.data()}; }
+  /// Rewrites the image with the current numbers, in one pass.
+  void applyRenumbering(std::vector<std::uint32_t>& image) const;
+
  private:
   std::vector<PlaneCandidate> candidates_;
   std::vector<PlaneCandidate> kept_;
   std::vector<std::uint32_t> remap_;
+  std::vector<std::uint32_t> number_;  // the deferred renumbering: image number -> current number
   std::vector<std::size_t> order_;
 };
 

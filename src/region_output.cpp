@@ -52,15 +52,17 @@ void RegionBuilder::build(const PointGrid& measured, const PointGrid& full, cons
     // Refinement may also have changed the order by size.
     renumbered = candidates_.sortBySize(0, &params);
   }
-  // Each stage below reads the labels by the candidates' current numbers: renumber after each.
-  if (renumbered) candidates_.renumberImage(out.labels);
-  if (occlusion_merging_.run(full, out.labels, candidates_, MergeCriterion(params, tolerances), tolerances,
-                             angular_pitch))
-    candidates_.renumberImage(out.labels);
-  if (dropCurvedPlanes(full, out.labels, tolerances)) candidates_.renumberImage(out.labels);
+  // Each stage below renumbers the planes and reads the labels by their current numbers:
+  // through the pending renumbering, so that the image is rewritten once, at the end.
+  candidates_.deferRenumbering(renumbered);
+  if (occlusion_merging_.run(full, candidates_.labels(out.labels), candidates_, MergeCriterion(params, tolerances),
+                             tolerances, angular_pitch))
+    candidates_.composeRenumbering();
+  if (dropCurvedPlanes(full, candidates_.labels(out.labels), tolerances)) candidates_.composeRenumbering();
   // A plane's centroid, covariance and fit are those of its inliers as the caller measured
   // them, not as they were smoothed for segmenting.
-  if (measured.data != full.data) sumMeasuredPoints(measured, out.labels);
+  if (measured.data != full.data) sumMeasuredPoints(measured, candidates_.labels(out.labels));
+  candidates_.applyRenumbering(out.labels);
 
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
@@ -236,14 +238,19 @@ void RegionBuilder::labelMixedCell(const PointGrid& full, std::size_t row_start,
   }
 }
 
-void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels) {
+void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const RenumberedLabels& labels) {
   for (PlaneCandidate& candidate : candidates_.list()) candidate.sums = PlaneSums();
   const std::size_t width = static_cast<std::size_t>(measured.width);
-  for (std::size_t row = 0; row < labels.size(); row += width) {
+  const std::size_t size = width * static_cast<std::size_t>(measured.height);
+  for (std::size_t row = 0; row < size; row += width) {
+    const std::uint32_t* image_row = labels.image + row;
     int u = 0;
     while (u < measured.width) {
-      const std::uint32_t k = labels[row + static_cast<std::size_t>(u)];
-      const int end = findInRow(labels.data() + row, u, measured.width - 1, k, false);
+      // A run of one plane: runs of image numbers that now carry the same number join.
+      const std::uint32_t k = labels.number[image_row[u]];
+      int end = findInRow(image_row, u, measured.width - 1, image_row[u], false);
+      while (end < measured.width && labels.number[image_row[end]] == k)
+        end = findInRow(image_row, end, measured.width - 1, image_row[end], false);
       if (k != 0)
         addRunToSums(candidates_[k].sums, measured, row + static_cast<std::size_t>(u),
                      static_cast<std::size_t>(end - u));
@@ -252,8 +259,7 @@ void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const std::vect
   }
 }
 
-void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels,
-                                    PlanarityTest& test) {
+void RegionBuilder::samplePlanarity(const PointGrid& full, const RenumberedLabels& labels, PlanarityTest& test) {
   // Interior pixels only (no neighbour in another plane or none): the pixels along a plane's
   // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
   // A neighbour without a return does not make a border: on a speckled surface there would be
@@ -276,12 +282,12 @@ void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std
   // up once. Points are added in raster order, as pixel by pixel.
   for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(full.height); ++y) {
     const std::size_t row = y * width;
-    const std::uint32_t* row_labels = labels.data() + row;
+    const std::uint32_t* image_row = labels.image + row;
     int x = 1;
     const int x_last = full.width - 2;
     while (x <= x_last) {
-      const std::uint32_t k = row_labels[x];
-      const int end = findInRow(row_labels, x, x_last, k, false);
+      const std::uint32_t k = labels.number[image_row[x]];
+      const int end = findInRow(image_row, x, x_last, image_row[x], false);
       const std::uint32_t s = k == 0 ? 0 : strides_[k];
       if (k != 0 && y % s == 0) {
         // The first column of the run on the plane's lattice.
@@ -297,7 +303,7 @@ void RegionBuilder::samplePlanarity(const PointGrid& full, const std::vector<std
   }
 }
 
-bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels,
+bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const RenumberedLabels& labels,
                                      const Tolerances& tolerances) {
   const std::vector<PlaneCandidate>& list = candidates_.list();
   if (list.empty()) return false;

@@ -67,11 +67,11 @@ class RegionBuilder {
   // Beyond the paper: the planarity test (planarity.h) on the final planes; drops the curved
   // ones (a cylinder's, a ball's or a person's facets). Returns whether any was dropped (the
   // labels then need renumbering by remap()).
-  bool dropCurvedPlanes(const PointGrid& full, const std::vector<std::uint32_t>& labels, const Tolerances& tolerances);
+  bool dropCurvedPlanes(const PointGrid& full, const RenumberedLabels& labels, const Tolerances& tolerances);
   // Adds the interior pixels of the planes to `test`.
-  void samplePlanarity(const PointGrid& full, const std::vector<std::uint32_t>& labels, PlanarityTest& test);
+  void samplePlanarity(const PointGrid& full, const RenumberedLabels& labels, PlanarityTest& test);
   // The planes' sums anew from the measured points of their pixels.
-  void sumMeasuredPoints(const PointGrid& measured, const std::vector<std::uint32_t>& labels);
+  void sumMeasuredPoints(const PointGrid& measured, const RenumberedLabels& labels);
   // Adds the labelled pixels of one full-resolution row to their planes' sums and notes
   // each plane's first pixel.
   void addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row);
