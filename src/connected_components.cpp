@@ -115,16 +115,12 @@ void RunsByLabel::collect(const std::int32_t* labels, int width, int height, con
   first_.assign(wanted.size() + 1, 0);
   for (int y = 0; y < height; ++y) {
     const std::int32_t* row = labels + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-    int x = 0;
-    while (x < width) {
-      const std::int32_t label = row[x];
-      const int end = findInRow(row, x, width - 1, label, false);
+    forEachRunInRow(row, 0, width - 1, [&](std::int32_t label, int begin, int end) {
       if (label > 0 && static_cast<std::size_t>(label) < wanted.size() && wanted[static_cast<std::size_t>(label)]) {
-        found_.push_back({label, {y, x, end - 1, -1}});
+        found_.push_back({label, {y, begin, end - 1, -1}});
         ++first_[static_cast<std::size_t>(label) + 1];
       }
-      x = end;
-    }
+    });
   }
   // Grouped by label (a counting sort, which keeps the raster order within a label).
   for (std::size_t label = 1; label < first_.size(); ++label) first_[label] += first_[label - 1];

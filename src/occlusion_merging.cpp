@@ -18,19 +18,15 @@ void OcclusionMerging::findBoxes(int width, int height, const RenumberedLabels& 
   // A row is mostly long runs of one label: one box update per run.
   for (int y = 0; y < height; ++y) {
     const std::uint32_t* row = labels.image + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-    int x = 0;
-    while (x < width) {
-      const std::uint32_t k = labels.number[row[x]];
-      const int end = findInRow(row, x, width - 1, row[x], false);
-      if (k != 0) {
-        Box& box = boxes_[k - 1];
-        box.x_min = std::min(box.x_min, x);
-        box.x_max = std::max(box.x_max, end - 1);
-        box.y_min = std::min(box.y_min, y);
-        box.y_max = std::max(box.y_max, y);
-      }
-      x = end;
-    }
+    forEachRunInRow(row, 0, width - 1, [&](std::uint32_t image_label, int begin, int end) {
+      const std::uint32_t k = labels.number[image_label];
+      if (k == 0) return;
+      Box& box = boxes_[k - 1];
+      box.x_min = std::min(box.x_min, begin);
+      box.x_max = std::max(box.x_max, end - 1);
+      box.y_min = std::min(box.y_min, y);
+      box.y_max = std::max(box.y_max, y);
+    });
   }
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
 
 #include "row_search.h"
@@ -94,19 +93,11 @@ void PlaneCandidates::forgetFirstPixels() {
 }
 
 void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end) {
-  // A label image is mostly long runs of one label: one lookup per run.
-  constexpr std::size_t kLongestScan = std::numeric_limits<int>::max();
-  std::size_t i = begin;
-  while (i < end) {
-    const std::uint32_t old_label = labels[i];
-    const std::size_t scan = std::min(end - i, kLongestScan);
-    const std::size_t run_end =
-        i + static_cast<std::size_t>(findInRow(labels + i, 0, static_cast<int>(scan) - 1, old_label, false));
+  forEachRun(labels, begin, end, [&](std::uint32_t old_label, std::size_t first, std::size_t last) {
     const std::uint32_t k = remap_[old_label];
-    if (k != old_label) std::fill(labels + i, labels + run_end, k);
-    if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = i;
-    i = run_end;
-  }
+    if (k != old_label) std::fill(labels + first, labels + last, k);
+    if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = first;
+  });
 }
 
 void PlaneCandidates::deferRenumbering(bool pending) {
@@ -123,17 +114,10 @@ void PlaneCandidates::composeRenumbering() {
 }
 
 void PlaneCandidates::applyRenumbering(std::vector<std::uint32_t>& image) const {
-  constexpr std::size_t kLongestScan = std::numeric_limits<int>::max();
   std::uint32_t* labels = image.data();
-  std::size_t i = 0;
-  while (i < image.size()) {
-    const std::uint32_t old_label = labels[i];
-    const std::size_t scan = std::min(image.size() - i, kLongestScan);
-    const std::size_t run_end =
-        i + static_cast<std::size_t>(findInRow(labels + i, 0, static_cast<int>(scan) - 1, old_label, false));
-    if (number_[old_label] != old_label) std::fill(labels + i, labels + run_end, number_[old_label]);
-    i = run_end;
-  }
+  forEachRun(labels, 0, image.size(), [&](std::uint32_t old_label, std::size_t first, std::size_t last) {
+    if (number_[old_label] != old_label) std::fill(labels + first, labels + last, number_[old_label]);
+  });
 }
 
 }  // namespace floodplane

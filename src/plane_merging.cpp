@@ -73,25 +73,18 @@ void PlaneMerger::consider(std::int32_t a, std::int32_t b, const std::vector<Pla
 void PlaneMerger::sortEdges() {
   // Two stable counting passes, by b and then by a (a radix sort with a segment number as
   // its digit): a frame has tens of thousands of edges, most of them repeats, between a few
-  // hundred segments, and this is linear in both.
+  // hundred segments, and this is linear in both. Segment numbers are below the count given
+  // to reset(), as merge() needs them to be.
   const std::size_t n = parent_.size();
-  const bool in_range = std::all_of(edges_.begin(), edges_.end(), [n](const auto& edge) {
-    return edge.first >= 0 && edge.second >= 0 && static_cast<std::size_t>(edge.first) < n &&
-           static_cast<std::size_t>(edge.second) < n;
-  });
-  if (!in_range) {
-    std::sort(edges_.begin(), edges_.end());
-  } else {
-    const auto pass = [&](const auto& from, auto& to, auto digit) {
-      edge_counts_.assign(n + 1, 0);
-      for (const auto& edge : from) ++edge_counts_[static_cast<std::size_t>(digit(edge)) + 1];
-      for (std::size_t d = 1; d <= n; ++d) edge_counts_[d] += edge_counts_[d - 1];
-      to.resize(from.size());
-      for (const auto& edge : from) to[edge_counts_[static_cast<std::size_t>(digit(edge))]++] = edge;
-    };
-    pass(edges_, sorted_edges_, [](const auto& edge) { return edge.second; });
-    pass(sorted_edges_, edges_, [](const auto& edge) { return edge.first; });
-  }
+  const auto pass = [&](const auto& from, auto& to, auto digit) {
+    edge_counts_.assign(n + 1, 0);
+    for (const auto& edge : from) ++edge_counts_[static_cast<std::size_t>(digit(edge)) + 1];
+    for (std::size_t d = 1; d <= n; ++d) edge_counts_[d] += edge_counts_[d - 1];
+    to.resize(from.size());
+    for (const auto& edge : from) to[edge_counts_[static_cast<std::size_t>(digit(edge))]++] = edge;
+  };
+  pass(edges_, sorted_edges_, [](const auto& edge) { return edge.second; });
+  pass(sorted_edges_, edges_, [](const auto& edge) { return edge.first; });
   edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
 }
 

@@ -44,7 +44,8 @@ class PlaneMerger {
  public:
   /// Starts a graph over segments 1..segment_count-1 (0 is "no segment").
   void reset(std::size_t segment_count);
-  /// Records that segments a and b touch (pixel neighbours and 3-D neighbours).
+  /// Records that segments a and b (below the count given to reset()) touch: pixel neighbours
+  /// and 3-D neighbours.
   void addEdge(std::int32_t a, std::int32_t b);
   /// Merges; afterwards root(s) gives the surviving segment of each segment.
   /// `sums` holds each segment's sums (index = segment label), and is updated: a root's

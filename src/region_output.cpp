@@ -103,27 +103,23 @@ void RegionBuilder::labelFullResolution(const PointGrid& full, const PointGrid& 
     const std::uint32_t* table = candidate_of_segment_.data();
     const std::size_t width = static_cast<std::size_t>(full.width);
     for (std::size_t row = 0; row < full.size(); row += width) {
-      const std::int32_t* segment_row = merged.labels + row;
-      int x = 0;
-      while (x < full.width) {
-        const int end = findInRow(segment_row, x, full.width - 1, segment_row[x], false);
-        const std::uint32_t k = table[segment_row[x]];
-        const std::size_t first = row + static_cast<std::size_t>(x), last = row + static_cast<std::size_t>(end);
+      forEachRunInRow(merged.labels + row, 0, full.width - 1, [&](std::int32_t segment, int begin, int end) {
+        const std::uint32_t k = table[segment];
+        const std::size_t first = row + static_cast<std::size_t>(begin), last = row + static_cast<std::size_t>(end);
         if (k == 0 || !holes_->filled()) {
           std::fill(labels.begin() + static_cast<std::ptrdiff_t>(first),
                     labels.begin() + static_cast<std::ptrdiff_t>(last), k);
           if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = first;
-        } else {
-          for (std::size_t i = first; i < last; ++i) {
-            // A filled-in hole: it helped the flood across, but it was never measured.
-            const bool filled = holes_->isFilled(i);
-            if (filled) candidates_[k].sums.remove(Vec3::load(segmented.point(i)));
-            labels[i] = filled ? 0u : k;
-            if (!filled && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = i;
-          }
+          return;
         }
-        x = end;
-      }
+        for (std::size_t i = first; i < last; ++i) {
+          // A filled-in hole: it helped the flood across, but it was never measured.
+          const bool filled = holes_->isFilled(i);
+          if (filled) candidates_[k].sums.remove(Vec3::load(segmented.point(i)));
+          labels[i] = filled ? 0u : k;
+          if (!filled && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = i;
+        }
+      });
     }
     return;
   }
@@ -282,24 +278,18 @@ void RegionBuilder::samplePlanarity(const PointGrid& full, const RenumberedLabel
   // up once. Points are added in raster order, as pixel by pixel.
   for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(full.height); ++y) {
     const std::size_t row = y * width;
-    const std::uint32_t* image_row = labels.image + row;
-    int x = 1;
-    const int x_last = full.width - 2;
-    while (x <= x_last) {
-      const std::uint32_t k = labels.number[image_row[x]];
-      const int end = findInRow(image_row, x, x_last, image_row[x], false);
-      const std::uint32_t s = k == 0 ? 0 : strides_[k];
-      if (k != 0 && y % s == 0) {
-        // The first column of the run on the plane's lattice.
-        const std::uint32_t first = (static_cast<std::uint32_t>(x) + s - 1) / s * s;
-        for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
-          const std::size_t i = row + u;
-          if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-            test.add(k, Vec3::load(full.point(i)));
-        }
+    forEachRunInRow(labels.image + row, 1, full.width - 2, [&](std::uint32_t image_label, int begin, int end) {
+      const std::uint32_t k = labels.number[image_label];
+      if (k == 0 || y % strides_[k] != 0) return;
+      const std::uint32_t s = strides_[k];
+      // The first column of the run on the plane's lattice.
+      const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
+      for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
+        const std::size_t i = row + u;
+        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+          test.add(k, Vec3::load(full.point(i)));
       }
-      x = end;
-    }
+    });
   }
 }
 
@@ -318,19 +308,14 @@ bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const RenumberedLabe
 
 void RegionBuilder::addRowToSums(const PointGrid& full, std::size_t row_start, const std::uint32_t* row) {
   // Most of a row is long runs of one label; each run is summed in one tight loop.
-  const int width = full.width;
-  int u = 0;
-  while (u < width) {
-    const std::uint32_t k = row[u];
-    const int end = findInRow(row, u, width - 1, k, false);
-    if (k != 0) {
-      PlaneCandidate& candidate = candidates_[k];
-      // Rows come in raster order: a plane's first run starts at its first pixel.
-      if (candidate.first_pixel == kNoPixel) candidate.first_pixel = row_start + static_cast<std::size_t>(u);
-      addRunToSums(candidate.sums, full, row_start + static_cast<std::size_t>(u), static_cast<std::size_t>(end - u));
-    }
-    u = end;
-  }
+  forEachRunInRow(row, 0, full.width - 1, [&](std::uint32_t k, int begin, int end) {
+    if (k == 0) return;
+    PlaneCandidate& candidate = candidates_[k];
+    // Rows come in raster order: a plane's first run starts at its first pixel.
+    if (candidate.first_pixel == kNoPixel) candidate.first_pixel = row_start + static_cast<std::size_t>(begin);
+    addRunToSums(candidate.sums, full, row_start + static_cast<std::size_t>(begin),
+                 static_cast<std::size_t>(end - begin));
+  });
 }
 
 }  // namespace floodplane

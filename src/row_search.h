@@ -1,6 +1,9 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "simd.h"
@@ -21,6 +24,33 @@ int findInRow(const Label* row, int x, int x_end, Label label, bool equal) {
 #endif
   while (x <= x_end && (row[x] == label) != equal) ++x;
   return x;
+}
+
+/// Calls f(label, begin, end) for every maximal run [begin, end) of one label in
+/// row[x_begin .. x_last], left to right. The passes over a label image go run by run: it is
+/// mostly long runs of one label, so their work is one lookup a run.
+template <class Label, class F>
+void forEachRunInRow(const Label* row, int x_begin, int x_last, F&& f) {
+  for (int x = x_begin; x <= x_last;) {
+    const int end = findInRow(row, x, x_last, row[x], false);
+    f(row[x], x, end);
+    x = end;
+  }
+}
+
+/// forEachRunInRow over labels[begin, end) as one line (runs may cross row ends), with
+/// f(label, begin, end) in indices of `labels`.
+template <class Label, class F>
+void forEachRun(const Label* labels, std::size_t begin, std::size_t end, F&& f) {
+  constexpr std::size_t kLongestScan = std::numeric_limits<int>::max();  // findInRow counts in int
+  std::size_t i = begin;
+  while (i < end) {
+    const std::size_t scan = std::min(end - i, kLongestScan);
+    const std::size_t run_end =
+        i + static_cast<std::size_t>(findInRow(labels + i, 0, static_cast<int>(scan) - 1, labels[i], false));
+    f(labels[i], i, run_end);
+    i = run_end;
+  }
 }
 
 }  // namespace floodplane
