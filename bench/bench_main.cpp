@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerFloodplane();
   floodplane::bench::registerOmps();
   floodplane::bench::registerSoak();
+  floodplane::bench::registerSmoothing();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -13,5 +13,7 @@ void registerFloodplane();
 void registerOmps();
 /// The soak run: 10 000 segmentations in one process, resident memory first and last.
 void registerSoak();
+/// The depth smoothing alone, four points at a time and as wide as the CPU runs.
+void registerSmoothing();
 
 }  // namespace floodplane::bench

@@ -81,23 +81,61 @@ void smoothFour(const float* before_points, const float* centre, const float* af
 }
 #endif
 
+#if FLOODPLANE_AVX
+// smoothFour's sum in eight lanes.
+FLOODPLANE_TARGET_AVX inline Float8 gatedSum(Mask8 use_before, Mask8 use_after, Float8 before, Float8 centre,
+                                             Float8 after) {
+  const Float8 zero = Float8::broadcast(0.f);
+  const Float8 with_before = Float8::select(use_before, zero + before, zero) + centre;
+  return Float8::select(use_after, with_before + after, with_before);
+}
+
+// smoothFour for eight points, with the same operations in each lane (AVX; only where
+// cpuHasAvx()).
+FLOODPLANE_TARGET_AVX void smoothEight(const float* before_points, const float* centre, const float* after_points,
+                                       std::size_t stride, float* out, const DepthNoise& noise) {
+  const PointLanes8 c = PointLanes8::load(centre, stride), before = PointLanes8::load(before_points, stride),
+                    after = PointLanes8::load(after_points, stride);
+  const Float8 gate = scaledSigma(noise, kGateDeviations, c.squaredNorm());
+  const Mask8 use_before = (before.z - c.z).abs() <= gate;
+  const Mask8 use_after = (after.z - c.z).abs() <= gate;
+  const Float8 zero = Float8::broadcast(0.f), one = Float8::broadcast(1.f);
+  const Float8 count = (one + Float8::select(use_before, one, zero)) + Float8::select(use_after, one, zero);
+  const Float8 inverse = one / count;
+  const Mask8 finite = c.z.abs() < Float8::broadcast(std::numeric_limits<float>::infinity());
+  const Float8 nan = Float8::broadcast(std::numeric_limits<float>::quiet_NaN());
+  PointLanes8 result;
+  result.x = Float8::select(finite, gatedSum(use_before, use_after, before.x, c.x, after.x) * inverse, nan);
+  result.y = Float8::select(finite, gatedSum(use_before, use_after, before.y, c.y, after.y) * inverse, nan);
+  result.z = Float8::select(finite, gatedSum(use_before, use_after, before.z, c.z, after.z) * inverse, nan);
+  result.storePoints(out);
+}
+#endif
+
 // The row pass over one row of `width` points (`stride` floats apart), neighbours left and
-// right, into `out` (four floats a point). With `four_at_a_time`, the points that have both
-// neighbours go four at a time.
-void smoothAlongRow(const float* row, std::size_t stride, int width, bool four_at_a_time, float* out,
+// right, into `out` (four floats a point). The points that have both neighbours go up to
+// `lanes` (1, 4 or 8) at a time.
+void smoothAlongRow(const float* row, std::size_t stride, int width, int lanes, float* out,
                     const DepthNoise& noise) {
   int x = 0;
 #if FLOODPLANE_SIMD
-  if (four_at_a_time && width > 4) {
+  if (lanes >= 4 && width > 4) {
     // The first and last points lack a neighbour: they go one at a time.
     smoothPoint(nullptr, row, row + stride, out, noise);
-    for (x = 1; x + 4 <= width - 1; x += 4) {
+    x = 1;
+#if FLOODPLANE_AVX
+    for (; lanes == 8 && x + 8 <= width - 1; x += 8) {
+      const float* centre = row + static_cast<std::size_t>(x) * stride;
+      smoothEight(centre - stride, centre, centre + stride, stride, out + 4 * static_cast<std::size_t>(x), noise);
+    }
+#endif
+    for (; x + 4 <= width - 1; x += 4) {
       const float* centre = row + static_cast<std::size_t>(x) * stride;
       smoothFour(centre - stride, centre, centre + stride, stride, out + 4 * static_cast<std::size_t>(x), noise);
     }
   }
 #else
-  (void)four_at_a_time;
+  (void)lanes;
 #endif
   for (; x < width; ++x) {
     const float* centre = row + static_cast<std::size_t>(x) * stride;
@@ -108,18 +146,24 @@ void smoothAlongRow(const float* row, std::size_t stride, int width, bool four_a
 
 // The column pass over one row of `width` points (four floats each), neighbours from the rows
 // `above` and `below` (null beyond the grid's edge), into `out`.
-void smoothAcrossRows(const float* above, const float* row, const float* below, int width, bool four_at_a_time,
-                      float* out, const DepthNoise& noise) {
+void smoothAcrossRows(const float* above, const float* row, const float* below, int width, int lanes, float* out,
+                      const DepthNoise& noise) {
   int x = 0;
 #if FLOODPLANE_SIMD
-  if (four_at_a_time && above != nullptr && below != nullptr) {
+  if (lanes >= 4 && above != nullptr && below != nullptr) {
+#if FLOODPLANE_AVX
+    for (; lanes == 8 && x + 8 <= width; x += 8) {
+      const std::size_t at = 4 * static_cast<std::size_t>(x);
+      smoothEight(above + at, row + at, below + at, 4, out + at, noise);
+    }
+#endif
     for (; x + 4 <= width; x += 4) {
       const std::size_t at = 4 * static_cast<std::size_t>(x);
       smoothFour(above + at, row + at, below + at, 4, out + at, noise);
     }
   }
 #else
-  (void)four_at_a_time;
+  (void)lanes;
 #endif
   for (; x < width; ++x) {
     const std::size_t at = 4 * static_cast<std::size_t>(x);
@@ -137,19 +181,19 @@ const PointGrid& DepthSmoothing::smooth(const PointGrid& grid, const DepthNoise&
   // is read once and written once, and the rows in between stay in the cache.
   rows_.resize(3 * width * 4);
   const auto ring = [&](int y) { return rows_.data() + static_cast<std::size_t>(y % 3) * width * 4; };
-  // Four points at a time where the input has four floats a point (PCL's layout); a packed
-  // x y z grid goes pixel by pixel through both passes, which the tests compare.
-  const bool four_at_a_time = fourPixelsAtATime(grid);
+  // Four or eight points at a time where the input has four floats a point (PCL's layout); a
+  // packed x y z grid goes pixel by pixel through both passes, which the tests compare.
+  const int lanes = !fourPixelsAtATime(grid) ? 1 : width_ == VectorWidth::kWidest && cpuHasAvx() ? 8 : 4;
   const auto smoothRow = [&](int y) {
-    smoothAlongRow(grid.data + static_cast<std::size_t>(y) * width * grid.stride, grid.stride, grid.width,
-                   four_at_a_time, ring(y), noise);
+    smoothAlongRow(grid.data + static_cast<std::size_t>(y) * width * grid.stride, grid.stride, grid.width, lanes,
+                   ring(y), noise);
   };
   if (grid.height > 0) smoothRow(0);
   for (int y = 0; y < grid.height; ++y) {
     const bool has_below = y + 1 < grid.height;
     if (has_below) smoothRow(y + 1);
-    smoothAcrossRows(y > 0 ? ring(y - 1) : nullptr, ring(y), has_below ? ring(y + 1) : nullptr, grid.width,
-                     four_at_a_time, result_points_.data() + static_cast<std::size_t>(y) * width * 4, noise);
+    smoothAcrossRows(y > 0 ? ring(y - 1) : nullptr, ring(y), has_below ? ring(y + 1) : nullptr, grid.width, lanes,
+                     result_points_.data() + static_cast<std::size_t>(y) * width * 4, noise);
   }
   result_ = grid;
   result_.data = result_points_.data();

@@ -21,10 +21,17 @@ namespace floodplane {
 /// Holes stay holes. The output has four floats a point.
 class DepthSmoothing {
  public:
+  /// How many points at a time where the grid has four floats a point: as many as the CPU
+  /// runs (eight with AVX, else four), or four (SSE2) for tests that compare the two.
+  enum class VectorWidth { kWidest, kSse2 };
+
+  explicit DepthSmoothing(VectorWidth width = VectorWidth::kWidest) : width_(width) {}
+
   /// The smoothed `grid` (valid until the next call).
   const PointGrid& smooth(const PointGrid& grid, const DepthNoise& noise);
 
  private:
+  VectorWidth width_;
   std::vector<float> rows_;  // three rows after the row pass
   std::vector<float> result_points_;
   PointGrid result_;

@@ -22,6 +22,19 @@
 #define FLOODPLANE_SIMD 0
 #endif
 
+// Eight-lane (AVX) loops, chosen at run time: Debian's PCL, and so the core, is built for
+// baseline x86-64, where SSE2 is all there is. Only functions marked FLOODPLANE_TARGET_AVX use
+// the eight-lane types, and they run only where cpuHasAvx() says so. AVX only, not AVX2 or
+// FMA: the loops need no integer lanes, and with FMA the compiler could fuse a multiply and
+// an add that the scalar code rounds apart.
+#if FLOODPLANE_SIMD && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define FLOODPLANE_AVX 1
+#define FLOODPLANE_TARGET_AVX __attribute__((target("avx")))
+#else
+#define FLOODPLANE_AVX 0
+#endif
+
 namespace floodplane {
 
 /// Asks the memory for the cache lines of [begin, end) ahead of their use (a hint, no effect on
@@ -47,6 +60,10 @@ bool simdEnabled();
 /// the start of each point, so a point must have at least four (PCL's point types do; a packed
 /// x y z grid does not, and is handled pixel by pixel).
 inline bool fourPixelsAtATime(const PointGrid& grid) { return FLOODPLANE_SIMD && grid.stride >= 4; }
+
+/// Whether this CPU (and its operating system) runs AVX instructions; false where the core has
+/// no eight-lane loops (FLOODPLANE_AVX == 0). Asked once.
+bool cpuHasAvx();
 
 #if FLOODPLANE_SIMD
 
@@ -205,6 +222,91 @@ class LaneSums {
 };
 
 #endif  // FLOODPLANE_SIMD
+
+#if FLOODPLANE_AVX
+
+/// The result of a comparison in eight lanes.
+struct Mask8 {
+  __m256 bits;
+};
+
+/// Eight floats: Float4's operations, each lane's the same IEEE operation.
+struct Float8 {
+  __m256 v;
+
+  FLOODPLANE_TARGET_AVX static Float8 broadcast(float x) { return {_mm256_set1_ps(x)}; }
+  FLOODPLANE_TARGET_AVX Float8 operator+(Float8 o) const { return {_mm256_add_ps(v, o.v)}; }
+  FLOODPLANE_TARGET_AVX Float8 operator-(Float8 o) const { return {_mm256_sub_ps(v, o.v)}; }
+  FLOODPLANE_TARGET_AVX Float8 operator*(Float8 o) const { return {_mm256_mul_ps(v, o.v)}; }
+  FLOODPLANE_TARGET_AVX Float8 operator/(Float8 o) const { return {_mm256_div_ps(v, o.v)}; }
+  FLOODPLANE_TARGET_AVX Float8 abs() const { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v)}; }
+  /// a < b, false where either is NaN.
+  FLOODPLANE_TARGET_AVX Mask8 operator<(Float8 o) const { return {_mm256_cmp_ps(v, o.v, _CMP_LT_OQ)}; }
+  /// a <= b, false where either is NaN.
+  FLOODPLANE_TARGET_AVX Mask8 operator<=(Float8 o) const { return {_mm256_cmp_ps(v, o.v, _CMP_LE_OQ)}; }
+  /// mask ? a : b lane by lane. (Not BLENDVPS: GCC 12 rewrites it as a comparison of the
+  /// mask's sign bits, which AVX has no eight-lane integer instruction for, and goes lane by lane.)
+  FLOODPLANE_TARGET_AVX static Float8 select(Mask8 mask, Float8 a, Float8 b) {
+    return {_mm256_or_ps(_mm256_and_ps(mask.bits, a.v), _mm256_andnot_ps(mask.bits, b.v))};
+  }
+};
+
+/// scaledSigma for four lanes, in double.
+FLOODPLANE_TARGET_AVX inline __m128 scaledSigmaInDouble(const DepthNoise& noise, double factor, __m128 range_sq) {
+  const __m256d sigma = _mm256_add_pd(_mm256_set1_pd(noise.constant),
+                                      _mm256_mul_pd(_mm256_set1_pd(noise.quadratic), _mm256_cvtps_pd(range_sq)));
+  return _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_set1_pd(factor), sigma));
+}
+
+/// scaledSigma in eight lanes: the noise in double, four lanes at a time.
+FLOODPLANE_TARGET_AVX inline Float8 scaledSigma(const DepthNoise& noise, double factor, Float8 range_sq) {
+  const __m128 low = scaledSigmaInDouble(noise, factor, _mm256_castps256_ps128(range_sq.v));
+  const __m128 high = scaledSigmaInDouble(noise, factor, _mm256_extractf128_ps(range_sq.v, 1));
+  return {_mm256_insertf128_ps(_mm256_castps128_ps256(low), high, 1)};
+}
+
+/// Eight points as x, y, z across lanes: lanes 0-3 hold points 0-3, lanes 4-7 points 4-7.
+struct PointLanes8 {
+  Float8 x, y, z;
+
+  /// Points first, first + stride, ..., first + 7 stride (floats), of which four floats each
+  /// are readable (x, y, z, anything).
+  FLOODPLANE_TARGET_AVX static PointLanes8 load(const float* first, std::size_t stride) {
+    const __m256 a = loadPair(first, stride, 0), b = loadPair(first, stride, 1), c = loadPair(first, stride, 2),
+                 d = loadPair(first, stride, 3);
+    // _MM_TRANSPOSE4_PS in each half.
+    const __m256 ab_low = _mm256_unpacklo_ps(a, b), cd_low = _mm256_unpacklo_ps(c, d);
+    const __m256 ab_high = _mm256_unpackhi_ps(a, b), cd_high = _mm256_unpackhi_ps(c, d);
+    return {{_mm256_shuffle_ps(ab_low, cd_low, 0x44)},
+            {_mm256_shuffle_ps(ab_low, cd_low, 0xee)},
+            {_mm256_shuffle_ps(ab_high, cd_high, 0x44)}};
+  }
+
+  /// Stores the eight points as x y z 0, four floats each, from `out` on.
+  FLOODPLANE_TARGET_AVX void storePoints(float* out) const {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 xy_low = _mm256_unpacklo_ps(x.v, y.v), z0_low = _mm256_unpacklo_ps(z.v, zero);
+    const __m256 xy_high = _mm256_unpackhi_ps(x.v, y.v), z0_high = _mm256_unpackhi_ps(z.v, zero);
+    const __m256 p04 = _mm256_shuffle_ps(xy_low, z0_low, 0x44), p15 = _mm256_shuffle_ps(xy_low, z0_low, 0xee);
+    const __m256 p26 = _mm256_shuffle_ps(xy_high, z0_high, 0x44), p37 = _mm256_shuffle_ps(xy_high, z0_high, 0xee);
+    _mm256_storeu_ps(out, _mm256_permute2f128_ps(p04, p15, 0x20));       // points 0, 1
+    _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(p26, p37, 0x20));   // points 2, 3
+    _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(p04, p15, 0x31));  // points 4, 5
+    _mm256_storeu_ps(out + 24, _mm256_permute2f128_ps(p26, p37, 0x31));  // points 6, 7
+  }
+
+  /// Vec3::squaredNorm: (x x + y y) + z z.
+  FLOODPLANE_TARGET_AVX Float8 squaredNorm() const { return (x * x + y * y) + z * z; }
+
+ private:
+  // Points j (low half) and j + 4 (high half).
+  FLOODPLANE_TARGET_AVX static __m256 loadPair(const float* first, std::size_t stride, std::size_t j) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(first + j * stride)),
+                                _mm_loadu_ps(first + (j + 4) * stride), 1);
+  }
+};
+
+#endif  // FLOODPLANE_AVX
 
 /// Adds points first .. first + n - 1 of a grid to the sums: four at a time into vector
 /// accumulators where fourPixelsAtATime(grid), as PlaneSums::addRun otherwise and for the

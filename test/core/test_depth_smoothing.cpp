@@ -2,6 +2,7 @@
 // noise by about three on a surface, keeps a depth step's two sides apart and holes as holes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -94,32 +95,35 @@ TEST(DepthSmoothing, KeepsHolesAndAveragesOnlyTheReturnsAroundThem) {
   }
 }
 
-// Points with four floats (PCL's layout) are smoothed four at a time, packed x y z points one
-// at a time; both must give the same floats, bit for bit, at a step, around holes, at the
-// grid's edges and on a width that is no multiple of four.
-// Points with four floats (PCL's layout) are smoothed four at a time, packed x y z points one
-// at a time; both must give the same floats, bit for bit, at a step, around holes, at the
-// grid's edges, on widths that are no multiple of four and on grids of a row or a column.
-TEST(DepthSmoothing, SmoothingFourPointsAtATimeChangesNoBit) {
-  if (!simdEnabled()) GTEST_SKIP() << "built without SIMD (FLOODPLANE_SIMD=OFF): there is no four-point path";
+// Points with four floats (PCL's layout) are smoothed four (SSE2) or eight (AVX) at a time,
+// packed x y z points one at a time; all must give the same floats, bit for bit, at a step,
+// around holes, at the grid's edges, on widths that are no multiple of four or eight and on
+// grids of a row or a column.
+void expectSmoothingChangesNoBit(DepthSmoothing::VectorWidth vector_width) {
   test::ScenePlane board = test::frontalPlane(1.95, 2);
   board.contains = [](const Eigen::Vector3d& p) { return p.x() < 0.0; };
   DepthNoise noise;
   noise.constant = 0.001;
   noise.quadratic = 0.0007;
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (const auto& [width, height] : {std::pair{123, 37}, {1, 1}, {5, 1}, {1, 6}, {6, 2}, {9, 3}}) {
+  for (const auto& [width, height] :
+       {std::pair{123, 37}, {1, 1}, {5, 1}, {1, 6}, {6, 2}, {9, 3}, {10, 4}, {17, 5}, {24, 3}}) {
     RenderedGrid scene = test::render(test::kinectView(width, height), {board, test::frontalPlane(2.0, 1)}, 0.004, 5);
     const std::size_t n = scene.truth.size();
     for (const std::size_t hole : {std::size_t{0}, n / 2, n - 1}) {
       for (int k = 0; k < 3; ++k) scene.xyz[3 * hole + k] = nan;
     }
     scene.xyz[3 * (n / 3) + 2] = std::numeric_limits<float>::infinity();
+    // A patch of points on the plane x = -0, three rows high so that both passes see -0 around
+    // a point: the sums must start from +0 as the scalar code's do.
+    for (int y = std::max(0, height / 2 - 1); y <= std::min(height - 1, height / 2 + 1); ++y) {
+      for (int x = 0; x < std::min(width, 20); ++x) scene.xyz[3 * (static_cast<std::size_t>(y) * width + x)] = -0.0f;
+    }
     const std::vector<float> padded = scene.fourFloatPoints();
     const PointGrid four = scene.fourFloatGrid(padded);
-    DepthSmoothing by_point, by_four;
+    DepthSmoothing by_point, by_lanes(vector_width);
     const PointGrid& expected = by_point.smooth(scene.grid(), noise);
-    const PointGrid& actual = by_four.smooth(four, noise);
+    const PointGrid& actual = by_lanes.smooth(four, noise);
     ASSERT_EQ(actual.size(), expected.size());
     std::size_t smoothed = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -138,6 +142,16 @@ TEST(DepthSmoothing, SmoothingFourPointsAtATimeChangesNoBit) {
       EXPECT_GT(smoothed, n / 2);  // the comparison is of smoothed points
     }
   }
+}
+
+TEST(DepthSmoothing, SmoothingFourPointsAtATimeChangesNoBit) {
+  if (!simdEnabled()) GTEST_SKIP() << "built without SIMD (FLOODPLANE_SIMD=OFF): there is no four-point path";
+  expectSmoothingChangesNoBit(DepthSmoothing::VectorWidth::kSse2);
+}
+
+TEST(DepthSmoothing, SmoothingEightPointsAtATimeChangesNoBit) {
+  if (!cpuHasAvx()) GTEST_SKIP() << "no AVX on this CPU, or built without SIMD: there is no eight-point path";
+  expectSmoothingChangesNoBit(DepthSmoothing::VectorWidth::kWidest);
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+// The depth smoothing alone (depth_smoothing.h), four points at a time (SSE2) against the
+// widest loop the CPU runs (eight, AVX), on the real frames with the noise the segmenter
+// measures on each. The two give the same floats (DepthSmoothing tests); this is their speed.
+#include <benchmark/benchmark.h>
+
+#include "bench_frames.h"
+#include "depth_smoothing.h"
+#include "methods.h"
+#include "noise_estimation.h"
+#include "simd.h"
+
+namespace floodplane::bench {
+
+namespace {
+
+void runSmoothing(benchmark::State& state, const Frame& frame, DepthSmoothing::VectorWidth width) {
+  PointGrid grid;
+  grid.data = reinterpret_cast<const float*>(frame.cloud->data());
+  grid.width = static_cast<int>(frame.cloud->width);
+  grid.height = static_cast<int>(frame.cloud->height);
+  grid.stride = sizeof(pcl::PointXYZ) / sizeof(float);
+  NoiseEstimator estimator;
+  const DepthNoise noise = DepthNoise::of(estimator.estimate(grid));
+  DepthSmoothing smoothing(width);
+  for (auto _ : state) benchmark::DoNotOptimize(smoothing.smooth(grid, noise).data);
+}
+
+}  // namespace
+
+void registerSmoothing() {
+  for (const Frame& frame : realFrames()) {
+    const Frame* f = &frame;
+    benchmark::RegisterBenchmark(("smoothing/sse2/real:" + frame.name).c_str(), [f](benchmark::State& state) {
+      runSmoothing(state, *f, DepthSmoothing::VectorWidth::kSse2);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("smoothing/widest/real:" + frame.name).c_str(), [f](benchmark::State& state) {
+      if (!cpuHasAvx()) state.SkipWithError("no AVX on this CPU: the widest loop is the SSE2 one");
+      runSmoothing(state, *f, DepthSmoothing::VectorWidth::kWidest);
+    })->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace floodplane::bench
