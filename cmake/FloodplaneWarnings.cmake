@@ -13,9 +13,12 @@ endfunction()
 # Opt-in native code generation. Debian's PCL is built for baseline x86-64; mixing
 # -march=native objects with it changes Eigen's alignment and crashes at free(), so the
 # option also sets PCL_NO_PRECOMPILE to build PCL's templates with the same flags.
+# -ffp-contract=off: on a CPU with FMA the compiler would otherwise fuse a multiply and an add
+# in some loops and not in others, and the scalar, four- and eight-lane code (src/simd.h) would
+# no longer give the same floats, nor the same labels as the baseline build.
 function(floodplane_set_arch target)
   if(FLOODPLANE_NATIVE)
-    target_compile_options(${target} PRIVATE -march=native)
+    target_compile_options(${target} PRIVATE -march=native -ffp-contract=off)
     target_compile_definitions(${target} PUBLIC PCL_NO_PRECOMPILE)
   endif()
 endfunction()
