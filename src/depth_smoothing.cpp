@@ -49,11 +49,19 @@ inline void smoothPoint(const float* before, const float* centre, const float* a
 }
 
 #if FLOODPLANE_SIMD
+// smoothPoint's sum of one coordinate, lane by lane: from +0, before (where used), centre,
+// after (where used). A neighbour left out is not added at all (adding a zero would turn a -0
+// sum into +0).
+inline Float4 gatedSum(Mask4 use_before, Mask4 use_after, Float4 before, Float4 centre, Float4 after) {
+  const Float4 zero = Float4::broadcast(0.f);
+  const Float4 with_before = Float4::select(use_before, zero + before, zero) + centre;
+  return Float4::select(use_after, with_before + after, with_before);
+}
+
 // smoothPoint for the four points from `centre` on, each with the point at the same place
 // from `before` and from `after` (all three `stride` floats a point), into `out` (four floats
 // a point). Every lane operation is smoothPoint's in its order, so each lane holds
-// smoothPoint's result bit for bit; a neighbour left out is not added at all (adding a zero
-// would turn a -0 sum into +0).
+// smoothPoint's result bit for bit.
 void smoothFour(const float* before_points, const float* centre, const float* after_points, std::size_t stride,
                 float* out, const DepthNoise& noise) {
   const auto points = [stride](const float* first) {
@@ -64,25 +72,21 @@ void smoothFour(const float* before_points, const float* centre, const float* af
   const Mask4 use_before = (before.z - c.z).abs() <= gate;
   const Mask4 use_after = (after.z - c.z).abs() <= gate;
   const Float4 zero = Float4::broadcast(0.f), one = Float4::broadcast(1.f);
-  const auto sum = [&](Float4 b, Float4 centre_lane, Float4 a) {
-    const Float4 with_before = Float4::select(use_before, zero + b, zero) + centre_lane;
-    return Float4::select(use_after, with_before + a, with_before);
-  };
   const Float4 count = (one + Float4::select(use_before, one, zero)) + Float4::select(use_after, one, zero);
   const Float4 inverse = one / count;
   // smoothPoint's early return: a centre without a finite depth stays a hole.
   const Mask4 finite = c.z.abs() < Float4::broadcast(std::numeric_limits<float>::infinity());
   const Float4 nan = Float4::broadcast(std::numeric_limits<float>::quiet_NaN());
   PointLanes result;
-  result.x = Float4::select(finite, sum(before.x, c.x, after.x) * inverse, nan);
-  result.y = Float4::select(finite, sum(before.y, c.y, after.y) * inverse, nan);
-  result.z = Float4::select(finite, sum(before.z, c.z, after.z) * inverse, nan);
+  result.x = Float4::select(finite, gatedSum(use_before, use_after, before.x, c.x, after.x) * inverse, nan);
+  result.y = Float4::select(finite, gatedSum(use_before, use_after, before.y, c.y, after.y) * inverse, nan);
+  result.z = Float4::select(finite, gatedSum(use_before, use_after, before.z, c.z, after.z) * inverse, nan);
   result.storePoints(out);
 }
 #endif
 
 #if FLOODPLANE_AVX
-// smoothFour's sum in eight lanes.
+// gatedSum in eight lanes.
 FLOODPLANE_TARGET_AVX inline Float8 gatedSum(Mask8 use_before, Mask8 use_after, Float8 before, Float8 centre,
                                              Float8 after) {
   const Float8 zero = Float8::broadcast(0.f);
