@@ -36,7 +36,6 @@ class PlanarityTest {
   struct Sums {
     double moments[17] = {};  // the distinct entries of sum m m^T, m = (1, u, v, u^2, uv, v^2), but the count
     double rhs[6] = {};       // sum m w
-    double ww = 0.0;          // sum w^2
     double count = 0.0;
   };
   // Plane k's quadratic fit: the sum of squares it explains beyond the plane, and its larger
@@ -83,7 +82,6 @@ inline void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
   s.rhs[3] += uu * w;
   s.rhs[4] += uv * w;
   s.rhs[5] += vv * w;
-  s.ww += w * w;
   s.count += 1.0;
 }
 

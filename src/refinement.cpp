@@ -2,7 +2,6 @@
 
 #include <limits>
 
-#include "row_search.h"
 #include "simd.h"
 
 namespace floodplane {
@@ -37,8 +36,11 @@ class Refiner {
       }
       if (renumber_first && y + 1 < height_) renumberRow(y + 1);
       const std::uint32_t* row = labels_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
-      for (int x = findInRow(row, 0, width_ - 1, 0u, true); x < width_;
-           x = findInRow(row, x + 1, width_ - 1, 0u, true)) {
+      // A missing row above or below is the row itself: its unlabelled pixels add no label.
+      const std::uint32_t* above = y > 0 ? row - width_ : row;
+      const std::uint32_t* below = y + 1 < height_ ? row + width_ : row;
+      for (int x = nextSeedCandidate(row, above, below, 0); x < width_;
+           x = nextSeedCandidate(row, above, below, x + 1)) {
         seedPixel(x, y);
       }
     }
@@ -66,15 +68,38 @@ class Refiner {
     planes_.renumberPixels(labels_, row_start, row_start + static_cast<std::size_t>(width_));
   }
 
-  // The unlabelled pixel (x, y) joins the neighbouring plane it fits best, if any.
+  // The first pixel from x on in a row that is unlabelled and has a labelled 4-neighbour
+  // (`above` and `below` as in unlabelledNextToLabelled); width_ if there is none. Only such
+  // pixels can be seeds, and most unlabelled pixels (holes, clutter) have no labelled
+  // neighbour at all. Labels are read as they are when the pixel's turn comes: a seed labels
+  // its pixel, which is the left neighbour of the next.
+  int nextSeedCandidate(const std::uint32_t* row, const std::uint32_t* above, const std::uint32_t* below, int x) const {
+    while (x < width_) {
+#if FLOODPLANE_SIMD
+      // Four pixels at once away from the row's ends (their left and right neighbours exist).
+      if (x > 0 && x + 4 < width_) {
+        const int candidates = unlabelledNextToLabelled(row + x, above + x, below + x);
+        if (candidates == 0) {
+          x += 4;
+          continue;
+        }
+        return x + __builtin_ctz(static_cast<unsigned>(candidates));
+      }
+#endif
+      const std::uint32_t left = x > 0 ? row[x - 1] : 0u, right = x + 1 < width_ ? row[x + 1] : 0u;
+      if (row[x] == 0 && (left | right | above[x] | below[x]) != 0) return x;
+      ++x;
+    }
+    return width_;
+  }
+
+  // The unlabelled pixel (x, y), which has a labelled neighbour (nextSeedCandidate), joins the
+  // neighbouring plane it fits best, if any.
   void seedPixel(int x, int y) {
     const std::size_t width = static_cast<std::size_t>(width_);
     const std::size_t i = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
     const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < width_ ? i + 1 : i, y > 0 ? i - width : i,
                                        y + 1 < height_ ? i + width : i};
-    // Most unlabelled pixels (holes, clutter) have no labelled neighbour at all.
-    if ((labels_[neighbours[0]] | labels_[neighbours[1]] | labels_[neighbours[2]] | labels_[neighbours[3]]) == 0)
-      return;
     std::uint32_t best = 0;
     float best_distance = std::numeric_limits<float>::infinity();
     for (const std::size_t j : neighbours) {

@@ -142,6 +142,18 @@ bool anyLabelDiffers(const Label* labels, Label value) {
   return _mm_movemask_epi8(_mm_cmpeq_epi32(block, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0xffff;
 }
 
+/// Which of the four labels from `row` on are 0 with a label other than 0 among their four
+/// neighbours: row[-1 .. 4], `above` and `below` (the same columns of the rows around; pass
+/// `row` itself for a row that is not there). Bit j for label j.
+inline int unlabelledNextToLabelled(const std::uint32_t* row, const std::uint32_t* above, const std::uint32_t* below) {
+  const auto load = [](const std::uint32_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i neighbours =
+      _mm_or_si128(_mm_or_si128(load(row - 1), load(row + 1)), _mm_or_si128(load(above), load(below)));
+  const __m128i candidates = _mm_andnot_si128(_mm_cmpeq_epi32(neighbours, zero), _mm_cmpeq_epi32(load(row), zero));
+  return _mm_movemask_ps(_mm_castsi128_ps(candidates));
+}
+
 /// Four points of a grid, x y z across the lanes.
 struct PointLanes {
   Float4 x, y, z;

@@ -62,5 +62,28 @@ TEST(RowSearch, WorksForUnsignedLabels) {
   EXPECT_EQ(findInRow(row.data(), 5, 6, 0u, false), 6);
 }
 
+TEST(RowSearch, FindsUnlabelledPixelsNextToLabelledOnesAsPixelByPixel) {
+#if FLOODPLANE_SIMD
+  // Every pattern of zero and non-zero labels over the four pixels, their left and right
+  // neighbours and the four above and below (14 labels), with non-zero labels that differ in
+  // sign and size; against the definition, pixel by pixel.
+  const std::uint32_t nonzero[] = {1u, 0x80000000u, 0xffffffffu, 12345u};
+  for (unsigned pattern = 0; pattern < (1u << 14); ++pattern) {
+    const auto label = [&](int bit) { return (pattern >> bit) & 1u ? nonzero[(pattern + bit) % 4] : 0u; };
+    std::uint32_t row[6], above[4], below[4];  // row[1 .. 4] are the four pixels
+    for (int j = 0; j < 6; ++j) row[j] = label(j);
+    for (int j = 0; j < 4; ++j) above[j] = label(6 + j), below[j] = label(10 + j);
+    int expected = 0;
+    for (int j = 0; j < 4; ++j) {
+      const std::uint32_t* p = row + 1 + j;
+      if (*p == 0 && (p[-1] | p[1] | above[j] | below[j]) != 0) expected |= 1 << j;
+    }
+    ASSERT_EQ(unlabelledNextToLabelled(row + 1, above, below), expected) << pattern;
+  }
+#else
+  GTEST_SKIP() << "built without SIMD: there is no four-at-a-time search to compare";
+#endif
+}
+
 }  // namespace
 }  // namespace floodplane
