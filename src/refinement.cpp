@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "row_search.h"
 #include "simd.h"
 
 namespace floodplane {
@@ -36,11 +37,12 @@ class Refiner {
       }
       if (renumber_first && y + 1 < height_) renumberRow(y + 1);
       const std::uint32_t* row = labels_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
-      // A missing row above or below is the row itself: its unlabelled pixels add no label.
       const std::uint32_t* above = y > 0 ? row - width_ : row;
       const std::uint32_t* below = y + 1 < height_ ? row + width_ : row;
-      for (int x = nextSeedCandidate(row, above, below, 0); x < width_;
-           x = nextSeedCandidate(row, above, below, x + 1)) {
+      // Only an unlabelled pixel next to a labelled one can be a seed. The search starts
+      // again after each: a seed labels its pixel, the left neighbour of the next.
+      for (int x = findUnlabelledNextToLabelled(row, above, below, 0, width_); x < width_;
+           x = findUnlabelledNextToLabelled(row, above, below, x + 1, width_)) {
         seedPixel(x, y);
       }
     }
@@ -68,33 +70,8 @@ class Refiner {
     planes_.renumberPixels(labels_, row_start, row_start + static_cast<std::size_t>(width_));
   }
 
-  // The first pixel from x on in a row that is unlabelled and has a labelled 4-neighbour
-  // (`above` and `below` as in unlabelledNextToLabelled); width_ if there is none. Only such
-  // pixels can be seeds, and most unlabelled pixels (holes, clutter) have no labelled
-  // neighbour at all. Labels are read as they are when the pixel's turn comes: a seed labels
-  // its pixel, which is the left neighbour of the next.
-  int nextSeedCandidate(const std::uint32_t* row, const std::uint32_t* above, const std::uint32_t* below, int x) const {
-    while (x < width_) {
-#if FLOODPLANE_SIMD
-      // Four pixels at once away from the row's ends (their left and right neighbours exist).
-      if (x > 0 && x + 4 < width_) {
-        const int candidates = unlabelledNextToLabelled(row + x, above + x, below + x);
-        if (candidates == 0) {
-          x += 4;
-          continue;
-        }
-        return x + __builtin_ctz(static_cast<unsigned>(candidates));
-      }
-#endif
-      const std::uint32_t left = x > 0 ? row[x - 1] : 0u, right = x + 1 < width_ ? row[x + 1] : 0u;
-      if (row[x] == 0 && (left | right | above[x] | below[x]) != 0) return x;
-      ++x;
-    }
-    return width_;
-  }
-
-  // The unlabelled pixel (x, y), which has a labelled neighbour (nextSeedCandidate), joins the
-  // neighbouring plane it fits best, if any.
+  // The unlabelled pixel (x, y), which has a labelled neighbour, joins the neighbouring plane
+  // it fits best, if any.
   void seedPixel(int x, int y) {
     const std::size_t width = static_cast<std::size_t>(width_);
     const std::size_t i = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);

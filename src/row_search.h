@@ -26,6 +26,30 @@ int findInRow(const Label* row, int x, int x_end, Label label, bool equal) {
   return x;
 }
 
+/// The first x in [x, width) of a row of labels (0: unlabelled) where the label is 0 and that
+/// of a 4-neighbour is not: row[x - 1] and row[x + 1] (none beyond the row's ends), above[x]
+/// and below[x] (pass `row` itself for a row the image does not have); `width` if there is
+/// none. Four pixels at a time where SIMD is there: most unlabelled pixels of a frame (holes,
+/// clutter, far walls) have no labelled neighbour.
+inline int findUnlabelledNextToLabelled(const std::uint32_t* row, const std::uint32_t* above,
+                                        const std::uint32_t* below, int x, int width) {
+  while (x < width) {
+#if FLOODPLANE_SIMD
+    // Away from the row's ends, where the left and right neighbours of all four exist.
+    if (x > 0 && x + 4 < width) {
+      const int found = unlabelledNextToLabelled(row + x, above + x, below + x);
+      if (found != 0) return x + __builtin_ctz(static_cast<unsigned>(found));
+      x += 4;
+      continue;
+    }
+#endif
+    const std::uint32_t left = x > 0 ? row[x - 1] : 0u, right = x + 1 < width ? row[x + 1] : 0u;
+    if (row[x] == 0 && (left | right | above[x] | below[x]) != 0) return x;
+    ++x;
+  }
+  return width;
+}
+
 /// Calls f(label, begin, end) for every maximal run [begin, end) of one label in
 /// row[x_begin .. x_last], left to right. The passes over a label image go run by run: it is
 /// mostly long runs of one label, so their work is one lookup a run.

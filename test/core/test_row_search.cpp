@@ -1,7 +1,9 @@
-// findInRow: the label scans' four-at-a-time search must find what a pixel-by-pixel loop
-// finds, wherever in a block the answer lies and however the row ends.
+// findInRow and findUnlabelledNextToLabelled: the label scans' four-at-a-time searches must
+// find what a pixel-by-pixel loop finds, wherever in a block the answer lies and however the
+// row ends.
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -83,6 +85,42 @@ TEST(RowSearch, FindsUnlabelledPixelsNextToLabelledOnesAsPixelByPixel) {
 #else
   GTEST_SKIP() << "built without SIMD: there is no four-at-a-time search to compare";
 #endif
+}
+
+// The definition of findUnlabelledNextToLabelled, pixel by pixel.
+int unlabelledNextToLabelledPixelByPixel(const std::vector<std::uint32_t>& row, const std::uint32_t* above,
+                                         const std::uint32_t* below, int x, int width) {
+  for (; x < width; ++x) {
+    const std::size_t i = static_cast<std::size_t>(x);
+    const std::uint32_t left = x > 0 ? row[i - 1] : 0u, right = x + 1 < width ? row[i + 1] : 0u;
+    if (row[i] == 0 && (left | right | above[i] | below[i]) != 0) return x;
+  }
+  return width;
+}
+
+TEST(RowSearch, FindsUnlabelledPixelsNextToLabelledOnesFromEveryStart) {
+  // Random rows of every width up to 21 and a frame's, sparsely to densely labelled, with rows
+  // above and below or without (the row itself passed instead); from every start.
+  std::mt19937 rng(17);
+  for (const double labelled : {0.05, 0.3, 0.7, 0.95}) {
+    std::bernoulli_distribution is_labelled(labelled);
+    for (int width = 1; width <= 22; ++width) {
+      const int w = width == 22 ? 640 : width;
+      for (int trial = 0; trial < 20; ++trial) {
+        std::vector<std::uint32_t> rows[3];
+        for (auto& r : rows) {
+          r.resize(static_cast<std::size_t>(w));
+          for (auto& label : r) label = is_labelled(rng) ? 1u + static_cast<std::uint32_t>(rng() % 3u) : 0u;
+        }
+        const std::uint32_t* above = trial % 3 == 0 ? rows[1].data() : rows[0].data();
+        const std::uint32_t* below = trial % 4 == 0 ? rows[1].data() : rows[2].data();
+        for (int x = 0; x <= w; ++x)
+          ASSERT_EQ(findUnlabelledNextToLabelled(rows[1].data(), above, below, x, w),
+                    unlabelledNextToLabelledPixelByPixel(rows[1], above, below, x, w))
+              << "width " << w << ", start " << x << ", labelled " << labelled;
+      }
+    }
+  }
 }
 
 }  // namespace
