@@ -104,8 +104,9 @@ TEST(RowSearch, FindsUnlabelledPixelsNextToLabelledOnesFromEveryStart) {
   std::mt19937 rng(17);
   for (const double labelled : {0.05, 0.3, 0.7, 0.95}) {
     std::bernoulli_distribution is_labelled(labelled);
-    for (int width = 1; width <= 22; ++width) {
-      const int w = width == 22 ? 640 : width;
+    std::vector<int> widths = {640};
+    for (int w = 1; w <= 21; ++w) widths.push_back(w);
+    for (const int w : widths) {
       for (int trial = 0; trial < 20; ++trial) {
         std::vector<std::uint32_t> rows[3];
         for (auto& r : rows) {
