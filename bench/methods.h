@@ -15,5 +15,7 @@ void registerOmps();
 void registerSoak();
 /// The depth smoothing alone, four points at a time and as wide as the CPU runs.
 void registerSmoothing();
+/// One pass that reads every point and writes a label: the floor under any segmentation.
+void registerMemoryFloor();
 
 }  // namespace floodplane::bench
