@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerOmps();
   floodplane::bench::registerSoak();
   floodplane::bench::registerSmoothing();
+  floodplane::bench::registerNoiseEstimation();
   floodplane::bench::registerMemoryFloor();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -15,6 +15,8 @@ void registerOmps();
 void registerSoak();
 /// The depth smoothing alone, four points at a time and as wide as the CPU runs.
 void registerSmoothing();
+/// The noise estimation alone: a fixed cost per call, whatever the frame's size.
+void registerNoiseEstimation();
 /// One pass that reads every point and writes a label: the floor under any segmentation.
 void registerMemoryFloor();
 
