@@ -36,6 +36,15 @@ const std::vector<Frame>& realFrames() {
   return frames;
 }
 
+PointGrid gridOf(const Frame& frame) {
+  PointGrid grid;
+  grid.data = reinterpret_cast<const float*>(frame.cloud->data());
+  grid.width = static_cast<int>(frame.cloud->width);
+  grid.height = static_cast<int>(frame.cloud->height);
+  grid.stride = sizeof(pcl::PointXYZ) / sizeof(float);
+  return grid;
+}
+
 const std::vector<std::string>& sceneNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> stems;

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/point_grid.h"
+
 namespace floodplane::bench {
 
 struct Frame {
@@ -31,6 +33,9 @@ inline FrameSource real(const Frame& frame) {
 inline FrameSource rendered(const std::string& scene, int width, int height) {
   return [=]() -> const Frame& { return renderedFrame(scene, width, height); };
 }
+
+/// The core's view of a frame's points (no copy), for the benchmarks of single stages.
+PointGrid gridOf(const Frame& frame);
 
 /// The stems of data/scenes/*.json, sorted.
 const std::vector<std::string>& sceneNames();

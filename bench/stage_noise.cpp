@@ -12,11 +12,7 @@ namespace floodplane::bench {
 namespace {
 
 void runNoiseEstimation(benchmark::State& state, const Frame& frame) {
-  PointGrid grid;
-  grid.data = reinterpret_cast<const float*>(frame.cloud->data());
-  grid.width = static_cast<int>(frame.cloud->width);
-  grid.height = static_cast<int>(frame.cloud->height);
-  grid.stride = sizeof(pcl::PointXYZ) / sizeof(float);
+  const PointGrid grid = gridOf(frame);
   NoiseEstimator estimator;
   NoiseModel model;
   for (auto _ : state) {

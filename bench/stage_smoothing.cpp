@@ -14,11 +14,7 @@ namespace floodplane::bench {
 namespace {
 
 void runSmoothing(benchmark::State& state, const Frame& frame, DepthSmoothing::VectorWidth width) {
-  PointGrid grid;
-  grid.data = reinterpret_cast<const float*>(frame.cloud->data());
-  grid.width = static_cast<int>(frame.cloud->width);
-  grid.height = static_cast<int>(frame.cloud->height);
-  grid.stride = sizeof(pcl::PointXYZ) / sizeof(float);
+  const PointGrid grid = gridOf(frame);
   NoiseEstimator estimator;
   const DepthNoise noise = DepthNoise::of(estimator.estimate(grid));
   DepthSmoothing smoothing(width);
