@@ -46,10 +46,14 @@ def run(binary, min_time, save):
     if save:
         # Written whole or not at all: a temporary beside the target, then renamed.
         save = pathlib.Path(save)
-        fd, partial = tempfile.mkstemp(dir=save.parent or ".", prefix=save.name, suffix=".partial")
-        with os.fdopen(fd, "w") as f:
-            f.write(text)
-        os.replace(partial, save)
+        fd, partial = tempfile.mkstemp(dir=save.parent, prefix=save.name, suffix=".partial")
+        try:
+            with os.fdopen(fd, "w") as f:
+                f.write(text)
+            os.replace(partial, save)
+        except OSError as error:
+            pathlib.Path(partial).unlink(missing_ok=True)
+            sys.exit(f"targets.py: cannot write {save}: {error}")
     return json.loads(text)
 
 
@@ -149,7 +153,10 @@ def main():
             results = json.loads(pathlib.Path(args.json).read_text())
         except (OSError, ValueError) as error:
             sys.exit(f"targets.py: cannot read {args.json}: {error}")
-        report(results, args.json)
+        try:
+            report(results, args.json)
+        except (KeyError, TypeError, AttributeError) as error:
+            sys.exit(f"targets.py: {args.json} is not a JSON run of bench_segmentation (no {error})")
     else:
         if not pathlib.Path(args.binary).is_file():
             parser.error(f"{args.binary} does not exist (build with -DFLOODPLANE_BUILD_BENCHMARKS=ON)")

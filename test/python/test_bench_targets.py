@@ -86,3 +86,11 @@ def test_a_run_without_the_real_frames_is_an_error(tmp_path):
     done = table(tmp_path, data)
     assert done.returncode != 0
     assert "floodplane/s1/real" in done.stderr
+
+
+@pytest.mark.parametrize("data", [[1, 2], {"benchmarks": [{"name": "floor/cold"}]}])
+def test_a_file_that_is_not_a_run_is_an_error(tmp_path, data):
+    done = table(tmp_path, data)
+    assert done.returncode != 0
+    assert "not a JSON run of bench_segmentation" in done.stderr
+    assert "Traceback" not in done.stderr
