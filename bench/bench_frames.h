@@ -6,7 +6,9 @@
 #include <pcl/point_types.h>
 
 #include <functional>
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "floodplane/point_grid.h"
@@ -33,6 +35,11 @@ inline FrameSource real(const Frame& frame) {
 inline FrameSource rendered(const std::string& scene, int width, int height) {
   return [=]() -> const Frame& { return renderedFrame(scene, width, height); };
 }
+
+/// The frame sizes (width, height) of the size series (floodplane/s1/size, noise/size): cost
+/// linear in the pixel count, issue 16; bench/targets.py reads the same five.
+inline constexpr std::array<std::pair<int, int>, 5> kFrameSizes{
+    {{320, 240}, {640, 480}, {1280, 960}, {1920, 1080}, {3840, 2160}}};
 
 /// The core's view of a frame's points (no copy), for the benchmarks of single stages.
 PointGrid gridOf(const Frame& frame);

@@ -89,7 +89,7 @@ void registerFloodplane() {
   }
   for (const std::string& scene : sceneNames()) add("floodplane/s2/scene:" + scene, rendered(scene, 640, 480), 2);
   // Target 3: cost linear in the pixel count; 3840x2160 for the memory figure (issue 7).
-  for (const auto& [w, h] : {std::pair{320, 240}, {640, 480}, {1280, 960}, {1920, 1080}, {3840, 2160}}) {
+  for (const auto& [w, h] : kFrameSizes) {
     const std::string size = std::to_string(w) + "x" + std::to_string(h);
     add("floodplane/s1/size:" + size, rendered("boxes_on_floor", w, h), 1);
   }

@@ -32,7 +32,7 @@ void add(const std::string& name, FrameSource frame) {
 
 void registerNoiseEstimation() {
   for (const Frame& frame : realFrames()) add("noise/real:" + frame.name, real(frame));
-  for (const auto& [w, h] : {std::pair{320, 240}, {640, 480}, {1280, 960}, {1920, 1080}, {3840, 2160}})
+  for (const auto& [w, h] : kFrameSizes)
     add("noise/size:" + std::to_string(w) + "x" + std::to_string(h), rendered("boxes_on_floor", w, h));
 }
 

@@ -28,7 +28,12 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from bench_common import ROOT  # noqa: E402
 
 FILTER = r"^(floodplane/(s1|s2|phases)/real|omps/real|floodplane/s1/size|floor/)"
-SIZES = ["320x240", "640x480", "1280x960", "1920x1080", "3840x2160"]
+SIZES = ["320x240", "640x480", "1280x960", "1920x1080", "3840x2160"]  # kFrameSizes of bench_frames.h
+
+
+def megapixels(size):
+    width, height = size.split("x")
+    return int(width) * int(height) * 1e-6
 
 
 def run(binary, min_time, save):
@@ -85,20 +90,21 @@ def report(results, source):
     omps, phases = per_frame(entries, "omps/real:"), per_frame(entries, "floodplane/phases/real:")
     floor = per_frame(entries, "floor/real:")
     frames = sorted(s1)
-    missing = [what for what, table in (("floodplane/s1/real", s1), ("floodplane/s2/real", s2), ("omps/real", omps),
-                                         ("floodplane/phases/real", phases), ("floor/real", floor)) if not table]
+    # Every per-frame table has every frame of s = 1, so the figures below need no guards.
+    tables = {"floodplane/s1/real": s1, "floodplane/s2/real": s2, "omps/real": omps,
+              "floodplane/phases/real": phases, "floor/real": floor}
+    missing = [what for what, table in tables.items() if not table or any(f not in table for f in frames)]
     missing += [f"floodplane/s1/size:{size}" for size in SIZES if f"floodplane/s1/size:{size}" not in entries]
     if missing:
         sys.exit("targets.py: the run has no " + ", ".join(missing) + " (are the real frames there?)")
 
     t1 = [s1[f]["ms"] for f in frames]
-    t2 = [s2[f]["ms"] for f in frames if f in s2]
-    vs_omps = [omps[f]["ms"] / s1[f]["ms"] for f in frames if f in omps]
-    s2_faster = sum(1 for f in frames if f in s2 and s2[f]["ms"] < s1[f]["ms"])
-    per_mp = [entries[f"floodplane/s1/size:{size}"]["ms"] / (int(size.split("x")[0]) * int(size.split("x")[1]) * 1e-6)
-              for size in SIZES]
-    outside = [phases[f]["outside_ms"] / phases[f]["ms"] for f in frames if f in phases]
-    hot_floor = statistics.median(floor[f]["ms"] for f in frames if f in floor)
+    t2 = [s2[f]["ms"] for f in frames]
+    vs_omps = [omps[f]["ms"] / s1[f]["ms"] for f in frames]
+    s2_faster = sum(1 for f in frames if s2[f]["ms"] < s1[f]["ms"])
+    per_mp = [entries[f"floodplane/s1/size:{size}"]["ms"] / megapixels(size) for size in SIZES]
+    outside = [phases[f]["outside_ms"] / phases[f]["ms"] for f in frames]
+    hot_floor = statistics.median(floor[f]["ms"] for f in frames)
     cold_floor = entries["floor/cold"]["ms"] if "floor/cold" in entries else float("nan")
     med1 = statistics.median(t1)
 
@@ -130,11 +136,8 @@ def report(results, source):
     print("\n| frame | s = 1 ms | s = 2 ms | OMPS ms | OMPS / s = 1 | floor ms | outside phases ms |")
     print("|---|---:|---:|---:|---:|---:|---:|")
     for f in frames:
-        cells = [s1[f]["ms"], s2[f]["ms"] if f in s2 else float("nan"), omps[f]["ms"] if f in omps else float("nan")]
-        ratio = cells[2] / cells[0]
-        print(f"| {f} | {cells[0]:.2f} | {cells[1]:.2f} | {cells[2]:.2f} | {ratio:.2f}x | "
-              f"{floor[f]['ms'] if f in floor else float('nan'):.3f} | "
-              f"{phases[f]['outside_ms'] if f in phases else float('nan'):.4f} |")
+        print(f"| {f} | {s1[f]['ms']:.2f} | {s2[f]['ms']:.2f} | {omps[f]['ms']:.2f} | "
+              f"{omps[f]['ms'] / s1[f]['ms']:.2f}x | {floor[f]['ms']:.3f} | {phases[f]['outside_ms']:.4f} |")
 
 
 def main():
