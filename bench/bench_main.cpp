@@ -12,7 +12,8 @@
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
-  std::cout << "floodplane " << FLOODPLANE_VERSION_STRING << ", PCL " << PCL_VERSION_PRETTY << ", compiler " << __VERSION__
+  std::cout << "floodplane " << FLOODPLANE_VERSION_STRING << ", PCL " << PCL_VERSION_PRETTY << ", compiler "
+            << __VERSION__
 #ifdef NDEBUG
             << ", optimised build"
 #else

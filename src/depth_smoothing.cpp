@@ -119,8 +119,7 @@ FLOODPLANE_TARGET_AVX void smoothEight(const float* before_points, const float* 
 // The row pass over one row of `width` points (`stride` floats apart), neighbours left and
 // right, into `out` (four floats a point). The points that have both neighbours go up to
 // `lanes` (1, 4 or 8) at a time.
-void smoothAlongRow(const float* row, std::size_t stride, int width, int lanes, float* out,
-                    const DepthNoise& noise) {
+void smoothAlongRow(const float* row, std::size_t stride, int width, int lanes, float* out, const DepthNoise& noise) {
   int x = 0;
 #if FLOODPLANE_SIMD
   if (lanes >= 4 && width > 4) {

@@ -108,10 +108,10 @@ struct Segmenter::Workspace {
     frame.grid = sample(*frame.source, s);
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
-    fine_selector.configure(params, frame.tolerances,
-                            1.0 / (segment_noise.negligibleAgainstPixels(frame.full_pitch) ? kNoiseFreeFineSeedDivisor
-                                                                                           : kFineSeedDivisor),
-                            frame.pitch, frame.grid.width, frame.grid.height);
+    fine_selector.configure(
+        params, frame.tolerances,
+        1.0 / (segment_noise.negligibleAgainstPixels(frame.full_pitch) ? kNoiseFreeFineSeedDivisor : kFineSeedDivisor),
+        frame.pitch, frame.grid.width, frame.grid.height);
     buffer.reset(frame.grid.size());
     segments.assign(1, Segment());  // label 0: no segment
     edges.clear();

@@ -66,8 +66,7 @@ constexpr Glyph kGlyphs[] = {
 };
 
 const Glyph& glyphOf(char character) {
-  const char wanted =
-      static_cast<char>(std::toupper(static_cast<unsigned char>(character)));
+  const char wanted = static_cast<char>(std::toupper(static_cast<unsigned char>(character)));
   const Glyph* question = nullptr;
   for (const Glyph& glyph : kGlyphs) {
     if (glyph.character == wanted) {
@@ -87,8 +86,8 @@ std::size_t textWidth(const std::string& text, std::size_t scale) {
   return text.empty() ? 0 : (text.size() * kGlyphAdvance - 1) * scale;
 }
 
-void drawText(floodplane::io::RgbImage& image, std::size_t x, std::size_t y,
-              const std::string& text, std::size_t scale, std::array<std::uint8_t, 3> colour) {
+void drawText(floodplane::io::RgbImage& image, std::size_t x, std::size_t y, const std::string& text, std::size_t scale,
+              std::array<std::uint8_t, 3> colour) {
   for (std::size_t c = 0; c < text.size(); ++c) {
     const Glyph& glyph = glyphOf(text[c]);
     const std::size_t left = x + c * kGlyphAdvance * scale;

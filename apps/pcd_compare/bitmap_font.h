@@ -20,7 +20,7 @@ std::size_t textWidth(const std::string& text, std::size_t scale);
 /// Draws `text` with its top-left corner at (x, y), each font pixel a scale x scale block.
 /// The font has capitals, digits and - _ . , : / ( ) | % + = ?; lower-case letters are drawn
 /// as capitals and other characters as '?'. Pixels outside the image are clipped.
-void drawText(floodplane::io::RgbImage& image, std::size_t x, std::size_t y,
-              const std::string& text, std::size_t scale, std::array<std::uint8_t, 3> colour);
+void drawText(floodplane::io::RgbImage& image, std::size_t x, std::size_t y, const std::string& text, std::size_t scale,
+              std::array<std::uint8_t, 3> colour);
 
 }  // namespace pcd_compare

@@ -22,9 +22,9 @@ constexpr std::array<std::uint8_t, 3> kTitleColour = {0, 0, 0};
 
 }  // namespace
 
-std::vector<std::uint32_t> coloursMatchedToGroundTruth(
-    const std::vector<std::uint32_t>& predicted, const std::vector<std::uint32_t>& ground_truth,
-    const std::vector<std::uint8_t>& valid) {
+std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::uint32_t>& predicted,
+                                                       const std::vector<std::uint32_t>& ground_truth,
+                                                       const std::vector<std::uint8_t>& valid) {
   if (ground_truth.empty()) {
     return predicted;
   }
@@ -37,9 +37,8 @@ std::vector<std::uint32_t> coloursMatchedToGroundTruth(
   }
   std::map<std::uint32_t, std::uint32_t> colour_of;
   for (const auto& [segment, planes] : overlap) {
-    const auto best = std::max_element(
-        planes.begin(), planes.end(),
-        [](const auto& a, const auto& b) { return a.second < b.second; });
+    const auto best = std::max_element(planes.begin(), planes.end(),
+                                       [](const auto& a, const auto& b) { return a.second < b.second; });
     colour_of[segment] = best->first;
   }
   std::vector<std::uint32_t> colours(predicted.size(), 0);
@@ -53,8 +52,7 @@ std::vector<std::uint32_t> coloursMatchedToGroundTruth(
   return colours;
 }
 
-floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width,
-                                         std::size_t height) {
+floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width, std::size_t height) {
   if (panels.empty()) {
     throw std::invalid_argument("comparisonImage: no panels");
   }
@@ -73,8 +71,8 @@ floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, f
   const std::size_t height = images.front().second.height;
   for (const auto& [title, panel] : images) {
     if (panel.width != width || panel.height != height || panel.pixels.size() != width * height * 3) {
-      throw std::invalid_argument("titledImages: the image of '" + title + "' is not " + std::to_string(width) +
-                                  "x" + std::to_string(height));
+      throw std::invalid_argument("titledImages: the image of '" + title + "' is not " + std::to_string(width) + "x" +
+                                  std::to_string(height));
     }
   }
   const std::size_t strip = kGlyphHeight * kTitleScale + 2 * kTitleMargin;
@@ -90,8 +88,7 @@ floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, f
     const floodplane::io::RgbImage& panel = images[k].second;
     for (std::size_t y = 0; y < height; ++y) {
       std::copy_n(panel.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
-                  image.pixels.begin() +
-                      static_cast<std::ptrdiff_t>(((strip + y) * image.width + left) * 3));
+                  image.pixels.begin() + static_cast<std::ptrdiff_t>(((strip + y) * image.width + left) * 3));
     }
     // Titles too long for the panel are cut at the panel's edge by drawing into a copy
     // limited to the panel's width.

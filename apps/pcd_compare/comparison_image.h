@@ -27,13 +27,12 @@ struct Panel {
 /// no plane keep their own label, shifted past any plausible ground-truth label so that they
 /// do not borrow a plane's colour. Label 0 stays 0. Without ground truth (empty vector) the
 /// labels are returned as they are.
-std::vector<std::uint32_t> coloursMatchedToGroundTruth(
-    const std::vector<std::uint32_t>& predicted, const std::vector<std::uint32_t>& ground_truth,
-    const std::vector<std::uint8_t>& valid);
+std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::uint32_t>& predicted,
+                                                       const std::vector<std::uint32_t>& ground_truth,
+                                                       const std::vector<std::uint8_t>& valid);
 
 /// The panels side by side, each width x height with its title in a strip above.
-floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width,
-                                         std::size_t height);
+floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width, std::size_t height);
 
 /// Images of one size side by side, each with its title in a strip above (the layout of
 /// comparisonImage). Throws std::invalid_argument if there are none or their sizes differ.

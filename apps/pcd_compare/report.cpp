@@ -219,7 +219,6 @@ nlohmann::json resultJson(const SceneResult& scene, const MethodResult& result) 
   return json;
 }
 
-
 // The accuracy columns of a table row, from one scene's scores or from the means.
 struct AccuracyCells {
   double mean_iou = kNaN;

@@ -20,8 +20,8 @@ std::string asciiPcd(const pcl::PointCloud<PointT>& cloud) {
     int length = 0;
     if constexpr (std::is_same_v<PointT, pcl::PointXYZRGBL>) {
       // PointXYZRGBL's colour field is "rgba", an unsigned integer: written as one.
-      length = std::snprintf(line, sizeof(line), "%.9g %.9g %.9g %" PRIu32 " %" PRIu32 "\n", p.x, p.y,
-                             p.z, static_cast<std::uint32_t>(p.rgba), static_cast<std::uint32_t>(p.label));
+      length = std::snprintf(line, sizeof(line), "%.9g %.9g %.9g %" PRIu32 " %" PRIu32 "\n", p.x, p.y, p.z,
+                             static_cast<std::uint32_t>(p.rgba), static_cast<std::uint32_t>(p.label));
     } else {
       length = std::snprintf(line, sizeof(line), "%.9g %.9g %.9g %" PRIu32 "\n", p.x, p.y, p.z,
                              static_cast<std::uint32_t>(p.label));

@@ -5,8 +5,7 @@
 namespace pcd_segment {
 
 ProgressBar::ProgressBar(std::size_t total, bool enabled, std::FILE* stream)
-    : total_(total), enabled_(enabled && total > 0), stream_(stream),
-      start_(std::chrono::steady_clock::now()) {}
+    : total_(total), enabled_(enabled && total > 0), stream_(stream), start_(std::chrono::steady_clock::now()) {}
 
 void ProgressBar::show(std::size_t done) {
   if (!enabled_) return;
@@ -18,13 +17,11 @@ void ProgressBar::show(std::size_t done) {
   std::string left = "estimating time left";
   if (done > 0) {
     // The files so far predict the rest: batches are usually frames of one sensor.
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const double remaining = elapsed / static_cast<double>(done) * static_cast<double>(total_ - done);
     left = "about " + std::to_string(static_cast<long>(remaining + 0.5)) + " s left";
   }
-  std::fprintf(stream_, "\r\033[K[%s] %zu/%zu files, %s", bar.c_str(), done, total_,
-               left.c_str());
+  std::fprintf(stream_, "\r\033[K[%s] %zu/%zu files, %s", bar.c_str(), done, total_, left.c_str());
   std::fflush(stream_);
 }
 

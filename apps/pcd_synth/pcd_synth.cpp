@@ -253,7 +253,8 @@ int main(int argc, char** argv) {
                "<scene>.blocks.json");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
   if (const std::optional<int> done = floodplane::apps::parseCommandLine(app, argc, argv)) return *done;
-  if (const std::string problem = inconsistency(options); !problem.empty()) return floodplane::apps::usageError(app, problem);
+  if (const std::string problem = inconsistency(options); !problem.empty())
+    return floodplane::apps::usageError(app, problem);
   if (!options.sensor) {
     options.sensor = options.random_count ? "all" : "both";
   }

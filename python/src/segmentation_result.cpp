@@ -54,9 +54,10 @@ void bindPhaseTimes(py::module_& m) {
       .def_readonly("pcl_conversion", &PhaseTimes::pcl_conversion)
       .def_property_readonly("total", &PhaseTimes::total)
       .def("__repr__", [](const PhaseTimes& t) {
-        return "PhaseTimes(preparation=" + fixed(t.preparation, 3) + ", seed_selection=" + fixed(t.seed_selection, 3) + ", flood_fill=" + fixed(t.flood_fill, 3) +
-               ", relabelling=" + fixed(t.relabelling, 3) + ", merging=" + fixed(t.merging, 3) +
-               ", region_output=" + fixed(t.region_output, 3) + ", pcl_conversion=" + fixed(t.pcl_conversion, 3) + ")";
+        return "PhaseTimes(preparation=" + fixed(t.preparation, 3) + ", seed_selection=" + fixed(t.seed_selection, 3) +
+               ", flood_fill=" + fixed(t.flood_fill, 3) + ", relabelling=" + fixed(t.relabelling, 3) +
+               ", merging=" + fixed(t.merging, 3) + ", region_output=" + fixed(t.region_output, 3) +
+               ", pcl_conversion=" + fixed(t.pcl_conversion, 3) + ")";
       });
 }
 

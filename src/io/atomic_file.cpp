@@ -24,8 +24,8 @@ std::string createTemporaryNextTo(const std::string& path) {
   const std::filesystem::path target(path);
   const std::filesystem::path directory = target.parent_path();
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const std::string name = "." + target.filename().string() + ".tmp." +
-                             std::to_string(::getpid()) + "." + std::to_string(counter++);
+    const std::string name =
+        "." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
     const std::string temporary = (directory / name).string();
     // 0666 and the process umask give the final file the permissions an ordinary write would.
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -42,8 +42,7 @@ std::string createTemporaryNextTo(const std::string& path) {
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path,
-                         const std::function<void(const std::string& temporary_path)>& write) {
+void writeFileAtomically(const std::string& path, const std::function<void(const std::string& temporary_path)>& write) {
   if (path.empty()) {
     throw std::invalid_argument("writeFileAtomically: empty path");
   }

@@ -14,8 +14,7 @@ namespace floodplane::io {
 /// and the exception propagates (failures of this function are std::runtime_error naming
 /// `path`). No fsync: the goal is that no partial file ever appears under `path` after a
 /// failed write, not durability across a power loss.
-void writeFileAtomically(const std::string& path,
-                         const std::function<void(const std::string& temporary_path)>& write);
+void writeFileAtomically(const std::string& path, const std::function<void(const std::string& temporary_path)>& write);
 
 /// Writes `bytes` to `path` atomically (see writeFileAtomically).
 void writeBytesAtomically(const std::string& path, std::string_view bytes);

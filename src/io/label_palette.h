@@ -20,7 +20,6 @@ std::array<std::uint8_t, 3> labelColor(std::uint32_t label);
 
 /// Colours a row-major label grid. Throws std::invalid_argument if `labels` does not hold
 /// width * height entries.
-RgbImage labelImage(const std::vector<std::uint32_t>& labels, std::size_t width,
-                    std::size_t height);
+RgbImage labelImage(const std::vector<std::uint32_t>& labels, std::size_t width, std::size_t height);
 
 }  // namespace floodplane::io

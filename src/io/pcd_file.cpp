@@ -9,8 +9,7 @@
 namespace floodplane::io {
 
 template <typename PointT>
-void savePcd(const std::string& path, const pcl::PointCloud<PointT>& cloud,
-             PcdEncoding encoding) {
+void savePcd(const std::string& path, const pcl::PointCloud<PointT>& cloud, PcdEncoding encoding) {
   writeFileAtomically(path, [&](const std::string& temporary) {
     pcl::PCDWriter writer;
     int status = -1;
@@ -38,9 +37,8 @@ void savePcd(const std::string& path, const pcl::PointCloud<PointT>& cloud,
   });
 }
 
-#define FLOODPLANE_INSTANTIATE_SAVE_PCD(PointT)                                      \
-  template void savePcd<PointT>(const std::string&, const pcl::PointCloud<PointT>&, \
-                                PcdEncoding);
+#define FLOODPLANE_INSTANTIATE_SAVE_PCD(PointT) \
+  template void savePcd<PointT>(const std::string&, const pcl::PointCloud<PointT>&, PcdEncoding);
 FLOODPLANE_INSTANTIATE_SAVE_PCD(pcl::PointXYZ)
 FLOODPLANE_INSTANTIATE_SAVE_PCD(pcl::PointXYZI)
 FLOODPLANE_INSTANTIATE_SAVE_PCD(pcl::PointXYZL)

@@ -11,15 +11,13 @@ namespace floodplane::io {
 
 void writePng(const std::string& path, const RgbImage& image) {
   constexpr std::size_t max_side = std::numeric_limits<png_uint_32>::max() / 3;
-  if (image.width == 0 || image.height == 0 || image.width > max_side ||
-      image.height > max_side) {
+  if (image.width == 0 || image.height == 0 || image.width > max_side || image.height > max_side) {
     throw std::invalid_argument("writePng: image size " + std::to_string(image.width) + "x" +
                                 std::to_string(image.height) + " is not writable");
   }
   if (image.pixels.size() != image.width * image.height * 3) {
-    throw std::invalid_argument("writePng: pixel buffer holds " +
-                                std::to_string(image.pixels.size()) + " bytes, expected " +
-                                std::to_string(image.width * image.height * 3));
+    throw std::invalid_argument("writePng: pixel buffer holds " + std::to_string(image.pixels.size()) +
+                                " bytes, expected " + std::to_string(image.width * image.height * 3));
   }
   writePngPixels(path, static_cast<unsigned>(image.width), static_cast<unsigned>(image.height), PNG_FORMAT_RGB,
                  image.pixels.data());

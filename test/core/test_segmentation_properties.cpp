@@ -35,7 +35,6 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // ---- helpers -------------------------------------------------------------------------------
 
-
 Cloud::Ptr toCloud(const std::vector<float>& xyz, int width, int height) {
   Cloud::Ptr cloud(new Cloud);
   cloud->resize(static_cast<pcl::uindex_t>(width), static_cast<pcl::uindex_t>(height));

@@ -116,12 +116,10 @@ TEST(SegmenterSurfaces, CoplanarTablesWithTheFloorBetweenThemAreTwoPlanes) {
   // Two table tops at one height, 20 cm apart, 75 cm above the floor.
   const Eigen::Vector3d up(0.0, -1.0, 0.0);
   const ScenePlane floor = planeThrough({0.0, 1.2, 0.0}, up, 1, [](const Eigen::Vector3d&) { return true; });
-  const ScenePlane left_top = planeThrough({0.0, 0.45, 0.0}, up, 2, [](const Eigen::Vector3d& p) {
-    return p.x() > -0.9 && p.x() < -0.1 && p.z() < 2.5;
-  });
-  const ScenePlane right_top = planeThrough({0.0, 0.45, 0.0}, up, 3, [](const Eigen::Vector3d& p) {
-    return p.x() > 0.1 && p.x() < 0.9 && p.z() < 2.5;
-  });
+  const ScenePlane left_top = planeThrough(
+      {0.0, 0.45, 0.0}, up, 2, [](const Eigen::Vector3d& p) { return p.x() > -0.9 && p.x() < -0.1 && p.z() < 2.5; });
+  const ScenePlane right_top = planeThrough(
+      {0.0, 0.45, 0.0}, up, 3, [](const Eigen::Vector3d& p) { return p.x() > 0.1 && p.x() < 0.9 && p.z() < 2.5; });
   for (const bool noisy : {false, true}) {
     SCOPED_TRACE(sensorName(noisy));
     const RenderedGrid scene = test::render(camera(), {floor, left_top, right_top}, kinectNoise(noisy), 23);

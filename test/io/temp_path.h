@@ -13,8 +13,8 @@ namespace floodplane::test {
 
 inline std::filesystem::path uniqueTempPath(const std::string& extension) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = std::string("floodplane_") + info->test_suite_name() + "_" + info->name() +
-                     "_" + std::to_string(::getpid()) + extension;
+  std::string name = std::string("floodplane_") + info->test_suite_name() + "_" + info->name() + "_" +
+                     std::to_string(::getpid()) + extension;
   std::replace(name.begin(), name.end(), '/', '_');  // parameterized names contain '/'
   return std::filesystem::temp_directory_path() / name;
 }

@@ -59,12 +59,11 @@ TEST_F(AtomicFile, ReplacesAnExistingFile) {
 
 TEST_F(AtomicFile, LeavesNoPartialFileWhenTheWriterFails) {
   const fs::path target = directory_ / "out.pcd";
-  EXPECT_THROW(floodplane::io::writeFileAtomically(
-                   target.string(),
-                   [](const std::string& temporary) {
-                     std::ofstream(temporary) << "half a file";
-                     throw std::runtime_error("disk full");
-                   }),
+  EXPECT_THROW(floodplane::io::writeFileAtomically(target.string(),
+                                                   [](const std::string& temporary) {
+                                                     std::ofstream(temporary) << "half a file";
+                                                     throw std::runtime_error("disk full");
+                                                   }),
                std::runtime_error);
   EXPECT_TRUE(entries().empty());
 }
@@ -72,12 +71,11 @@ TEST_F(AtomicFile, LeavesNoPartialFileWhenTheWriterFails) {
 TEST_F(AtomicFile, KeepsThePreviousFileWhenTheWriterFails) {
   const fs::path target = directory_ / "out.txt";
   floodplane::io::writeBytesAtomically(target.string(), "complete");
-  EXPECT_THROW(floodplane::io::writeFileAtomically(
-                   target.string(),
-                   [](const std::string& temporary) {
-                     std::ofstream(temporary) << "trunc";
-                     throw std::runtime_error("interrupted");
-                   }),
+  EXPECT_THROW(floodplane::io::writeFileAtomically(target.string(),
+                                                   [](const std::string& temporary) {
+                                                     std::ofstream(temporary) << "trunc";
+                                                     throw std::runtime_error("interrupted");
+                                                   }),
                std::runtime_error);
   EXPECT_EQ(contents(target), "complete");
   EXPECT_EQ(entries(), std::vector<std::string>{"out.txt"});

@@ -41,9 +41,7 @@ TEST(LabelPalette, DrawsEveryPlaneLabelBright) {
   }
 }
 
-TEST(LabelPalette, KeepsTheFirstThirtyTwoLabelsClearlyDistinct) {
-  EXPECT_GE(minimumDistanceAmongFirst(32), 40.0);
-}
+TEST(LabelPalette, KeepsTheFirstThirtyTwoLabelsClearlyDistinct) { EXPECT_GE(minimumDistanceAmongFirst(32), 40.0); }
 
 TEST(LabelPalette, KeepsTheFirstHundredTwentyEightLabelsDistinguishable) {
   EXPECT_GE(minimumDistanceAmongFirst(128), 20.0);
@@ -70,8 +68,7 @@ TEST(LabelPalette, ColorsAGridPixelByPixelInRowMajorOrder) {
 }
 
 TEST(LabelPalette, RejectsAGridWhoseSizeDoesNotMatch) {
-  EXPECT_THROW(floodplane::io::labelImage(std::vector<std::uint32_t>(5), 3, 2),
-               std::invalid_argument);
+  EXPECT_THROW(floodplane::io::labelImage(std::vector<std::uint32_t>(5), 3, 2), std::invalid_argument);
 }
 
 }  // namespace

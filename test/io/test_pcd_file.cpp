@@ -15,9 +15,12 @@ namespace {
 
 std::string encodingName(PcdEncoding encoding) {
   switch (encoding) {
-    case PcdEncoding::binary_compressed: return "BinaryCompressed";
-    case PcdEncoding::binary: return "Binary";
-    case PcdEncoding::ascii: return "Ascii";
+    case PcdEncoding::binary_compressed:
+      return "BinaryCompressed";
+    case PcdEncoding::binary:
+      return "Binary";
+    case PcdEncoding::ascii:
+      return "Ascii";
   }
   return "Unknown";
 }
@@ -85,8 +88,7 @@ TEST_P(PcdFile, RoundTripsAnOrganizedCloudWithNaNs) {
 
 INSTANTIATE_TEST_SUITE_P(EveryEncoding, PcdFile,
                          ::testing::Values(floodplane::io::PcdEncoding::binary_compressed,
-                                           floodplane::io::PcdEncoding::binary,
-                                           floodplane::io::PcdEncoding::ascii),
+                                           floodplane::io::PcdEncoding::binary, floodplane::io::PcdEncoding::ascii),
                          [](const auto& param_info) { return encodingName(param_info.param); });
 
 TEST(PcdFileEncoding, IsBinaryCompressedByDefault) {
@@ -98,8 +100,7 @@ TEST(PcdFileEncoding, IsBinaryCompressedByDefault) {
 }
 
 TEST(PcdFileEncoding, ReportsAnUnwritableDirectoryAsARuntimeError) {
-  EXPECT_THROW(floodplane::io::savePcd("/nonexistent_directory/x.pcd", smallOrganizedCloud()),
-               std::runtime_error);
+  EXPECT_THROW(floodplane::io::savePcd("/nonexistent_directory/x.pcd", smallOrganizedCloud()), std::runtime_error);
 }
 
 }  // namespace

@@ -35,14 +35,12 @@ TEST(PngFile, RejectsAPixelBufferOfTheWrongSize) {
   image.width = 4;
   image.height = 4;
   image.pixels.assign(4 * 4 * 3 - 1, 0);
-  EXPECT_THROW(floodplane::io::writePng("/tmp/floodplane_never_written.png", image),
-               std::invalid_argument);
+  EXPECT_THROW(floodplane::io::writePng("/tmp/floodplane_never_written.png", image), std::invalid_argument);
   EXPECT_FALSE(fs::exists("/tmp/floodplane_never_written.png"));
 }
 
 TEST(PngFile, RejectsAnEmptyImage) {
-  EXPECT_THROW(floodplane::io::writePng("/tmp/floodplane_never_written.png", {}),
-               std::invalid_argument);
+  EXPECT_THROW(floodplane::io::writePng("/tmp/floodplane_never_written.png", {}), std::invalid_argument);
 }
 
 TEST(PngFile, ReportsAnUnwritableDirectoryAsARuntimeError) {
@@ -50,8 +48,7 @@ TEST(PngFile, ReportsAnUnwritableDirectoryAsARuntimeError) {
   image.width = 1;
   image.height = 1;
   image.pixels = {1, 2, 3};
-  EXPECT_THROW(floodplane::io::writePng("/nonexistent_directory/x.png", image),
-               std::runtime_error);
+  EXPECT_THROW(floodplane::io::writePng("/nonexistent_directory/x.png", image), std::runtime_error);
 }
 
 }  // namespace

@@ -434,8 +434,10 @@ TEST_F(PcdSegment, SegmentsInParallelExactlyAsOneAtATime) {
   }
   EXPECT_EQ(compared, 12u);  // six label PCDs and six PNGs
   for (int i : {0, 1, 2, 4, 5, 6}) {
-    nlohmann::json a = nlohmann::json::parse(readFile(fs::path(serial_dir) / ("f" + std::to_string(i) + ".planes.json")));
-    nlohmann::json b = nlohmann::json::parse(readFile(fs::path(parallel_dir) / ("f" + std::to_string(i) + ".planes.json")));
+    nlohmann::json a =
+        nlohmann::json::parse(readFile(fs::path(serial_dir) / ("f" + std::to_string(i) + ".planes.json")));
+    nlohmann::json b =
+        nlohmann::json::parse(readFile(fs::path(parallel_dir) / ("f" + std::to_string(i) + ".planes.json")));
     a.erase("segmentation_ms");
     b.erase("segmentation_ms");
     EXPECT_EQ(a, b) << i;
