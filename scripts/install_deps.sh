@@ -11,6 +11,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
   libopen3d-dev                              # pcd_compare's Open3D RANSAC baseline (0.16)
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
+  clang-format                               # scripts/check_format.sh (clang-format 14)
   xvfb xauth libgl1-mesa-dri                 # an X display with software OpenGL for 3-D snapshots
   python3 python3-dev pybind11-dev python3-pybind11  # the Python module (Debian's interpreter)
   python3-numpy python3-pytest                 # its arrays and its tests
