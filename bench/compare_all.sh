@@ -23,6 +23,7 @@ parallel=${PARALLEL:-0}
 tuned=${TUNED:-$root/bench/tuned_baselines.json}
 results=$root/bench/results
 compare=$build/apps/pcd_compare/pcd_compare
+tables=$root/bench/compare_tables.py
 
 [ -f "$tuned" ] || { echo "compare_all: no $tuned: run pcd_compare --tune first" >&2; exit 1; }
 cmake --build "$build" --parallel 2 --target pcd_compare render_scenes
@@ -35,13 +36,17 @@ mkdir -p "$results"
 all=floodplane,floodplane/2,ransac,open3d_ransac,omps
 fast=floodplane,floodplane/2,omps
 
-# Writes the Markdown of one pcd_compare run to <name>.md (through a temporary: a run that
-# fails leaves the previous tables), its CSV and JSON next to it.
+# Writes the JSON of one pcd_compare run to <name>.json and the tables and CSV that
+# compare_tables.py makes from it to <name>.md and <name>.csv (through temporaries: a run that
+# fails leaves the previous files). pcd_compare's own stdout, configuration and means, is in
+# the JSON.
 run() {
   local name=$1
   shift
-  "$compare" --tuned --tuned-file "$tuned" --csv "$results/$name.csv" --json "$results/$name.json" "$@" \
-    > "$results/$name.md.tmp"
+  "$compare" --tuned --tuned-file "$tuned" --json "$results/$name.json.tmp" "$@" > /dev/null
+  "$tables" "$results/$name.json.tmp" --csv "$results/$name.csv.tmp" > "$results/$name.md.tmp"
+  mv "$results/$name.json.tmp" "$results/$name.json"
+  mv "$results/$name.csv.tmp" "$results/$name.csv"
   mv "$results/$name.md.tmp" "$results/$name.md"
 }
 
