@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev # tests and benchmarks
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
   libopen3d-dev                              # pcd_compare's Open3D RANSAC baseline (0.16)
+  libcairo2-dev                              # pcd_compare's picture titles (its fonts come with it)
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
   clang-format                               # scripts/check_format.sh (clang-format 14)
   xvfb xauth libgl1-mesa-dri                 # an X display with software OpenGL for 3-D snapshots

@@ -1,12 +1,14 @@
 #include "comparison_image.h"
 
+#include <cairo.h>
+
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "bitmap_font.h"
 #include "io/label_palette.h"
 
 namespace pcd_compare {
@@ -14,11 +16,10 @@ namespace pcd_compare {
 namespace {
 
 constexpr std::uint32_t kUnmatchedLabelOffset = 1000;
-constexpr std::size_t kTitleScale = 2;
-constexpr std::size_t kTitleMargin = 4;
+constexpr std::size_t kTitleHeight = 22;  // pixels of the strip above each panel
+constexpr double kTitleFontSize = 15.0;   // pixels
+constexpr double kTitleMargin = 4.0;      // pixels left of the text
 constexpr std::size_t kPanelGap = 4;
-constexpr std::array<std::uint8_t, 3> kBackground = {255, 255, 255};
-constexpr std::array<std::uint8_t, 3> kTitleColour = {0, 0, 0};
 
 }  // namespace
 
@@ -75,34 +76,43 @@ floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, f
                                   std::to_string(height));
     }
   }
-  const std::size_t strip = kGlyphHeight * kTitleScale + 2 * kTitleMargin;
   floodplane::io::RgbImage image;
   image.width = images.size() * width + (images.size() - 1) * kPanelGap;
-  image.height = strip + height;
-  image.pixels.resize(image.width * image.height * 3);
-  for (std::size_t i = 0; i < image.pixels.size(); i += 3) {
-    std::copy(kBackground.begin(), kBackground.end(), image.pixels.begin() + static_cast<std::ptrdiff_t>(i));
-  }
+  image.height = kTitleHeight + height;
+  image.pixels.assign(image.width * image.height * 3, 255);  // white
+  // The titles: black text drawn by cairo as coverage (an A8 image surface: grey-scale
+  // antialiasing, no colour fringes, no X display), each clipped to its panel's width.
+  const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> strip(
+      cairo_image_surface_create(CAIRO_FORMAT_A8, static_cast<int>(image.width), kTitleHeight), cairo_surface_destroy);
+  const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cairo(cairo_create(strip.get()), cairo_destroy);
+  cairo_select_font_face(cairo.get(), "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cairo.get(), kTitleFontSize);
+  cairo_font_extents_t font;
+  cairo_font_extents(cairo.get(), &font);
   for (std::size_t k = 0; k < images.size(); ++k) {
     const std::size_t left = k * (width + kPanelGap);
-    const floodplane::io::RgbImage& panel = images[k].second;
     for (std::size_t y = 0; y < height; ++y) {
-      std::copy_n(panel.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
-                  image.pixels.begin() + static_cast<std::ptrdiff_t>(((strip + y) * image.width + left) * 3));
+      std::copy_n(images[k].second.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
+                  image.pixels.begin() + static_cast<std::ptrdiff_t>(((kTitleHeight + y) * image.width + left) * 3));
     }
-    // Titles too long for the panel are cut at the panel's edge by drawing into a copy
-    // limited to the panel's width.
-    floodplane::io::RgbImage title;
-    title.width = width;
-    title.height = strip;
-    title.pixels.resize(width * strip * 3);
-    for (std::size_t i = 0; i < title.pixels.size(); i += 3) {
-      std::copy(kBackground.begin(), kBackground.end(), title.pixels.begin() + static_cast<std::ptrdiff_t>(i));
-    }
-    drawText(title, kTitleMargin, kTitleMargin, images[k].first, kTitleScale, kTitleColour);
-    for (std::size_t y = 0; y < strip; ++y) {
-      std::copy_n(title.pixels.begin() + static_cast<std::ptrdiff_t>(y * width * 3), width * 3,
-                  image.pixels.begin() + static_cast<std::ptrdiff_t>((y * image.width + left) * 3));
+    cairo_reset_clip(cairo.get());
+    cairo_rectangle(cairo.get(), static_cast<double>(left), 0.0, static_cast<double>(width), kTitleHeight);
+    cairo_clip(cairo.get());
+    // The baseline that centres the font's ascent and descent in the strip.
+    cairo_move_to(cairo.get(), static_cast<double>(left) + kTitleMargin,
+                  (kTitleHeight + font.ascent - font.descent) / 2.0);
+    cairo_show_text(cairo.get(), images[k].first.c_str());
+  }
+  cairo_surface_flush(strip.get());
+  if (cairo_status(cairo.get()) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(std::string("titledImages: cairo: ") + cairo_status_to_string(cairo_status(cairo.get())));
+  }
+  const unsigned char* coverage = cairo_image_surface_get_data(strip.get());
+  const auto stride = static_cast<std::size_t>(cairo_image_surface_get_stride(strip.get()));
+  for (std::size_t y = 0; y < kTitleHeight; ++y) {
+    for (std::size_t x = 0; x < image.width; ++x) {
+      std::fill_n(image.pixels.begin() + static_cast<std::ptrdiff_t>((y * image.width + x) * 3), 3,
+                  static_cast<std::uint8_t>(255 - coverage[y * stride + x]));
     }
   }
   return image;

@@ -35,7 +35,8 @@ std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::ui
 floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width, std::size_t height);
 
 /// Images of one size side by side, each with its title in a strip above (the layout of
-/// comparisonImage). Throws std::invalid_argument if there are none or their sizes differ.
+/// comparisonImage; the titles drawn by cairo in a sans font). Throws std::invalid_argument if
+/// there are none or their sizes differ, std::runtime_error if cairo cannot draw the titles.
 floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, floodplane::io::RgbImage>>& images);
 
 }  // namespace pcd_compare
