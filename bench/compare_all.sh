@@ -13,7 +13,7 @@
 #   PARALLEL=0       1 runs the three comparisons at once (faster on 2 cores; the runtimes of
 #                    one comparison are then disturbed by the others, its ratios less so)
 # Never tunes: the tuned values come from the tuning split (seeds 1-100), written by
-#   pcd_compare --tune build/data/random/tune   (see bench/README.md)
+#   bench/tune_baselines.py build/data/random/tune   (see bench/README.md)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$(cd "${1:-$root/build}" && pwd)
@@ -25,7 +25,7 @@ results=$root/bench/results
 compare=$build/apps/pcd_compare/pcd_compare
 tables=$root/bench/compare_tables.py
 
-[ -f "$tuned" ] || { echo "compare_all: no $tuned: run pcd_compare --tune first" >&2; exit 1; }
+[ -f "$tuned" ] || { echo "compare_all: no $tuned: run bench/tune_baselines.py first" >&2; exit 1; }
 cmake --build "$build" --parallel 2 --target pcd_compare render_scenes
 # render_random_report renders every time it is built; 300 clouds are there once it has run.
 if [ "$(find "$build/data/random/report" -name 'random_*.pcd' 2>/dev/null | wc -l)" -ne 300 ]; then

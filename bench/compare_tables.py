@@ -27,7 +27,7 @@ import sys
 import tempfile
 
 NAN = float("nan")
-TABLES = ["means", "iou", "files", "subsampling", "phases"]
+TABLES = ["configuration", "means", "iou", "files", "subsampling", "phases"]
 HOOVER = ["correct", "over", "under", "missed", "noise"]
 # floodplane's phases in call order (phaseMembers() of apps/pcd_compare/report.cpp).
 PHASES = ["preparation", "seed_selection", "flood_fill", "relabelling", "merging", "region_output",
@@ -119,7 +119,8 @@ class Scene:
 
 
 def read_report(path):
-    """The scenes of the report at `path`; exits with one line when it cannot be read."""
+    """The configuration (key -> text) and the scenes of the report at `path`; exits with one line
+    when it cannot be read."""
     try:
         text = pathlib.Path(path).read_text(encoding="utf-8")
     except OSError as error:
@@ -130,7 +131,10 @@ def read_report(path):
         sys.exit(f"compare_tables.py: {path} is not JSON: {error}")
     try:
         scenes = field(report, "scenes", "the report", (list,))
-        return [Scene(scene, f"scenes[{k}]") for k, scene in enumerate(scenes)]
+        configuration = report.get("configuration", {}) if isinstance(report, dict) else {}
+        if not isinstance(configuration, dict):
+            raise NotAReport('"configuration" is not an object')
+        return configuration, [Scene(scene, f"scenes[{k}]") for k, scene in enumerate(scenes)]
     except NotAReport as error:
         sys.exit(f"compare_tables.py: {path} is not a pcd_compare report: {error}")
 
@@ -391,6 +395,13 @@ def phase_table(scenes):
     return out + phase_row(f"**mean** ({len(timed)} scenes)", keys, means, call_sum / len(timed)) + "\n"
 
 
+def configuration_list(configuration):
+    """pcd_compare's configuration as it prints it: a Markdown list, in the report's order."""
+    if not configuration:
+        return ""
+    return "## Configuration\n\n" + "".join(f"- **{key}**: {text}\n" for key, text in configuration.items()) + "\n"
+
+
 RENDER = {"means": mean_tables, "iou": iou_table, "files": files_table, "subsampling": subsampling_table,
           "phases": phase_table}
 
@@ -449,10 +460,11 @@ def main():
                         help=f"the tables to print, comma-separated; they come in this order whatever the "
                              f"order given (default: {','.join(TABLES)})")
     args = parser.parse_args()
-    scenes = read_report(args.report)
+    configuration, scenes = read_report(args.report)
     if args.csv:
         write_atomically(args.csv, csv_report(scenes))
-    sys.stdout.write("".join(RENDER[name](scenes) for name in TABLES if name in args.tables))
+    sys.stdout.write((configuration_list(configuration) if "configuration" in args.tables else "")
+                     + "".join(RENDER[name](scenes) for name in TABLES[1:] if name in args.tables))
 
 
 if __name__ == "__main__":

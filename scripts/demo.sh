@@ -1,24 +1,40 @@
 #!/usr/bin/env bash
-# From a fresh clone to results: installs what is missing (Debian packages), builds floodplane
-# (Release), renders the bundled scenes and compares floodplane with PCL's RANSAC and OMPS on
-# them. Prints the comparison table and names the folder with the side-by-side pictures.
+# From a fresh clone to results: installs what is missing (Debian packages), builds what the
+# demo needs (Release, no tests), renders the bundled scenes and compares floodplane with PCL's
+# RANSAC and OMPS on them. Prints the summary table and where the side-by-side pictures are.
 # Run again, it rebuilds only what changed.
 # Usage: scripts/demo.sh [build-dir]   (default: build)
+# Settings (environment): METHODS (default floodplane,floodplane/2,ransac,omps; add
+# open3d_ransac for Open3D's RANSAC, several seconds a noisy cloud), REPEAT (timed runs of the
+# fast methods per cloud, default 5; the sequential RANSACs are timed once).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 out="$build/demo"
+methods=${METHODS:-floodplane,floodplane/2,ransac,omps}
+repeat=${REPEAT:-5}
+start=$(date +%s)
 
 "$root/scripts/install_deps.sh"
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOODPLANE_BUILD_APPS=ON \
-        -DFLOODPLANE_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOODPLANE_BUILD_APPS=ON
 fi
-# render_scenes is part of the default build: data/scenes/*.json -> $build/data/rendered
-cmake --build "$build" --parallel "$(nproc)" --target pcd_compare pcd_segment render_scenes _floodplane
+echo "demo: building pcd_compare, pcd_segment and the scenes (a few minutes the first time)"
+# render_scenes: data/scenes/*.json -> $build/data/rendered, exact and with Kinect noise.
+cmake --build "$build" --parallel "$(nproc)" --target pcd_compare pcd_segment render_scenes
 
 mkdir -p "$out"
-"$build/apps/pcd_compare/pcd_compare" --repeat 5 --png "$out" --json "$out/compare.json" \
-  "$build"/data/rendered/*.pcd
+echo "demo: comparing $methods on $(ls "$build"/data/rendered/*.pcd | wc -l) scenes (about a minute)"
+"$build/apps/pcd_compare/pcd_compare" --repeat "$repeat" --methods "$methods" --png "$out" \
+  --json "$out/compare.json" "$build"/data/rendered/*.pcd > "$out/compare.md"
+
 echo
-echo "demo: side-by-side pictures (ground truth | RANSAC | OMPS | floodplane) in $out"
+# The means over every scene: the first table after the configuration.
+sed -n '/^### all files/,/^$/p' "$out/compare.md"
+cat <<EOF
+demo: done in $(( $(date +%s) - start )) s
+  the means:         $out/compare.md (and per sensor model)
+  every file, plane: $out/compare.json (as tables: bench/compare_tables.py $out/compare.json)
+  the pictures:      $out/<scene>.png (ground truth | RANSAC | OMPS | floodplane/2 | floodplane)
+  your own frames:   $build/apps/pcd_segment/pcd_segment frame.pcd -o out/ --png --json
+EOF

@@ -1,13 +1,51 @@
 #include "baselines.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace pcd_compare {
 
 namespace {
+
+// Every tunable parameter of a baseline with its default, in the order they are described.
+std::vector<std::pair<std::string, double>> defaults(const std::string& baseline) {
+  if (baseline == "omps") {
+    const OmpsParameters omps;
+    return {{"angular_threshold", omps.angular_threshold},
+            {"distance_threshold", omps.distance_threshold},
+            {"normal_smoothing_size", omps.normal_smoothing_size},
+            {"max_depth_change_factor", omps.max_depth_change_factor},
+            {"maximum_curvature", omps.maximum_curvature},
+            {"min_inliers", static_cast<double>(omps.min_inliers)}};
+  }
+  if (baseline == "ransac" || baseline == "open3d_ransac") {
+    const SequentialRansacParameters ransac;
+    return {{"distance_threshold", ransac.distance_threshold},
+            {"min_inliers", static_cast<double>(ransac.min_inliers)}};
+  }
+  return {};
+}
+
+// `values` completed with the defaults; unknown names rejected.
+ParameterValues complete(const std::string& baseline, const ParameterValues& values) {
+  const auto known = defaults(baseline);
+  if (known.empty()) throw std::invalid_argument("'" + baseline + "' is not a tunable baseline");
+  for (const auto& entry : values) {
+    if (std::none_of(known.begin(), known.end(), [&entry](const auto& d) { return d.first == entry.first; })) {
+      throw std::invalid_argument(baseline + " has no parameter '" + entry.first + "'");
+    }
+  }
+  ParameterValues all = values;
+  for (const auto& [name, value] : known) all.emplace(name, value);
+  return all;
+}
 
 // Every value must be a finite positive number; counts must also be whole.
 double positive(const ParameterValues& values, const std::string& name) {
@@ -26,118 +64,56 @@ std::size_t count(const ParameterValues& values, const std::string& name) {
   return static_cast<std::size_t>(value);
 }
 
-void rejectUnknown(const Baseline& baseline, const ParameterValues& values) {
-  for (const auto& [name, value] : values) {
-    (void)value;
-    const bool known = std::any_of(baseline.defaults.begin(), baseline.defaults.end(),
-                                   [&name](const auto& entry) { return entry.first == name; });
-    if (!known) throw std::invalid_argument(baseline.name + " has no parameter '" + name + "'");
-  }
-}
-
-SequentialRansacParameters ransacParameters(const ParameterValues& values) {
-  SequentialRansacParameters parameters;
-  parameters.distance_threshold = positive(values, "distance_threshold");
-  parameters.min_inliers = count(values, "min_inliers");
-  return parameters;
-}
-
-OmpsParameters ompsParameters(const ParameterValues& values) {
-  OmpsParameters parameters;
-  parameters.angular_threshold = positive(values, "angular_threshold");
-  parameters.distance_threshold = positive(values, "distance_threshold");
-  parameters.normal_smoothing_size = positive(values, "normal_smoothing_size");
-  parameters.max_depth_change_factor = positive(values, "max_depth_change_factor");
-  parameters.maximum_curvature = positive(values, "maximum_curvature");
-  parameters.min_inliers = count(values, "min_inliers");
-  return parameters;
-}
-
-// A `make` for `baseline` from a function of its complete, checked values.
-template <typename MakeFromComplete>
-void setMake(Baseline& baseline, MakeFromComplete make_from_complete) {
-  baseline.make = [blueprint = baseline, make_from_complete](const ParameterValues& values, const std::string& name) {
-    rejectUnknown(blueprint, values);
-    return make_from_complete(withDefaults(blueprint, values), name);
-  };
-}
-
-std::vector<Baseline> makeBaselines() {
-  const SequentialRansacParameters ransac;
-  const OmpsParameters omps;
-  const std::vector<std::pair<std::string, double>> ransac_defaults = {
-      {"distance_threshold", ransac.distance_threshold}, {"min_inliers", static_cast<double>(ransac.min_inliers)}};
-  Baseline omps_baseline{"omps",
-                         {{"angular_threshold", omps.angular_threshold},
-                          {"distance_threshold", omps.distance_threshold},
-                          {"normal_smoothing_size", omps.normal_smoothing_size},
-                          {"max_depth_change_factor", omps.max_depth_change_factor},
-                          {"maximum_curvature", omps.maximum_curvature},
-                          {"min_inliers", static_cast<double>(omps.min_inliers)}},
-                         "",
-                         {}};
-  setMake(omps_baseline, [](const ParameterValues& values, const std::string& name) {
-    return makeOmpsMethod(ompsParameters(values), name);
-  });
-  Baseline ransac_baseline{"ransac", ransac_defaults, "min_inliers", {}};
-  setMake(ransac_baseline, [](const ParameterValues& values, const std::string& name) {
-    return makeRansacMethod(ransacParameters(values), name);
-  });
-  Baseline open3d_baseline{"open3d_ransac", ransac_defaults, "min_inliers", {}};
-  setMake(open3d_baseline, [](const ParameterValues& values, const std::string& name) {
-    return makeOpen3dRansacMethod(ransacParameters(values), name);
-  });
-  return {omps_baseline, ransac_baseline, open3d_baseline};
-}
-
 }  // namespace
 
-const std::vector<Baseline>& baselines() {
-  static const std::vector<Baseline> list = makeBaselines();
-  return list;
-}
+bool isTunable(const std::string& baseline) { return !defaults(baseline).empty(); }
 
-const Baseline* findBaseline(const std::string& name) {
-  for (const Baseline& baseline : baselines()) {
-    if (baseline.name == name) return &baseline;
+std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,
+                                     const std::string& name) {
+  const ParameterValues all = complete(baseline, values);
+  if (baseline == "omps") {
+    OmpsParameters omps;
+    omps.angular_threshold = positive(all, "angular_threshold");
+    omps.distance_threshold = positive(all, "distance_threshold");
+    omps.normal_smoothing_size = positive(all, "normal_smoothing_size");
+    omps.max_depth_change_factor = positive(all, "max_depth_change_factor");
+    omps.maximum_curvature = positive(all, "maximum_curvature");
+    omps.min_inliers = count(all, "min_inliers");
+    return makeOmpsMethod(omps, name);
   }
-  return nullptr;
+  SequentialRansacParameters ransac;
+  ransac.distance_threshold = positive(all, "distance_threshold");
+  ransac.min_inliers = count(all, "min_inliers");
+  return baseline == "ransac" ? makeRansacMethod(ransac, name) : makeOpen3dRansacMethod(ransac, name);
 }
 
-ParameterValues withDefaults(const Baseline& baseline, const ParameterValues& values) {
-  ParameterValues complete = values;
-  for (const auto& [name, value] : baseline.defaults) complete.emplace(name, value);
-  return complete;
-}
-
-std::string describeValues(const Baseline& baseline, const ParameterValues& values) {
-  const ParameterValues complete = withDefaults(baseline, values);
+std::string describeValues(const std::string& baseline, const ParameterValues& values) {
+  const ParameterValues all = complete(baseline, values);
   std::ostringstream text;
-  for (std::size_t k = 0; k < baseline.defaults.size(); ++k) {
-    const std::string& name = baseline.defaults[k].first;
-    text << (k > 0 ? ", " : "") << name << "=" << complete.at(name);
+  for (const auto& [name, value] : defaults(baseline)) {
+    (void)value;
+    text << (text.tellp() > 0 ? ", " : "") << name << "=" << all.at(name);
   }
   return text.str();
 }
 
-std::vector<std::uint32_t> truncateSequence(const std::vector<std::uint32_t>& labels, double min_inliers) {
-  std::vector<std::size_t> pixels;
-  for (const std::uint32_t label : labels) {
-    if (label >= pixels.size()) pixels.resize(label + std::size_t{1}, 0);
-    ++pixels[label];
-  }
-  std::uint32_t first_dropped = static_cast<std::uint32_t>(pixels.size());
-  for (std::size_t label = 1; label < pixels.size(); ++label) {
-    if (static_cast<double>(pixels[label]) < min_inliers) {
-      first_dropped = static_cast<std::uint32_t>(label);
-      break;
+TunedValues readTunedValues(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read the tuned parameters (bench/tune_baselines.py writes them)");
+  TunedValues tuned;
+  try {
+    const nlohmann::json json = nlohmann::json::parse(in);
+    for (const auto& [baseline, entry] : json.at("methods").items()) {
+      for (const auto& [sensor, winner] : entry.at("by_sensor").items()) {
+        const auto values = winner.at("parameters").get<ParameterValues>();
+        makeBaseline(baseline, values, baseline);  // checks the names and values
+        tuned[baseline][sensor] = values;
+      }
     }
+  } catch (const std::exception& error) {
+    throw std::runtime_error(path + ": " + error.what());
   }
-  std::vector<std::uint32_t> kept = labels;
-  for (std::uint32_t& label : kept) {
-    if (label >= first_dropped) label = 0;
-  }
-  return kept;
+  return tuned;
 }
 
 }  // namespace pcd_compare

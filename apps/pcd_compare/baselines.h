@@ -1,15 +1,11 @@
 #pragma once
-// The baselines whose parameters can be tuned (PCL's OMPS and RANSAC, Open3D's RANSAC): for
-// each, its tunable parameters by name with their defaults, and how to make the method from a
-// set of values. The tuner and the --tuned rows both go through this one table.
+// The baselines whose parameters can be tuned (PCL's OMPS and RANSAC, Open3D's RANSAC): each
+// made from a set of values by name, and the tuned values that bench/tune_baselines.py writes
+// per baseline and sensor model, which --tuned reads.
 
-#include <cstdint>
-#include <functional>
 #include <map>
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "method.h"
 
@@ -17,32 +13,19 @@ namespace pcd_compare {
 
 /// A value per parameter name.
 using ParameterValues = std::map<std::string, double>;
+/// Per baseline, then per sensor model, the tuned values.
+using TunedValues = std::map<std::string, std::map<std::string, ParameterValues>>;
 
-struct Baseline {
-  std::string name;  ///< as in --methods: "omps", "ransac", "open3d_ransac"
-  /// Every tunable parameter with its default, in the order the search visits them.
-  std::vector<std::pair<std::string, double>> defaults;
-  /// A parameter that only stops a sequence of extractions ("min_inliers" of a sequential
-  /// RANSAC): a run at its smallest value contains the run at any larger value, planes
-  /// numbered in extraction order. Empty when there is none.
-  std::string truncation_parameter;
-  /// Makes the method from `values` (missing names take their defaults), named `name`.
-  /// Throws std::invalid_argument for an unknown name or a value out of range.
-  std::function<std::unique_ptr<Method>(const ParameterValues& values, const std::string& name)> make;
-};
-
-/// The tunable baselines.
-const std::vector<Baseline>& baselines();
-/// The baseline called `name`, or nullptr.
-const Baseline* findBaseline(const std::string& name);
-/// `values` completed with the defaults of `baseline`.
-ParameterValues withDefaults(const Baseline& baseline, const ParameterValues& values);
-/// "name=value, ..." in the baseline's parameter order.
-std::string describeValues(const Baseline& baseline, const ParameterValues& values);
-
-/// Keeps the planes of a sequential extraction (labels 1, 2, ... in extraction order) up to,
-/// not including, the first with fewer than `min_inliers` pixels: the labels the same method
-/// would have given with that `min_inliers`, when it gave `labels` with a smaller one.
-std::vector<std::uint32_t> truncateSequence(const std::vector<std::uint32_t>& labels, double min_inliers);
+/// True for "omps", "ransac" and "open3d_ransac".
+bool isTunable(const std::string& baseline);
+/// The tunable `baseline` at `values` (missing names take their defaults), named `name`.
+/// Throws std::invalid_argument for an unknown parameter or a value out of range.
+std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,
+                                     const std::string& name);
+/// Every parameter of `baseline` with its value, the defaults filled in: "name=value, ...".
+std::string describeValues(const std::string& baseline, const ParameterValues& values);
+/// Reads a tuning result; std::runtime_error naming the file if it cannot be read, parsed, or
+/// names an unknown baseline, parameter or bad value.
+TunedValues readTunedValues(const std::string& path);
 
 }  // namespace pcd_compare

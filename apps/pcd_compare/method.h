@@ -43,6 +43,9 @@ class Method {
   virtual std::string parameters() const = 0;
   /// Segments one organized cloud. Deterministic: the same cloud gives the same labels.
   virtual MethodRun run(const Cloud::ConstPtr& cloud) = 0;
+  /// Seconds a cloud (the sequential RANSACs): timed once, on the scored run, whatever
+  /// --repeat says; their accuracy is the point of running them, not their exact time.
+  virtual bool slow() const { return false; }
 };
 
 /// The parameters of a sequential RANSAC (PCL's or Open3D's): the best plane is extracted,

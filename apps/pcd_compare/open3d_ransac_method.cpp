@@ -43,6 +43,7 @@ class Open3dRansacMethod : public Method {
   }
 
   std::string name() const override { return name_; }
+  bool slow() const override { return true; }
 
   std::string parameters() const override {
     std::ostringstream text;

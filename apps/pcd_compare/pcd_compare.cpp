@@ -1,17 +1,20 @@
-// pcd_compare: runs floodplane, PCL's sequential RANSAC and PCL's OrganizedMultiPlaneSegmentation
-// on organized PCD files and reports their runtime and, where the file carries ground-truth
-// labels, their accuracy (the project's metrics.md definitions, floodplane_eval).
-// Argument parsing, the timing protocol and output only; the methods are in *_method.cpp.
+// pcd_compare: runs floodplane, PCL's sequential RANSAC and OMPS and Open3D's sequential RANSAC
+// on organized PCD files and reports their runtime and, where a file carries ground-truth
+// labels, their accuracy (the project's metrics.md, floodplane_eval). This file is the driver:
+// options, the timing protocol, the loop over files. The methods are in *_method.cpp, the
+// report in report.cpp, the pictures in comparison_image*.cpp; the baselines' tuning and the
+// tables beyond the means are bench/tune_baselines.py and bench/compare_tables.py.
 
 #include <CLI/CLI.hpp>
 #include <pcl/pcl_config.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
-#include <exception>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <iterator>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,52 +24,46 @@
 #include <string>
 #include <vector>
 
+#include "baselines.h"
 #include "common/cli.h"
 #include "common/display_check.h"
 #include "comparison_image.h"
 #include "comparison_image_3d.h"
 #include "eval/segmentation_metrics.h"
-#include "io/atomic_file.h"
-#include "io/png_file.h"
 #include "floodplane/version.h"
 #include "input_cloud.h"
+#include "io/atomic_file.h"
 #include "io/input_files.h"
+#include "io/png_file.h"
 #include "method.h"
 #include "report.h"
-#include "tuning.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace pcd_compare;
+using Clock = std::chrono::steady_clock;
 
 constexpr double kTolerance = 0.8;  // Hoover's T, metrics.md's default
+const std::vector<std::string> kDefaultMethods = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
+const std::vector<std::string> kResolutions = {"floodplane", "floodplane/2", "floodplane/4", "floodplane/8"};
+const std::vector<std::string> kSensors = {"kinect", "scanner", "none"};
 
 struct Options {
   std::vector<std::string> inputs;
   std::vector<std::string> methods;
   int repeat = 20;
-  std::string csv_file;
-  std::string json_file;
-  std::string png_dir;
-  std::string png3d_dir;
-  bool resolutions = false;
-  bool phases = false;
-  bool quiet = false;
-  bool tuned = false;  // also the baselines at their tuned values
-  std::string tuned_file = FLOODPLANE_TUNED_BASELINES;
-  std::string tune_dir;          // tune the baselines on this folder instead of comparing
-  std::string tune_grid_file;    // the grid to search (default: defaultGrid())
-  std::size_t tune_clouds = 12;  // clouds per sensor model in the tuning subset
+  std::string json_file, png_dir, png3d_dir;
+  std::string sensor;      // every input's sensor model; empty: from the file name
+  std::string tuned_file;  // empty: defaultTunedFile()
+  bool resolutions = false, tuned = false, phases = false, quiet = false;
 };
 
 std::vector<std::string> splitList(const std::string& list) {
   std::vector<std::string> items;
   std::istringstream stream(list);
   for (std::string item; std::getline(stream, item, ',');) {
-    if (!item.empty()) {
-      items.push_back(item);
-    }
+    if (!item.empty() && std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
   }
   return items;
 }
@@ -77,45 +74,58 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
   return text;
 }
 
+bool isMethodName(const std::string& name) {
+  return isTunable(name) || std::find(kResolutions.begin(), kResolutions.end(), name) != kResolutions.end();
+}
+
+std::unique_ptr<Method> makeMethod(const std::string& name) {
+  if (name.rfind("floodplane", 0) == 0)
+    return makeFloodplaneMethod(name == "floodplane" ? 1 : std::stoi(name.substr(11)));
+  return makeBaseline(name, {}, name);
+}
+
+// The tuned values' file when --tuned-file is not given: $FLOODPLANE_TUNED_FILE, else the copy
+// next to the binary in a build tree, else the installed one (<prefix>/share/floodplane).
+std::string defaultTunedFile() {
+  if (const char* file = std::getenv("FLOODPLANE_TUNED_FILE"); file != nullptr && *file != '\0') return file;
+  std::error_code error;
+  const fs::path directory = fs::read_symlink("/proc/self/exe", error).parent_path();
+  for (const fs::path& candidate :
+       {directory / "tuned_baselines.json", directory.parent_path() / "share/floodplane/tuned_baselines.json"}) {
+    if (fs::exists(candidate, error)) return candidate.string();
+  }
+  throw std::runtime_error(
+      "--tuned: no tuned values found next to the binary or in its share/floodplane: "
+      "pass --tuned-file or set FLOODPLANE_TUNED_FILE");
+}
+
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::string compilerName() {
-#if defined(__clang__)
-  return std::string("clang ") + __VERSION__;
-#elif defined(__GNUC__)
-  return std::string("GCC ") + __VERSION__;
-#else
-  return "unknown compiler";
-#endif
-}
-
 // One warm-up run, whose labels are scored (every method is deterministic), then `repeat`
-// timed runs of the segmentation call alone. With `repeat` 0 the scored run is the one timed
-// run: for large folders, where accuracy needs one run and a cold time is good enough.
+// timed runs of the segmentation call alone. With `repeat` 0, and for slow methods, the scored
+// run is the one timed run.
 struct Measured {
   MethodRun first;
   Timing timing;
-  std::vector<MethodRun> runs;  // the timed runs, without labels
+  std::vector<floodplane::PhaseTimes> phases;  // of the timed runs, when the method measures them
 };
 
 Measured measure(Method& method, const Cloud::ConstPtr& cloud, int repeat) {
   Measured measured;
   measured.first = method.run(cloud);
+  const int runs = method.slow() ? 0 : repeat;
   std::vector<double> totals;
   std::vector<std::vector<double>> parts(measured.first.parts_ms.size());
-  for (int r = 0; r < std::max(repeat, 1); ++r) {
-    MethodRun run = repeat > 0 ? method.run(cloud) : measured.first;
+  for (int r = 0; r < std::max(runs, 1); ++r) {
+    const MethodRun run = runs > 0 ? method.run(cloud) : measured.first;
     totals.push_back(run.total_ms);
-    for (std::size_t k = 0; k < parts.size() && k < run.parts_ms.size(); ++k) {
+    for (std::size_t k = 0; k < parts.size() && k < run.parts_ms.size(); ++k)
       parts[k].push_back(run.parts_ms[k].second);
-    }
-    run.labels.clear();
-    run.labels.shrink_to_fit();
-    measured.runs.push_back(std::move(run));
+    if (run.phases) measured.phases.push_back(*run.phases);
   }
   measured.timing.median_ms = median(totals);
   measured.timing.min_ms = *std::min_element(totals.begin(), totals.end());
@@ -125,426 +135,277 @@ Measured measure(Method& method, const Cloud::ConstPtr& cloud, int repeat) {
   return measured;
 }
 
-std::size_t distinctPlanes(const std::vector<std::uint32_t>& labels) {
-  std::set<std::uint32_t> planes(labels.begin(), labels.end());
-  planes.erase(0);
-  return planes.size();
-}
-
-MethodResult evaluate(const std::string& name, const Measured& measured, const InputCloud& input,
-                      std::uint32_t min_points) {
-  MethodResult result;
-  result.method = name;
-  result.timing = measured.timing;
-  result.planes = distinctPlanes(measured.first.labels);
-  if (input.ground_truth) {
-    floodplane::eval::MetricsOptions options;
-    options.min_points = min_points;
-    options.tolerance = kTolerance;
-    result.scores =
-        floodplane::eval::evaluateSegmentation(*input.ground_truth, measured.first.labels, input.valid, options);
-  }
-  return result;
-}
-
-// Every method --methods can name, in the order of the default list.
-const std::vector<std::string> kMethodNames = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
-
-bool isMethodName(const std::string& name) {
-  return std::find(kMethodNames.begin(), kMethodNames.end(), name) != kMethodNames.end();
-}
-
-std::unique_ptr<Method> makeMethod(const std::string& name) {
-  if (name == "floodplane") return makeFloodplaneMethod(1);
-  if (name == "floodplane/2") return makeFloodplaneMethod(2);
-  if (name == "ransac") return makeRansacMethod();
-  if (name == "open3d_ransac") return makeOpen3dRansacMethod();
-  return makeOmpsMethod();
-}
-
-// A baseline at its tuned values: one instance per sensor model of the tuning file.
-struct TunedMethod {
-  std::string name;  // "<baseline> (tuned)"
-  std::map<std::string, std::unique_ptr<Method>> by_sensor;
-};
-
+// The methods to run: those of --methods, the baselines among them at their tuned values (one
+// instance per sensor model of the tuning file), floodplane with its phase timer.
 struct Methods {
-  std::vector<std::unique_ptr<Method>> selected;                    // in --methods order
-  std::vector<TunedMethod> tuned;                                   // --tuned, in --methods order
-  std::vector<std::pair<int, std::unique_ptr<Method>>> subsampled;  // floodplane at 2, 4, 8
-  std::unique_ptr<Method> full_resolution;                          // floodplane at 1 when not selected
-  std::unique_ptr<Method> phase_timer;                              // floodplane with its phase timer
+  std::vector<std::unique_ptr<Method>> selected;
+  using BySensor = std::map<std::string, std::unique_ptr<Method>>;
+  std::vector<std::pair<std::string, BySensor>> tuned;  // row name, instance by sensor model
+  std::unique_ptr<Method> phase_timer;
 };
 
-// The baselines among --methods at the values of the tuning file, per sensor model.
-std::vector<TunedMethod> makeTunedMethods(const Options& options) {
-  const TunedValues tuned = readTunedValues(options.tuned_file);
-  std::vector<TunedMethod> methods;
-  for (const std::string& name : options.methods) {
-    const Baseline* baseline = findBaseline(name);
-    const auto entry = tuned.by_method_and_sensor.find(name);
-    if (baseline == nullptr || entry == tuned.by_method_and_sensor.end()) continue;
-    TunedMethod method{name + " (tuned)", {}};
-    for (const auto& [sensor, values] : entry->second) {
-      method.by_sensor.emplace(sensor, baseline->make(values, method.name));
-    }
-    methods.push_back(std::move(method));
-  }
-  return methods;
-}
-
-Methods makeMethods(const Options& options) {
+Methods makeMethods(const Options& options, Json& configuration) {
   Methods methods;
-  for (const std::string& name : options.methods) methods.selected.push_back(makeMethod(name));
-  if (options.tuned) methods.tuned = makeTunedMethods(options);
-  if (options.resolutions) {
-    for (const int factor : {2, 4, 8}) {
-      methods.subsampled.emplace_back(factor, makeFloodplaneMethod(factor));
-    }
-    const bool have_floodplane =
-        std::find(options.methods.begin(), options.methods.end(), "floodplane") != options.methods.end();
-    if (!have_floodplane) {
-      methods.full_resolution = makeFloodplaneMethod(1);
+  for (const std::string& name : options.methods) {
+    methods.selected.push_back(makeMethod(name));
+    configuration["method " + name] = methods.selected.back()->parameters();
+  }
+  if (options.tuned) {
+    const TunedValues tuned = readTunedValues(options.tuned_file);
+    for (const std::string& name : options.methods) {
+      const auto values = tuned.find(name);
+      if (values == tuned.end()) continue;
+      auto& [row, by_sensor] = methods.tuned.emplace_back(name + " (tuned)", Methods::BySensor{});
+      for (const auto& [sensor, parameters] : values->second) {
+        by_sensor[sensor] = makeBaseline(name, parameters, row);
+        // bench/tune_baselines.py reads the values back from here: "name=value, ...; ".
+        configuration["method " + row + " [" + sensor + "]"] =
+            describeValues(name, parameters) + "; " + by_sensor[sensor]->parameters() + "; from " + options.tuned_file;
+      }
     }
   }
   if (options.phases) {
     // A separate instance and separate runs: the phase timer's clock reads must not be in
     // the timings of the main table.
     methods.phase_timer = makeFloodplaneMethod(1, true);
+    configuration["phases"] = methods.phase_timer->parameters() + "; separate runs, not those of the main table";
   }
   return methods;
 }
 
-std::vector<std::pair<std::string, std::string>> configuration(const Options& options, const Methods& methods) {
-  std::vector<std::pair<std::string, std::string>> config;
-  config.emplace_back("floodplane", FLOODPLANE_VERSION_STRING);
-  config.emplace_back("PCL", PCL_VERSION_PRETTY);
-  config.emplace_back("compiler", compilerName());
-  config.emplace_back("build type", FLOODPLANE_BUILD_TYPE);
-  const std::string runs = options.repeat > 0
-                               ? "median and min of " + std::to_string(options.repeat) + " runs after one warm-up"
-                               : "one run per method and file (--repeat 0: no warm-up)";
-  config.emplace_back("timing", runs +
-                                    ", of the segmentation call alone (cloud in "
-                                    "memory; OMPS includes its normal estimation), one thread, "
-                                    "steady_clock");
-  config.emplace_back("accuracy",
-                      "for files with a `label` field: IoU, weighted IoU, Hoover counts "
-                      "(T = 0.8) and false-plane fraction as in metrics.md; pixels with NaN xyz "
-                      "ignored; planes and segments below round(500 * W*H / (640*480)) pixels "
-                      "ignored; labels of the warm-up run; means per method, and per sensor "
-                      "model for files named <scene>.<sensor>.pcd");
-  for (const auto& method : methods.selected) {
-    config.emplace_back("method " + method->name(), method->parameters());
-  }
-  for (const TunedMethod& tuned : methods.tuned) {
-    for (const auto& [sensor, method] : tuned.by_sensor) {
-      config.emplace_back("method " + tuned.name + " [" + sensor + "]",
-                          method->parameters() + "; from " + options.tuned_file);
-    }
-  }
-  for (const auto& [factor, method] : methods.subsampled) {
-    (void)factor;
-    config.emplace_back("method " + method->name(), method->parameters());
-  }
-  if (methods.phase_timer) {
-    config.emplace_back("phases", methods.phase_timer->parameters() + "; separate runs, not those of the main table");
-  }
-  return config;
+std::string compilerName() {
+#if defined(__clang__)
+  return std::string("clang ") + __VERSION__;
+#else
+  return std::string("GCC ") + __VERSION__;
+#endif
 }
 
-// Ground truth and the methods of --methods in a fixed order, whichever of them ran.
-std::vector<Panel> comparisonPanels(const InputCloud& input,
-                                    const std::vector<std::pair<std::string, const MethodRun*>>& runs,
-                                    const SceneResult& scene) {
-  static const std::vector<std::string> kOrder = {"ransac", "open3d_ransac", "omps", "floodplane/2", "floodplane"};
-  std::vector<Panel> panels;
-  const std::vector<std::uint32_t> no_ground_truth;
-  const std::vector<std::uint32_t>& ground_truth = input.ground_truth ? *input.ground_truth : no_ground_truth;
+Json configuration(const Options& options) {
+  const std::string runs = options.repeat > 0 ? "median and min of " + std::to_string(options.repeat) +
+                                                    " runs after one warm-up (the sequential RANSACs: one run)"
+                                              : "one run per method and file (--repeat 0: no warm-up)";
+  return {{"floodplane", FLOODPLANE_VERSION_STRING},
+          {"PCL", PCL_VERSION_PRETTY},
+          {"compiler", compilerName()},
+          {"build type", FLOODPLANE_BUILD_TYPE},
+          {"timing", runs + ", of the segmentation call alone (cloud in memory; OMPS includes its normal "
+                            "estimation), one thread, steady_clock"},
+          {"accuracy",
+           "for files with a `label` field: IoU, weighted IoU, Hoover counts (T = 0.8) and false-plane "
+           "fraction as in metrics.md; pixels with NaN xyz ignored; planes and segments below "
+           "round(500 * W*H / (640*480)) pixels ignored; labels of the warm-up run; means per method, and per "
+           "sensor model (--sensor, or the name <scene>.<sensor>.pcd)"}};
+}
+
+std::size_t distinctPlanes(const std::vector<std::uint32_t>& labels) {
+  std::set<std::uint32_t> planes(labels.begin(), labels.end());
+  planes.erase(0);
+  return planes.size();
+}
+
+Json resultJson(const Measured& measured, const InputCloud& input, std::uint32_t min_points) {
+  std::optional<floodplane::eval::SegmentationScores> scores;
   if (input.ground_truth) {
-    std::vector<std::uint32_t> shown = ground_truth;
+    floodplane::eval::MetricsOptions metrics;
+    metrics.min_points = min_points;
+    metrics.tolerance = kTolerance;
+    scores = floodplane::eval::evaluateSegmentation(*input.ground_truth, measured.first.labels, input.valid, metrics);
+  }
+  return methodJson(measured.timing, distinctPlanes(measured.first.labels), scores);
+}
+
+// <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings): ground
+// truth, then the methods that ran in a fixed order, floodplane last.
+void writeComparisonImages(const Options& options, const InputCloud& input, const Json& scene,
+                           const std::map<std::string, MethodRun>& runs) {
+  static const std::vector<std::string> kOrder = {"ransac",       "open3d_ransac", "omps",      "floodplane/8",
+                                                  "floodplane/4", "floodplane/2",  "floodplane"};
+  const std::vector<std::uint32_t> none;
+  const std::vector<std::uint32_t>& ground_truth = input.ground_truth ? *input.ground_truth : none;
+  std::vector<Panel> panels;
+  if (input.ground_truth) {
     // Pixels without a point show as "no plane", as they do in the predictions.
-    for (std::size_t i = 0; i < shown.size(); ++i) {
-      shown[i] = input.valid[i] != 0 ? shown[i] : 0;
-    }
+    std::vector<std::uint32_t> shown = ground_truth;
+    for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = input.valid[i] != 0 ? shown[i] : 0;
     panels.push_back({"ground truth", std::move(shown), {}});
   }
   for (const std::string& name : kOrder) {
-    for (std::size_t k = 0; k < runs.size(); ++k) {
-      if (runs[k].first != name) {
-        continue;
-      }
-      std::string title = name;
-      const MethodResult& result = scene.methods[k];
-      if (result.scores && !result.scores->planes.empty()) {
-        std::ostringstream text;
-        text.precision(3);
-        text << std::fixed << name << "  IoU " << result.scores->mean_iou;
-        title = text.str();
-      }
-      panels.push_back({title, coloursMatchedToGroundTruth(runs[k].second->labels, ground_truth, input.valid),
-                        runs[k].second->labels});
+    const auto run = runs.find(name);
+    if (run == runs.end()) continue;
+    std::string title = name;
+    const Json& iou = scene["methods"][name].value("mean_iou", Json());
+    if (iou.is_number()) {
+      char text[32];
+      std::snprintf(text, sizeof text, "  IoU %.3f", iou.get<double>());
+      title += text;
     }
+    panels.push_back(
+        {title, coloursMatchedToGroundTruth(run->second.labels, ground_truth, input.valid), run->second.labels});
   }
-  return panels;
-}
-
-// <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings).
-void writeComparisonImages(const Options& options, const InputCloud& input,
-                           const std::vector<std::pair<std::string, const MethodRun*>>& runs,
-                           const SceneResult& scene) {
-  const std::vector<Panel> panels = comparisonPanels(input, runs, scene);
-  if (panels.empty()) {
-    return;
-  }
+  const std::string file = scene["name"].get<std::string>() + ".png";
   if (!options.png_dir.empty()) {
     fs::create_directories(options.png_dir);
-    floodplane::io::writePng((fs::path(options.png_dir) / (scene.name + ".png")).string(),
+    floodplane::io::writePng((fs::path(options.png_dir) / file).string(),
                              comparisonImage(panels, input.cloud->width, input.cloud->height));
   }
   if (!options.png3d_dir.empty()) {
     fs::create_directories(options.png3d_dir);
-    floodplane::io::writePng((fs::path(options.png3d_dir) / (scene.name + ".png")).string(),
-                             comparisonImage3d(panels, input.cloud, scene.min_points));
+    floodplane::io::writePng((fs::path(options.png3d_dir) / file).string(),
+                             comparisonImage3d(panels, input.cloud, scene["min_points"].get<std::size_t>()));
   }
 }
 
-// floodplane at sub-sampling 1 (from the main table when it ran there), 2, 4 and 8.
-std::vector<std::pair<int, MethodResult>> measureResolutions(const Options& options, Methods& methods,
-                                                             const InputCloud& input, const SceneResult& scene) {
-  std::vector<std::pair<int, MethodResult>> resolutions;
-  const auto floodplane = std::find_if(scene.methods.begin(), scene.methods.end(),
-                                       [](const MethodResult& r) { return r.method == "floodplane"; });
-  if (floodplane != scene.methods.end()) {
-    resolutions.emplace_back(1, *floodplane);
-  } else {
-    const Measured full = measure(*methods.full_resolution, input.cloud, options.repeat);
-    resolutions.emplace_back(1, evaluate("floodplane", full, input, scene.min_points));
-  }
-  for (const auto& [factor, method] : methods.subsampled) {
-    const Measured sub = measure(*method, input.cloud, options.repeat);
-    resolutions.emplace_back(factor, evaluate(method->name(), sub, input, scene.min_points));
-  }
-  return resolutions;
-}
+// Why files got no tuned rows, each reason with the files it applies to.
+using MissingTuned = std::map<std::string, std::vector<std::string>>;
 
-// Each phase's median over the timed runs of the phase timer's instance.
-PhaseResult measurePhases(Method& phase_timer, const InputCloud& input, int repeat) {
-  const Measured timed = measure(phase_timer, input.cloud, repeat);
-  PhaseResult phases;
-  phases.call_median_ms = timed.timing.median_ms;
-  const auto phaseMedian = [&timed](double floodplane::PhaseTimes::*phase) {
-    std::vector<double> times;
-    for (const MethodRun& run : timed.runs) times.push_back((*run.phases).*phase);
-    return median(times);
-  };
-  for (const auto& [key, member] : phaseMembers()) {
-    (void)key;
-    phases.median.*member = phaseMedian(member);
-  }
-  return phases;
-}
-
-SceneResult compareScene(const Options& options, Methods& methods, const InputCloud& input) {
-  SceneResult scene;
-  scene.name = input.name;
-  scene.path = input.path;
-  scene.sensor = input.sensor;
-  scene.width = input.cloud->width;
-  scene.height = input.cloud->height;
-  scene.has_ground_truth = input.ground_truth.has_value();
-  scene.min_points = floodplane::eval::defaultMinPoints(scene.width, scene.height);
-
-  std::vector<Measured> measured;
+Json compareScene(const Options& options, Methods& methods, const InputCloud& input, MissingTuned& missing) {
+  const std::uint32_t min_points = floodplane::eval::defaultMinPoints(input.cloud->width, input.cloud->height);
+  Json scene = {{"name", input.name},
+                {"file", input.path},
+                {"width", input.cloud->width},
+                {"height", input.cloud->height},
+                {"ground_truth", input.ground_truth.has_value()},
+                {"min_points", min_points}};
+  if (!input.sensor.empty()) scene["sensor"] = input.sensor;
+  scene["methods"] = Json::object();
+  std::map<std::string, MethodRun> runs;  // the scored runs, for the pictures
   for (const auto& method : methods.selected) {
-    measured.push_back(measure(*method, input.cloud, options.repeat));
-    scene.methods.push_back(evaluate(method->name(), measured.back(), input, scene.min_points));
+    Measured measured = measure(*method, input.cloud, options.repeat);
+    scene["methods"][method->name()] = resultJson(measured, input, min_points);
+    runs[method->name()] = std::move(measured.first);
   }
-  for (const TunedMethod& tuned : methods.tuned) {
-    const auto method = tuned.by_sensor.find(input.sensor);
-    if (method == tuned.by_sensor.end()) {
-      if (!options.quiet) std::cerr << "pcd_compare: " << input.name << ": no tuned values of " << tuned.name << "\n";
+  for (const auto& [row, by_sensor] : methods.tuned) {
+    const auto method = by_sensor.find(input.sensor);
+    if (method == by_sensor.end()) {
+      missing[input.sensor.empty()
+                  ? "no sensor model (name the file <scene>.<sensor>.pcd, or pass --sensor " + joined(kSensors, "|") +
+                        ")"
+                  : "no values of " + row + " for sensor model '" + input.sensor + "' in " + options.tuned_file]
+          .push_back(input.name);
       continue;
     }
-    const Measured run = measure(*method->second, input.cloud, options.repeat);
-    scene.methods.push_back(evaluate(tuned.name, run, input, scene.min_points));
+    scene["methods"][row] = resultJson(measure(*method->second, input.cloud, options.repeat), input, min_points);
   }
-  if (options.resolutions) scene.resolutions = measureResolutions(options, methods, input, scene);
-  if (methods.phase_timer) scene.phases = measurePhases(*methods.phase_timer, input, options.repeat);
-  if (!options.png_dir.empty() || !options.png3d_dir.empty()) {
-    std::vector<std::pair<std::string, const MethodRun*>> runs;
-    for (std::size_t k = 0; k < methods.selected.size(); ++k) {
-      runs.emplace_back(methods.selected[k]->name(), &measured[k].first);
+  if (methods.phase_timer) {
+    const Measured timed = measure(*methods.phase_timer, input.cloud, options.repeat);
+    floodplane::PhaseTimes phases;
+    for (const auto& [key, member] : phaseMembers()) {
+      (void)key;
+      std::vector<double> times;
+      for (const floodplane::PhaseTimes& run : timed.phases) times.push_back(run.*member);
+      phases.*member = median(times);
     }
-    writeComparisonImages(options, input, runs, scene);
+    scene["phases"] = phasesJson(phases, timed.timing.median_ms);
   }
+  if (!options.png_dir.empty() || !options.png3d_dir.empty()) writeComparisonImages(options, input, scene, runs);
   return scene;
 }
 
-constexpr const char* kDescription =
-    "Compares plane segmentations of organized PCD files: floodplane (at sub-sampling 1 and "
-    "2), PCL's sequential RANSAC, Open3D's sequential RANSAC and PCL's "
-    "OrganizedMultiPlaneSegmentation, the baselines also at tuned values (--tuned, from "
-    "--tune). Prints the configuration, then Markdown tables of runtimes (median and min over "
-    "--repeat runs after a warm-up) and, for files with a ground-truth `label` field, "
-    "accuracy: mean and weighted IoU, Hoover counts and the false-plane fraction, as means "
-    "(over all files, then per sensor model for files named <scene>.<sensor>.pcd), per file "
-    "and method. INPUT is a PCD file or a directory (its *.pcd files, sorted).";
-
-// The methods named in --methods, each once: a method named twice would be timed twice and
-// collide in the tables.
-std::vector<std::string> uniqueMethods(const std::string& method_list) {
-  std::vector<std::string> methods;
-  for (const std::string& name : splitList(method_list)) {
-    if (std::find(methods.begin(), methods.end(), name) == methods.end()) methods.push_back(name);
-  }
-  return methods;
+std::string minutes(double seconds) {
+  char text[32];
+  const int whole = static_cast<int>(seconds + 0.5);
+  std::snprintf(text, sizeof text, "%d:%02d", whole / 60, whole % 60);
+  return text;
 }
 
-void addInputAndMethodOptions(CLI::App& app, Options& options, std::string& method_list) {
-  // No existence check here: a missing file is reported with the others, and the batch goes on.
-  app.add_option("inputs", options.inputs, "PCD files or directories of *.pcd (required unless --tune)");
-  // One comma-separated token, split here: a vector option would also swallow the INPUTs
-  // that follow it ("--methods omps scene.pcd").
-  app.add_option("--methods", method_list, "Methods to run, comma-separated, from " + joined(kMethodNames))
-      ->check([](const std::string& list) -> std::string {
-        for (const std::string& name : splitList(list)) {
-          if (!isMethodName(name)) return "unknown method '" + name + "' (use " + joined(kMethodNames) + ")";
-        }
-        return splitList(list).empty() ? "no method given" : "";
-      })
-      ->capture_default_str();
-  app.add_option("--repeat", options.repeat,
-                 "Timed runs per method and file, after one warm-up; 0: one run only, timed and scored "
-                 "(for large folders)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-}
-
-void addTuningOptions(CLI::App& app, Options& options) {
-  app.add_flag("--tuned", options.tuned,
-               "Also run each baseline among --methods at its tuned values (a row '<method> (tuned)'), "
-               "those of the scene's sensor model in --tuned-file");
-  app.add_option("--tuned-file", options.tuned_file, "The tuned values: written by --tune, read by --tuned")
-      ->capture_default_str();
-  app.add_option("--tune", options.tune_dir,
-                 "Instead of comparing: tune the baselines among --methods on this folder of "
-                 "<scene>.<sensor>.pcd files with labels (never the report split), maximising mean IoU "
-                 "per sensor model, and write --tuned-file")
-      ->check(CLI::ExistingDirectory);
-  app.add_option("--tune-grid", options.tune_grid_file,
-                 "JSON file of the values to try: {\"omps\": {\"angular_threshold\": [0.05, 0.09]}, ...}; "
-                 "only the baselines it names are tuned (default: the built-in grid)")
-      ->check(CLI::ExistingFile);
-  app.add_option("--tune-clouds", options.tune_clouds, "Clouds per sensor model in the tuning subset")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-}
-
-void addOutputOptions(CLI::App& app, Options& options) {
-  app.add_option("--csv", options.csv_file, "Also write the rows as CSV to this file");
-  app.add_option("--json", options.json_file, "Also write everything as JSON to this file");
-  app.add_option("--png", options.png_dir,
-                 "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | "
-                 "omps | floodplane/2 | floodplane (those run), segments coloured by the ground-truth plane "
-                 "they overlap most");
-  // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
-  // display (CI, headless machines), and each picture stays one row of panels wide.
-  app.add_option("--png3d", options.png3d_dir,
-                 "Write <scene>.png per file into this directory: the panels of --png rendered in 3-D "
-                 "(seen from above and to the right of the sensor, an arrow along each segment's normal). "
-                 "Needs an X display: on a machine without one, run under xvfb-run -a");
-  app.add_flag("--resolutions", options.resolutions, "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
-  app.add_flag("--phases", options.phases, "Also report floodplane's time per phase (Fig. 5), from separate runs");
-  app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the tables and errors");
-}
-
-// Compares every input, going on past files that cannot be read (listed in report.failed).
-void compareAll(const Options& options, Methods& methods, Report& report) {
+// Compares every input, going on past files that cannot be read (listed in report["failed"]).
+void compareAll(const Options& options, Methods& methods, Json& report, MissingTuned& missing) {
   const std::vector<floodplane::io::InputFile> files = floodplane::io::expandInputs(options.inputs);
+  const auto start = Clock::now();
   std::set<std::string> names;
   for (std::size_t i = 0; i < files.size(); ++i) {
     const floodplane::io::InputFile& file = files[i];
     if (!options.quiet && files.size() > 1) {
-      std::cerr << "pcd_compare: [" << i + 1 << "/" << files.size() << "] " << file.path << "\n";
+      const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      std::cerr << "pcd_compare: [" << i + 1 << "/" << files.size() << "] " << file.path;
+      if (i > 0) {
+        std::cerr << " (" << minutes(elapsed) << " so far, about "
+                  << minutes(elapsed / static_cast<double>(i) * static_cast<double>(files.size() - i)) << " left)";
+      }
+      std::cerr << std::endl;
     }
     try {
       if (!file.error.empty()) throw std::runtime_error(file.error);
       InputCloud input = loadInputCloud(file.path);
+      if (!options.sensor.empty()) input.sensor = options.sensor;
       // Scenes are named by their file name; two files of one name from different
       // directories would share a row label and an image file.
       if (!names.insert(input.name).second) {
         input.name = fs::path(file.path).parent_path().filename().string() + "/" + input.name;
         std::replace(input.name.begin(), input.name.end(), '/', '_');
       }
-      report.scenes.push_back(compareScene(options, methods, input));
+      report["scenes"].push_back(compareScene(options, methods, input, missing));
     } catch (const std::exception& error) {
       std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
-      report.failed.push_back(file.path);
+      report["failed"].push_back(file.path);
     }
   }
 }
 
-// Writes the CSV and JSON files asked for; false if one could not be written (said on stderr).
-bool writeReportFiles(const Options& options, const Report& report) {
-  try {
-    if (!options.csv_file.empty()) floodplane::io::writeBytesAtomically(options.csv_file, csvReport(report));
-    if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, jsonReport(report));
-  } catch (const std::exception& error) {
-    std::cerr << "pcd_compare: error: " << error.what() << "\n";
-    return false;
-  }
-  return true;
-}
+constexpr const char* kDescription =
+    "Compares plane segmentations of organized PCD files: floodplane (at sub-sampling 1 and 2, or 4 and 8), "
+    "PCL's sequential RANSAC, Open3D's sequential RANSAC and PCL's OrganizedMultiPlaneSegmentation, the "
+    "baselines also at tuned values (--tuned). Prints the configuration and the means per method (over all "
+    "files, then per sensor model): runtime (median and min over --repeat runs after a warm-up; the "
+    "sequential RANSACs, which take seconds, run once) and, for files with a ground-truth `label` field, mean "
+    "and weighted IoU, Hoover counts and the false-plane fraction. --json has every file and plane; "
+    "bench/compare_tables.py makes the per-file tables and CSV from it, bench/tune_baselines.py tunes the "
+    "baselines. INPUT is a PCD file or a directory (its *.pcd files, sorted).";
 
-void printFailures(const Report& report) {
-  if (report.failed.empty()) return;
-  std::cerr << "pcd_compare: " << report.failed.size() << " of " << report.failed.size() + report.scenes.size()
-            << " files failed:";
-  for (const std::string& file : report.failed) std::cerr << " " << file;
-  std::cerr << "\n";
-}
-
-// --tune: the grid (the file's, or the built-in one for the baselines among --methods), the
-// search, the file. Returns the exit code.
-int tune(const Options& options) {
-  try {
-    Grid grid = options.tune_grid_file.empty() ? defaultGrid() : readGrid(options.tune_grid_file);
-    for (auto entry = grid.begin(); entry != grid.end();) {
-      const bool selected =
-          std::find(options.methods.begin(), options.methods.end(), entry->first) != options.methods.end();
-      entry = selected ? std::next(entry) : grid.erase(entry);
-    }
-    if (grid.empty()) throw std::runtime_error("--methods names no baseline of the grid to tune");
-    TuningOptions tuning;
-    tuning.folder = options.tune_dir;
-    tuning.grid = std::move(grid);
-    tuning.output_file = options.tuned_file;
-    tuning.clouds_per_sensor = options.tune_clouds;
-    std::ostringstream discard;
-    tuneBaselines(tuning, options.quiet ? discard : std::cerr);
-  } catch (const std::exception& error) {
-    std::cerr << "pcd_compare: error: " << error.what() << "\n";
-    return 1;
-  }
-  if (!options.quiet) std::cerr << "pcd_compare: wrote " << options.tuned_file << "\n";
-  return 0;
+void addOptions(CLI::App& app, Options& options, std::string& method_list) {
+  // No existence check here: a missing file is reported with the others, and the batch goes on.
+  app.add_option("inputs", options.inputs, "PCD files or directories of *.pcd")->required();
+  // One comma-separated token, split here: a vector option would also swallow the INPUTs
+  // that follow it ("--methods omps scene.pcd").
+  app.add_option("--methods", method_list,
+                 "Methods to run, comma-separated, from " + joined(kDefaultMethods) + ", floodplane/4, floodplane/8")
+      ->check([](const std::string& list) -> std::string {
+        for (const std::string& name : splitList(list)) {
+          if (!isMethodName(name)) return "unknown method '" + name + "'";
+        }
+        return splitList(list).empty() ? "no method given" : "";
+      })
+      ->capture_default_str();
+  app.add_option("--repeat", options.repeat,
+                 "Timed runs per method and file after one warm-up (the sequential RANSACs run once); 0: one run "
+                 "only, timed and scored")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--json", options.json_file, "Write the whole report (every file, method and plane) as JSON");
+  app.add_option("--png", options.png_dir,
+                 "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | omps | "
+                 "floodplane (those run), segments coloured by the ground-truth plane they overlap most");
+  // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
+  // display (CI, headless machines).
+  app.add_option("--png3d", options.png3d_dir,
+                 "Write <scene>.png per file into this directory: the panels of --png in 3-D (an arrow along each "
+                 "segment's normal). Needs an X display: on a machine without one, run under xvfb-run -a");
+  app.add_flag("--resolutions", options.resolutions, "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
+  app.add_flag("--phases", options.phases, "Also time floodplane's phases (Fig. 5), in separate runs");
+  app.add_flag("--tuned", options.tuned,
+               "Also run each baseline among --methods at its tuned values for the file's sensor model (a row "
+               "'<method> (tuned)')");
+  app.add_option("--tuned-file", options.tuned_file,
+                 "The tuned values (bench/tune_baselines.py writes them); default: $FLOODPLANE_TUNED_FILE, else "
+                 "the one installed with pcd_compare");
+  app.add_option("--sensor", options.sensor,
+                 "The sensor model of every input, for --tuned and the means per sensor model; default: from "
+                 "file names <scene>.<sensor>.pcd")
+      ->check(CLI::IsMember(kSensors));
+  app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the means and errors");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   Options options;
-  std::string method_list = joined(kMethodNames, ",");
+  std::string method_list = joined(kDefaultMethods, ",");
   CLI::App app{kDescription, "pcd_compare"};
   floodplane::apps::addVersionFlag(app);
-  addInputAndMethodOptions(app, options, method_list);
-  addOutputOptions(app, options);
-  addTuningOptions(app, options);
+  addOptions(app, options, method_list);
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
-  options.methods = uniqueMethods(method_list);
-  if (!options.tune_dir.empty()) return tune(options);
-  if (options.inputs.empty()) return floodplane::apps::usageError(app, "no INPUT given");
+  options.methods = splitList(method_list + (options.resolutions ? "," + joined(kResolutions, ",") : ""));
   if (!options.png3d_dir.empty()) {
     // Before any work: the comparison can take minutes, and every image would fail alike.
     if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {
@@ -552,20 +413,36 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-
+  Json report = {{"configuration", configuration(options)}, {"scenes", Json::array()}, {"failed", Json::array()}};
   Methods methods;
   try {
-    methods = makeMethods(options);
+    if (options.tuned && options.tuned_file.empty()) options.tuned_file = defaultTunedFile();
+    methods = makeMethods(options, report["configuration"]);
   } catch (const std::exception& error) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
     return 1;
   }
-  Report report;
-  report.configuration = configuration(options, methods);
   if (!options.quiet) std::cout << markdownConfiguration(report) << std::flush;
-  compareAll(options, methods, report);
-  std::cout << markdownTables(report) << std::flush;
-  const bool written = writeReportFiles(options, report);
-  printFailures(report);
-  return report.failed.empty() && written ? 0 : 1;
+  MissingTuned missing;
+  compareAll(options, methods, report, missing);
+  addMeans(report);
+  std::cout << markdownMeans(report) << std::flush;
+  bool written = true;
+  try {
+    if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, report.dump(2) + "\n");
+  } catch (const std::exception& error) {
+    std::cerr << "pcd_compare: error: " << error.what() << "\n";
+    written = false;
+  }
+  for (const auto& [reason, files] : missing) {
+    std::cerr << "pcd_compare: --tuned: no tuned rows for " << files.size() << " file(s), " << reason << ": "
+              << joined(files) << "\n";
+  }
+  const std::size_t failed = report["failed"].size();
+  if (failed > 0) {
+    std::cerr << "pcd_compare: " << failed << " of " << failed + report["scenes"].size() << " files failed:";
+    for (const auto& file : report["failed"]) std::cerr << " " << file.get<std::string>();
+    std::cerr << "\n";
+  }
+  return failed == 0 && written ? 0 : 1;
 }

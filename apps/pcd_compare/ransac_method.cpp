@@ -32,6 +32,7 @@ class RansacMethod : public Method {
   }
 
   std::string name() const override { return name_; }
+  bool slow() const override { return true; }
 
   std::string parameters() const override {
     std::ostringstream text;

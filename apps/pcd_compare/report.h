@@ -1,5 +1,10 @@
 #pragma once
-// The results of a comparison and their three renderings: Markdown (stdout), CSV and JSON.
+// pcd_compare's report: one JSON document (ordered as it was filled: files and methods in run
+// order), which the driver fills scene by scene and --json writes; the means derived from it;
+// the Markdown printed on stdout (configuration and means). Every other table, and the CSV,
+// bench/compare_tables.py makes from the JSON.
+
+#include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <optional>
@@ -12,62 +17,37 @@
 
 namespace pcd_compare {
 
+using Json = nlohmann::ordered_json;
+
+/// A method's time on one scene: median and min of its timed runs, and the medians of its
+/// named parts (OMPS: "normals"). [ms]
 struct Timing {
   double median_ms = 0.0;
   double min_ms = 0.0;
-  /// Medians of the method's named parts (OMPS: "normals"). [ms]
   std::vector<std::pair<std::string, double>> parts_median_ms;
 };
 
-struct MethodResult {
-  std::string method;
-  Timing timing;
-  std::size_t planes = 0;  ///< distinct non-zero labels the method gave
-  /// Against the ground truth, when the file has one.
-  std::optional<floodplane::eval::SegmentationScores> scores;
-};
+/// A method's entry in a scene: timing, planes found and, against ground truth, the scores
+/// (mean and weighted IoU, Hoover counts, false-plane fraction, per plane; NaN as null).
+Json methodJson(const Timing& timing, std::size_t planes,
+                const std::optional<floodplane::eval::SegmentationScores>& scores);
 
 /// floodplane's phases (Fig. 5, and the preparation before it) in call order: each one's name
 /// in the JSON and its member of PhaseTimes.
 const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>>& phaseMembers();
+/// A scene's "phases": each phase's median [ms] and share of their total, and the call's median.
+Json phasesJson(const floodplane::PhaseTimes& median, double call_median_ms);
 
-struct PhaseResult {
-  floodplane::PhaseTimes median;  ///< per phase, the median over the timed runs [ms]
-  double call_median_ms = 0.0;    ///< the whole call with the phase timer on [ms]
-};
+/// Completes a report whose "scenes" are filled: each method's ratio_to_floodplane in its
+/// scene, then "means" (per method over every scene) and "means_by_sensor" (per sensor model
+/// named by the scenes, then per method). Times average over every scene, accuracy over the
+/// scenes whose ground truth keeps a plane (Hoover counts per frame, as PEAC and CAPE report
+/// them), the false-plane fraction over the scenes where it is defined.
+void addMeans(Json& report);
 
-struct SceneResult {
-  std::string name;
-  std::string path;
-  /// The sensor model named in the file name (<scene>.<sensor>.pcd), empty when none is:
-  /// scenes with one are also averaged per sensor model.
-  std::string sensor;
-  std::size_t width = 0;
-  std::size_t height = 0;
-  bool has_ground_truth = false;
-  std::uint32_t min_points = 0;       ///< the metrics' size rule at this resolution
-  std::vector<MethodResult> methods;  ///< in --methods order
-  /// floodplane at sub-sampling 1, 2, 4, 8 (--resolutions), with the factor.
-  std::vector<std::pair<int, MethodResult>> resolutions;
-  std::optional<PhaseResult> phases;  ///< --phases
-};
-
-struct Report {
-  /// Printed first and stored in the JSON: (key, value) in order.
-  std::vector<std::pair<std::string, std::string>> configuration;
-  std::vector<SceneResult> scenes;
-  std::vector<std::string> failed;  ///< files that could not be compared
-};
-
-/// The tables: the means per method (over every file, then one table per sensor model), the
-/// mean IoU per file and method, one row per file and method; then the sub-sampling and phase
-/// tables when they were measured.
-std::string markdownTables(const Report& report);
-/// The configuration as a Markdown list.
-std::string markdownConfiguration(const Report& report);
-/// One line per scene and method (and sub-sampling factor); no mean rows.
-std::string csvReport(const Report& report);
-/// Everything, including per-plane IoU; NaN as null.
-std::string jsonReport(const Report& report);
+/// The report's "configuration" as a Markdown list.
+std::string markdownConfiguration(const Json& report);
+/// The means as Markdown tables: every file, then one table per sensor model.
+std::string markdownMeans(const Json& report);
 
 }  // namespace pcd_compare

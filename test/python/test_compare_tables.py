@@ -290,9 +290,10 @@ def test_the_tables_of_a_committed_comparison_are_those_pcd_compare_printed(tmp_
     markdown = (RESULTS / f"{name}.md").read_text()
     data = in_run_order(json.loads((RESULTS / f"{name}.json").read_text()), markdown)
     out = tmp_path / "out.csv"
-    done = run(tmp_path, data, "--csv", out)
+    # The committed JSONs were written with their configuration's keys sorted, the Markdown in
+    # run order: everything after the configuration.
+    done = run(tmp_path, data, "--csv", out, "--tables", "means,iou,files,subsampling,phases")
     assert done.returncode == 0, done.stderr
-    # Everything after the configuration, which pcd_compare still prints itself.
     expected = markdown[markdown.index("## Means per method"):]
     assert done.stdout == expected
     # The CSV as pcd_compare wrote it, but for floodplane/N's sub-sampling factor: 1 there.
@@ -306,3 +307,13 @@ def test_the_tables_of_a_committed_comparison_are_those_pcd_compare_printed(tmp_
                 row[3] = factor.group(1)
         assert list(csv.reader(out.read_text().splitlines())) == expected
         assert out.read_text().count("\n") == committed.read_text().count("\n")
+
+
+def test_the_configuration_comes_first_as_pcd_compare_prints_it(tmp_path):
+    data = {"configuration": {"floodplane": "0.1.0", "PCL": "1.13.0"}, "scenes": []}
+    done = run(tmp_path, data, "--tables", "configuration")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "## Configuration\n\n- **floodplane**: 0.1.0\n- **PCL**: 1.13.0\n\n"
+    done = run(tmp_path, {"configuration": "text", "scenes": []})
+    assert done.returncode == 1
+    assert "is not a pcd_compare report" in done.stderr

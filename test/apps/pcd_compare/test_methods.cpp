@@ -1,12 +1,12 @@
 // pcd_compare's methods as a library: Open3D's sequential RANSAC and floodplane at
 // sub-sampling 2 on small rendered scenes (planes found, labels in range, determinism, a cloud
-// that is mostly NaN), the baselines' parameter table, and the sequence truncation the tuner
-// scores min_inliers with.
+// that is mostly NaN), the baselines made from values by name, and the tuned values' file.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <random>
 #include <set>
@@ -96,7 +96,8 @@ TEST(Open3dRansac, DistanceThresholdAndMinInliersChangeTheResult) {
   // A larger min_inliers stops the same sequence earlier: a prefix of the planes.
   const std::vector<std::uint32_t> fewer = makeOpen3dRansacMethod({0.01, 3000})->run(input.cloud).labels;
   EXPECT_LT(planeLabels(fewer).size(), planeLabels(standard).size());
-  EXPECT_EQ(fewer, truncateSequence(standard, 3000));
+  const std::size_t kept = planeLabels(fewer).size();
+  for (std::size_t i = 0; i < fewer.size(); ++i) ASSERT_EQ(fewer[i], standard[i] <= kept ? standard[i] : 0u) << i;
 }
 
 TEST(FloodplaneSubsampled, FindsTheStaircasePlanesWithLabelsInRange) {
@@ -132,32 +133,49 @@ TEST(Open3dRansac, CloudWithFewerValidPointsThanASampleGivesNoPlane) {
 
 TEST(Baselines, MakeEachMethodWithItsDefaultsAndRejectBadValues) {
   for (const std::string name : {"omps", "ransac", "open3d_ransac"}) {
-    const Baseline* baseline = findBaseline(name);
-    ASSERT_NE(baseline, nullptr) << name;
-    EXPECT_EQ(baseline->make({}, name + " (tuned)")->name(), name + " (tuned)");
-    EXPECT_THROW(baseline->make({{"no_such_parameter", 1.0}}, name), std::invalid_argument) << name;
-    EXPECT_THROW(baseline->make({{"min_inliers", 2.5}}, name), std::invalid_argument) << name;
-    EXPECT_THROW(baseline->make({{"distance_threshold", -0.01}}, name), std::invalid_argument) << name;
+    ASSERT_TRUE(isTunable(name)) << name;
+    EXPECT_EQ(makeBaseline(name, {}, name + " (tuned)")->name(), name + " (tuned)");
+    EXPECT_THROW(makeBaseline(name, {{"no_such_parameter", 1.0}}, name), std::invalid_argument) << name;
+    EXPECT_THROW(makeBaseline(name, {{"min_inliers", 2.5}}, name), std::invalid_argument) << name;
+    EXPECT_THROW(makeBaseline(name, {{"distance_threshold", -0.01}}, name), std::invalid_argument) << name;
   }
-  EXPECT_EQ(findBaseline("floodplane"), nullptr);
-  EXPECT_EQ(findBaseline("ransac")->truncation_parameter, "min_inliers");
-  EXPECT_EQ(findBaseline("omps")->truncation_parameter, "");
+  EXPECT_FALSE(isTunable("floodplane"));
+  EXPECT_THROW(makeBaseline("floodplane", {}, "floodplane"), std::invalid_argument);
+  // The sequential RANSACs are timed once by pcd_compare, the others repeatedly.
+  EXPECT_TRUE(makeBaseline("ransac", {}, "ransac")->slow());
+  EXPECT_TRUE(makeBaseline("open3d_ransac", {}, "open3d_ransac")->slow());
+  EXPECT_FALSE(makeBaseline("omps", {}, "omps")->slow());
+  EXPECT_FALSE(makeFloodplaneMethod(1)->slow());
 }
 
-TEST(Baselines, TunedValuesReachTheMethod) {
-  const std::string described = findBaseline("omps")->make({{"maximum_curvature", 0.05}}, "omps")->parameters();
+TEST(Baselines, TunedValuesReachTheMethodAndItsDescription) {
+  const std::string described = makeBaseline("omps", {{"maximum_curvature", 0.05}}, "omps")->parameters();
   EXPECT_NE(described.find("maximum curvature 0.05"), std::string::npos) << described;
-  const std::string ransac = findBaseline("ransac")->make({{"distance_threshold", 0.03}}, "ransac")->parameters();
+  const std::string ransac = makeBaseline("ransac", {{"distance_threshold", 0.03}}, "ransac")->parameters();
   EXPECT_NE(ransac.find("distance threshold 0.03 m"), std::string::npos) << ransac;
+  // Every parameter, the defaults filled in, in one order: what bench/tune_baselines.py reads.
+  EXPECT_EQ(describeValues("ransac", {{"min_inliers", 300}}), "distance_threshold=0.01, min_inliers=300");
+  EXPECT_EQ(describeValues("omps", {}).rfind("angular_threshold=", 0), 0u);
 }
 
-TEST(TruncateSequence, KeepsThePlanesBeforeTheFirstTooSmallOne) {
-  // Plane 1: 4 pixels, plane 2: 2, plane 3: 3 (larger than 2, but after it).
-  const std::vector<std::uint32_t> labels = {1, 1, 2, 0, 1, 3, 3, 3, 1, 2};
-  EXPECT_EQ(truncateSequence(labels, 1), labels);
-  EXPECT_EQ(truncateSequence(labels, 2), labels);
-  EXPECT_EQ(truncateSequence(labels, 3), (std::vector<std::uint32_t>{1, 1, 0, 0, 1, 0, 0, 0, 1, 0}));
-  EXPECT_EQ(truncateSequence(labels, 5), std::vector<std::uint32_t>(labels.size(), 0));
+TEST(Baselines, TunedValuesFileIsReadAndCheckedByName) {
+  const std::string dir = ::testing::TempDir();
+  const std::string good = dir + "/pcd_compare_tuned_good.json";
+  std::ofstream(good) << R"({"methods": {"omps": {"by_sensor": {"kinect": {"parameters": {"min_inliers": 200}},
+                                                               "none": {"parameters": {}}}}}})";
+  const TunedValues tuned = readTunedValues(good);
+  EXPECT_EQ(tuned.at("omps").at("kinect").at("min_inliers"), 200.0);
+  EXPECT_TRUE(tuned.at("omps").at("none").empty());
+  const std::string bad = dir + "/pcd_compare_tuned_bad.json";
+  std::ofstream(bad) << R"({"methods": {"omps": {"by_sensor": {"kinect": {"parameters": {"bogus": 1}}}}}})";
+  try {
+    readTunedValues(bad);
+    FAIL() << "a bad parameter was accepted";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(bad + ": omps has no parameter 'bogus'"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_THROW(readTunedValues(dir + "/no_such_file.json"), std::runtime_error);
 }
 
 }  // namespace

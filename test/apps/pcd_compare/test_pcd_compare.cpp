@@ -1,5 +1,5 @@
 // pcd_compare end to end: the real binary on small rendered scenes, checking its exit codes,
-// its Markdown table, its JSON and CSV files, its images and its error reports.
+// its Markdown means, its JSON report, its images and its error reports.
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -58,37 +58,33 @@ int meanRowCount(const std::string& markdown, const std::string& block, const st
   return count;
 }
 
-// Number of Markdown rows `| <scene> | <method> |`.
-int rowCount(const std::string& markdown, const std::string& scene, const std::string& method) {
-  const std::string row = "| " + scene + " | " + method + " |";
-  int count = 0;
-  for (std::size_t at = markdown.find(row); at != std::string::npos; at = markdown.find(row, at + 1)) {
-    ++count;
-  }
-  return count;
+// The names of the scenes of a JSON report, in report order.
+std::vector<std::string> sceneNames(const nlohmann::json& report) {
+  std::vector<std::string> names;
+  for (const auto& scene : report["scenes"]) names.push_back(scene["name"]);
+  return names;
 }
 
 TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
   const fs::path json_file = dir_ / "out.json";
-  const fs::path csv_file = dir_ / "out.csv";
-  const Result outcome = run("--repeat 2 --methods floodplane,ransac,omps --json " + quote(json_file.string()) +
-                             " --csv " + quote(csv_file.string()) + " " + quote(kTabletop) + " " + quote(kStaircase));
+  const Result outcome = run("--repeat 2 --methods floodplane,ransac,omps --json " + quote(json_file.string()) + " " +
+                             quote(kTabletop) + " " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   for (const std::string method : {"floodplane", "ransac", "omps"}) {
-    EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", method), 1) << method;
-    EXPECT_EQ(rowCount(outcome.out, "staircase.none", method), 1) << method;
     EXPECT_EQ(meanRowCount(outcome.out, "all files (2)", method, 2), 1) << method;
     // The configuration names every method with its parameters before the numbers.
     const std::size_t config = outcome.out.find("**method " + method + "**");
     ASSERT_NE(config, std::string::npos) << method;
-    EXPECT_LT(config, outcome.out.find("| scene |"));
+    EXPECT_LT(config, outcome.out.find("## Means per method"));
   }
   EXPECT_NE(outcome.out.find("PCL"), std::string::npos);
-  // Progress per file on stderr when there are several.
-  EXPECT_NE(outcome.err.find("[2/2]"), std::string::npos);
+  // Progress per file on stderr when there are several, with the time left after the first.
+  EXPECT_NE(outcome.err.find("[1/2] " + kTabletop + "\n"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("[2/2] " + kStaircase + " ("), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find(" left)"), std::string::npos) << outcome.err;
 
   const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
-  ASSERT_EQ(json["scenes"].size(), 2u);
+  ASSERT_EQ(sceneNames(json), (std::vector<std::string>{"tabletop.kinect", "staircase.none"}));
   for (const auto& scene : json["scenes"]) {
     EXPECT_TRUE(scene["ground_truth"].get<bool>());
     ASSERT_EQ(scene["methods"].size(), 3u);
@@ -131,24 +127,32 @@ TEST_F(PcdCompare, ComparesEveryMethodOnEveryScene) {
     EXPECT_EQ(json["means_by_sensor"]["none"][method]["mean_iou"], staircase["methods"][method]["mean_iou"]);
   }
   EXPECT_NE(outcome.out.find("| noise | false planes |"), std::string::npos);
+  // Methods in --methods order, in the JSON as in the tables.
+  std::vector<std::string> order;
+  const auto in_file_order = nlohmann::ordered_json::parse(readFile(json_file))["scenes"][0]["methods"];
+  for (const auto& [method, result] : in_file_order.items()) order.push_back(method);
+  EXPECT_EQ(order, (std::vector<std::string>{"floodplane", "ransac", "omps"}));
+  EXPECT_LT(outcome.out.find("| floodplane | 2 |"), outcome.out.find("| ransac | 2 |"));
+}
 
-  // CSV: a header and one line per scene and method.
-  std::istringstream csv(readFile(csv_file));
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(csv, line);) {
-    lines.push_back(line);
-  }
-  ASSERT_EQ(lines.size(), 7u);
-  EXPECT_EQ(lines[0].rfind("scene,file,method,", 0), 0u);
-  EXPECT_EQ(lines[0].substr(lines[0].rfind(',') + 1), "false_plane_fraction");
+// The sequential RANSACs take seconds a cloud: timed once, on the scored run, whatever
+// --repeat says; the other methods --repeat times after the warm-up.
+TEST_F(PcdCompare, SlowBaselinesAreTimedOnceAndTheOthersRepeatedly) {
+  const fs::path json_file = dir_ / "out.json";
+  const Result outcome =
+      run("--repeat 5 --quiet --methods ransac,omps --json " + quote(json_file.string()) + " " + quote(kStaircase));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const nlohmann::json methods = nlohmann::json::parse(readFile(json_file))["scenes"][0]["methods"];
+  EXPECT_EQ(methods["ransac"]["median_ms"], methods["ransac"]["min_ms"]);
+  EXPECT_LT(methods["omps"]["min_ms"].get<double>(), methods["omps"]["median_ms"].get<double>());
 }
 
 TEST_F(PcdCompare, MethodsOptionRunsOnlyTheChosenMethods) {
   const Result outcome = run("--repeat 2 --quiet --methods omps,floodplane " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps"), 1);
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "ransac"), 0);
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "floodplane", 1), 1);
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "omps", 1), 1);
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "ransac", 1), 0);
   // --quiet: the tables but no configuration.
   EXPECT_EQ(outcome.out.find("## Configuration"), std::string::npos);
 }
@@ -158,7 +162,8 @@ TEST_F(PcdCompare, MissingFileIsReportedByNameAndTheOtherFilesAreStillCompared) 
   const Result outcome = run("--repeat 2 --methods floodplane " + quote(missing) + " " + quote(kStaircase));
   EXPECT_EQ(outcome.exit_code, 1);
   EXPECT_NE(outcome.err.find(missing + ": no such file"), std::string::npos) << outcome.err;
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1) << outcome.out;
+  EXPECT_NE(outcome.err.find("1 of 2 files failed: " + missing), std::string::npos) << outcome.err;
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "floodplane", 1), 1) << outcome.out;
 }
 
 TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
@@ -180,14 +185,15 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
   EXPECT_NE(outcome.err.find(text.string() + ": not a PCD file"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find(flat.string() + ": unorganized cloud"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find(no_xyz.string() + ": the cloud has no x y z fields"), std::string::npos) << outcome.err;
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "floodplane"), 1);
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "floodplane", 1), 1);
 }
 
 TEST_F(PcdCompare, BadOptionsExitWithCodeTwo) {
   EXPECT_EQ(run("--no-such-option " + quote(kStaircase)).exit_code, 2);
   EXPECT_EQ(run("--methods floodplane,watershed " + quote(kStaircase)).exit_code, 2);
   EXPECT_EQ(run("--repeat -1 " + quote(kStaircase)).exit_code, 2);
-  EXPECT_EQ(run("--tune-clouds 0 --tune " + quote(dir_.string())).exit_code, 2);
+  EXPECT_EQ(run("--sensor phone " + quote(kStaircase)).exit_code, 2);
+  EXPECT_EQ(run("--methods floodplane/3 " + quote(kStaircase)).exit_code, 2);
   const Result no_input = run("--repeat 2");
   EXPECT_EQ(no_input.exit_code, 2);
   EXPECT_NE(no_input.err.find("Usage"), std::string::npos) << no_input.err;
@@ -196,7 +202,9 @@ TEST_F(PcdCompare, BadOptionsExitWithCodeTwo) {
 TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
   const Result help = run("--help");
   EXPECT_EQ(help.exit_code, 0);
-  EXPECT_NE(help.out.find("--resolutions"), std::string::npos);
+  for (const std::string option : {"--resolutions", "--sensor", "--tuned-file", "--png3d"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+  }
   const Result version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_FALSE(version.out.empty());
@@ -242,7 +250,7 @@ TEST_F(PcdCompare, CloudWithoutLabelsGivesRuntimeOnly) {
   const Result outcome =
       run("--repeat 2 --methods floodplane,omps --json " + quote(json_file.string()) + " " + quote(file.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  EXPECT_EQ(rowCount(outcome.out, "unlabelled", "floodplane"), 1);
+  EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "floodplane", 1), 1);
   EXPECT_EQ(outcome.out.find("mean IoU"), std::string::npos);
   const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
   const auto& scene = json["scenes"][0];
@@ -255,13 +263,13 @@ TEST_F(PcdCompare, DirectoryInputComparesItsPcdFilesInSortedOrder) {
   fs::copy_file(kTabletop, dir_ / "b_tabletop.pcd");
   fs::copy_file(kStaircase, dir_ / "a_staircase.pcd");
   std::ofstream(dir_ / "notes.txt") << "not a cloud, and not named .pcd\n";
-  const Result outcome = run("--repeat 2 --methods floodplane " + quote(dir_.string()));
+  const fs::path json_file = dir_ / "out" / "report.json";
+  fs::create_directories(json_file.parent_path());
+  const Result outcome =
+      run("--repeat 2 --methods floodplane --json " + quote(json_file.string()) + " " + quote(dir_.string()));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  const std::size_t first = outcome.out.find("| a_staircase | floodplane |");
-  const std::size_t second = outcome.out.find("| b_tabletop | floodplane |");
-  ASSERT_NE(first, std::string::npos);
-  ASSERT_NE(second, std::string::npos);
-  EXPECT_LT(first, second);
+  EXPECT_EQ(sceneNames(nlohmann::json::parse(readFile(json_file))),
+            (std::vector<std::string>{"a_staircase", "b_tabletop"}));
 }
 
 TEST_F(PcdCompare, AveragesPerSensorModelNamedInTheFileName) {
@@ -296,16 +304,18 @@ TEST_F(PcdCompare, PngShowsGroundTruthAndEachMethodSideBySide) {
 
 TEST_F(PcdCompare, ResolutionsAndPhasesAddTheirTables) {
   const fs::path json_file = dir_ / "out.json";
-  const Result outcome = run("--repeat 2 --quiet --methods ransac --resolutions --phases --json " +
+  const Result outcome = run("--repeat 2 --quiet --methods ransac,floodplane/2 --resolutions --phases --json " +
                              quote(json_file.string()) + " " + quote(kStaircase));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  EXPECT_NE(outcome.out.find("Table III"), std::string::npos);
-  EXPECT_NE(outcome.out.find("Fig. 5"), std::string::npos);
   const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
   const auto& scene = json["scenes"][0];
-  for (const std::string factor : {"1", "2", "4", "8"}) {
-    ASSERT_TRUE(scene["resolutions"].contains(factor)) << factor;
-    expectIouAveragesOfThePlanes(scene["resolutions"][factor], "sub-sampling " + factor);
+  // floodplane/2 once, although both --methods and --resolutions name it; in run order.
+  std::vector<std::string> order;
+  const auto in_file_order = nlohmann::ordered_json::parse(readFile(json_file))["scenes"][0]["methods"];
+  for (const auto& [method, result] : in_file_order.items()) order.push_back(method);
+  EXPECT_EQ(order, (std::vector<std::string>{"ransac", "floodplane/2", "floodplane", "floodplane/4", "floodplane/8"}));
+  for (const std::string method : {"floodplane", "floodplane/2", "floodplane/4", "floodplane/8"}) {
+    expectIouAveragesOfThePlanes(scene["methods"][method], method);
   }
   double share_sum = 0.0;
   for (const auto& [phase, share] : scene["phases"]["share"].items()) {
@@ -319,104 +329,87 @@ TEST_F(PcdCompare, ResolutionsAndPhasesAddTheirTables) {
 
 namespace {
 
-const std::string kFarWall = std::string(PCD_COMPARE_SCENE_DIR) + "/far_wall.none.pcd";
-
-// A tuning file as --tune writes it, with one OMPS value for the sensor model "none".
+// A tuning file as bench/tune_baselines.py writes it, with one OMPS value for the sensor model
+// "none".
 void writeTunedFile(const fs::path& file, double maximum_curvature) {
   nlohmann::json json;
   json["methods"]["omps"]["by_sensor"]["none"]["parameters"]["maximum_curvature"] = maximum_curvature;
   std::ofstream(file) << json.dump();
 }
 
-class PcdCompareTuning : public PcdCompare {
- protected:
-  // Two exact clouds of one sensor model: far_wall (on which OMPS's default maximum curvature
-  // rejects every region) and the staircase.
-  fs::path tuningFolder() const {
-    const fs::path folder = dir_ / "tune";
-    fs::create_directories(folder);
-    fs::copy_file(kFarWall, folder / "a.none.pcd", fs::copy_options::overwrite_existing);
-    fs::copy_file(kStaircase, folder / "b.none.pcd", fs::copy_options::overwrite_existing);
-    return folder;
-  }
+using PcdCompareTuned = PcdCompare;
 
-  // OMPS's mean IoU over `folder` at one maximum curvature, through --tuned.
-  double ompsMeanIou(const fs::path& folder, double maximum_curvature) const {
-    const fs::path tuned = dir_ / "by_hand.json";
-    const fs::path json_file = dir_ / "by_hand_out.json";
-    writeTunedFile(tuned, maximum_curvature);
-    const Result outcome = run("--repeat 0 --quiet --methods omps --tuned --tuned-file " + quote(tuned.string()) +
-                               " --json " + quote(json_file.string()) + " " + quote(folder.string()));
-    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
-    return nlohmann::json::parse(readFile(json_file))["means"]["omps (tuned)"]["mean_iou"].get<double>();
-  }
-};
-
-TEST_F(PcdCompareTuning, PicksTheBetterOfTwoGridPointsAndKeepsOtherMethodsOfTheFile) {
-  const fs::path folder = tuningFolder();
-  const fs::path grid = dir_ / "grid.json";
-  std::ofstream(grid) << R"({"omps": {"maximum_curvature": [0.001, 0.1]}})";
-  const fs::path tuned = dir_ / "tuned.json";
-  std::ofstream(tuned) << R"({"methods": {"ransac": {"by_sensor": {"none": {"parameters": {"min_inliers": 300}}}}}})";
-
-  const Result outcome = run("--tune " + quote(folder.string()) + " --methods omps --tune-grid " +
-                             quote(grid.string()) + " --tuned-file " + quote(tuned.string()));
-  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  EXPECT_NE(outcome.err.find("tune omps [none] #2"), std::string::npos) << outcome.err;
-  const nlohmann::json result = nlohmann::json::parse(readFile(tuned));
-
-  const double strict = ompsMeanIou(folder, 0.001);
-  const double loose = ompsMeanIou(folder, 0.1);
-  ASSERT_GT(std::abs(strict - loose), 1e-6) << "the two grid points must score differently";
-  const auto& winner = result["methods"]["omps"]["by_sensor"]["none"];
-  EXPECT_DOUBLE_EQ(winner["parameters"]["maximum_curvature"].get<double>(), strict > loose ? 0.001 : 0.1);
-  EXPECT_NEAR(winner["mean_iou"].get<double>(), std::max(strict, loose), 1e-12);
-  EXPECT_NEAR(winner["default_mean_iou"].get<double>(), strict, 1e-12);
-  EXPECT_EQ(winner["clouds"].size(), 2u);
-  EXPECT_EQ(winner["settings_evaluated"], 2);
-  EXPECT_EQ(result["methods"]["omps"]["grid"]["maximum_curvature"].size(), 2u);
-  // The method not tuned in this run keeps its earlier entry.
-  EXPECT_EQ(result["methods"]["ransac"]["by_sensor"]["none"]["parameters"]["min_inliers"], 300);
-}
-
-TEST_F(PcdCompareTuning, TunedRowsFollowTheSensorModelOfEachFile) {
+TEST_F(PcdCompareTuned, TunedRowsFollowTheSensorModelOfEachFileAndSayWhyOneIsMissing) {
   const fs::path tuned = dir_ / "tuned.json";
   writeTunedFile(tuned, 0.1);
+  const fs::path json_file = dir_ / "out.json";
   const Result outcome = run("--repeat 0 --methods floodplane,omps --tuned --tuned-file " + quote(tuned.string()) +
-                             " " + quote(kStaircase) + " " + quote(kTabletop));
+                             " --json " + quote(json_file.string()) + " " + quote(kStaircase) + " " + quote(kTabletop));
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps"), 1);
-  EXPECT_EQ(rowCount(outcome.out, "staircase.none", "omps (tuned)"), 1);
+  const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+  ASSERT_EQ(sceneNames(json), (std::vector<std::string>{"staircase.none", "tabletop.kinect"}));
+  EXPECT_TRUE(json["scenes"][0]["methods"].contains("omps (tuned)"));
   // No tuned values for the Kinect model in the file: no tuned row, and a note why.
-  EXPECT_EQ(rowCount(outcome.out, "tabletop.kinect", "omps (tuned)"), 0);
-  EXPECT_NE(outcome.err.find("tabletop.kinect: no tuned values of omps (tuned)"), std::string::npos) << outcome.err;
-  EXPECT_NE(outcome.out.find("**method omps (tuned) [none]**"), std::string::npos);
+  EXPECT_FALSE(json["scenes"][1]["methods"].contains("omps (tuned)"));
+  EXPECT_NE(outcome.err.find("--tuned: no tuned rows for 1 file(s), no values of omps (tuned) for sensor model "
+                             "'kinect' in " +
+                             tuned.string() + ": tabletop.kinect"),
+            std::string::npos)
+      << outcome.err;
+  // The configuration gives every value, defaults filled in, then the method's own description.
+  EXPECT_NE(outcome.out.find("**method omps (tuned) [none]**: angular_threshold="), std::string::npos);
   EXPECT_NE(outcome.out.find("maximum curvature 0.1;"), std::string::npos);
   EXPECT_EQ(meanRowCount(outcome.out, "sensor model none (1 files)", "omps (tuned)", 1), 1) << outcome.out;
 }
 
-TEST_F(PcdCompareTuning, BadTuningInputsAreReportedByName) {
+// A user's own file has no sensor model in its name: --tuned says so, even with --quiet, and
+// --sensor picks the model.
+TEST_F(PcdCompareTuned, SensorOptionPicksTheTunedValuesOfFilesWithoutAModelInTheirName) {
+  const fs::path tuned = dir_ / "tuned.json";
+  writeTunedFile(tuned, 0.1);
+  fs::copy_file(kStaircase, dir_ / "myscan.pcd");
+  const std::string common = "--repeat 0 --quiet --methods omps --tuned --tuned-file " + quote(tuned.string());
+  const Result unnamed = run(common + " " + quote((dir_ / "myscan.pcd").string()));
+  ASSERT_EQ(unnamed.exit_code, 0) << unnamed.err;
+  EXPECT_NE(unnamed.err.find("no tuned rows for 1 file(s), no sensor model (name the file <scene>.<sensor>.pcd, or "
+                             "pass --sensor kinect|scanner|none): myscan"),
+            std::string::npos)
+      << unnamed.err;
+  EXPECT_EQ(meanRowCount(unnamed.out, "all files (1)", "omps (tuned)", 1), 0);
+
+  const Result chosen = run(common + " --sensor none " + quote((dir_ / "myscan.pcd").string()));
+  ASSERT_EQ(chosen.exit_code, 0) << chosen.err;
+  EXPECT_EQ(chosen.err.find("no tuned rows"), std::string::npos) << chosen.err;
+  EXPECT_EQ(meanRowCount(chosen.out, "all files (1)", "omps (tuned)", 1), 1) << chosen.out;
+  EXPECT_EQ(meanRowCount(chosen.out, "sensor model none (1 files)", "omps", 1), 1) << chosen.out;
+}
+
+// No source-tree path in the binary: the tuned values come from --tuned-file, else
+// $FLOODPLANE_TUNED_FILE, else the copy beside the binary (build tree) or in share/floodplane.
+TEST_F(PcdCompareTuned, DefaultTunedFileIsTheEnvironmentsOrTheOneBesideTheBinary) {
+  const Result beside = run("--repeat 0 --quiet --methods omps --tuned " + quote(kStaircase));
+  ASSERT_EQ(beside.exit_code, 0) << beside.err;
+  EXPECT_EQ(meanRowCount(beside.out, "all files (1)", "omps (tuned)", 1), 1) << beside.out;
+
+  const fs::path missing = dir_ / "missing.json";
+  const Result from_environment = runShell("FLOODPLANE_TUNED_FILE=" + quote(missing.string()) + " " +
+                                           quote(PCD_COMPARE_BINARY) + " --tuned " + quote(kStaircase));
+  EXPECT_EQ(from_environment.exit_code, 1);
+  EXPECT_NE(from_environment.err.find(missing.string() + ": cannot read the tuned parameters"), std::string::npos)
+      << from_environment.err;
+}
+
+TEST_F(PcdCompareTuned, BadTunedFilesAreReportedByName) {
   const fs::path missing = dir_ / "missing.json";
   const Result no_file = run("--tuned --tuned-file " + quote(missing.string()) + " " + quote(kStaircase));
   EXPECT_EQ(no_file.exit_code, 1);
   EXPECT_NE(no_file.err.find(missing.string() + ": cannot read the tuned parameters"), std::string::npos)
       << no_file.err;
-
-  const fs::path grid = dir_ / "grid.json";
-  std::ofstream(grid) << R"({"omps": {"bogus": [1.0]}})";
-  const Result bad_grid = run("--tune " + quote(tuningFolder().string()) + " --methods omps --tune-grid " +
-                              quote(grid.string()) + " --tuned-file " + quote((dir_ / "out.json").string()));
-  EXPECT_EQ(bad_grid.exit_code, 1);
-  EXPECT_NE(bad_grid.err.find("omps has no parameter 'bogus'"), std::string::npos) << bad_grid.err;
-  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
-
-  const fs::path unnamed = dir_ / "unnamed";
-  fs::create_directories(unnamed);
-  fs::copy_file(kStaircase, unnamed / "staircase.pcd");
-  const Result no_sensor =
-      run("--tune " + quote(unnamed.string()) + " --methods omps --tuned-file " + quote((dir_ / "out.json").string()));
-  EXPECT_EQ(no_sensor.exit_code, 1);
-  EXPECT_NE(no_sensor.err.find("no <scene>.<sensor>.pcd files"), std::string::npos) << no_sensor.err;
+  const fs::path bad = dir_ / "bad.json";
+  std::ofstream(bad) << R"({"methods": {"omps": {"by_sensor": {"none": {"parameters": {"bogus": 1.0}}}}}})";
+  const Result bad_value = run("--tuned --tuned-file " + quote(bad.string()) + " " + quote(kStaircase));
+  EXPECT_EQ(bad_value.exit_code, 1);
+  EXPECT_NE(bad_value.err.find(bad.string() + ": omps has no parameter 'bogus'"), std::string::npos) << bad_value.err;
 }
 
 }  // namespace
