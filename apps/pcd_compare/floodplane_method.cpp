@@ -13,11 +13,7 @@ namespace {
 
 class FloodplaneMethod : public Method {
  public:
-  FloodplaneMethod(int subsampling, bool measure_phases) {
-    segmentation_.setSubsampling(subsampling);
-    segmentation_.setMeasurePhases(measure_phases);
-    measure_phases_ = measure_phases;
-  }
+  explicit FloodplaneMethod(int subsampling) { segmentation_.setSubsampling(subsampling); }
 
   std::string name() const override {
     const int factor = segmentation_.getSubsampling();
@@ -26,7 +22,7 @@ class FloodplaneMethod : public Method {
 
   std::string parameters() const override {
     return "FloodFillPlaneSegmentation<PointXYZ>::segmentAndRefine, library defaults: " +
-           floodplane::io::describeParams(segmentation_.getParams()) + (measure_phases_ ? ", phase timer on" : "");
+           floodplane::io::describeParams(segmentation_.getParams());
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
@@ -45,15 +41,11 @@ class FloodplaneMethod : public Method {
         result.labels[i] = (*labels_)[i].label;
       }
     }
-    if (measure_phases_) {
-      result.phases = segmentation_.getLastPhases();
-    }
     return result;
   }
 
  private:
   floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation_;
-  bool measure_phases_ = false;
   // Kept between runs, as an application segmenting a stream would.
   floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions_;
   std::vector<pcl::ModelCoefficients> coefficients_;
@@ -65,8 +57,8 @@ class FloodplaneMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> makeFloodplaneMethod(int subsampling, bool measure_phases) {
-  return std::make_unique<FloodplaneMethod>(subsampling, measure_phases);
+std::unique_ptr<Method> makeFloodplaneMethod(int subsampling) {
+  return std::make_unique<FloodplaneMethod>(subsampling);
 }
 
 }  // namespace pcd_compare

@@ -3,19 +3,19 @@
 // own file so that the heavy PCL headers (sample consensus, OMPS, normal estimation) are
 // compiled once, in the file that needs them.
 
+#include <pcl/common/point_tests.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/omps_run.h"
-#include "floodplane/segmenter.h"
 
 namespace pcd_compare {
 
@@ -30,8 +30,6 @@ struct MethodRun {
   double total_ms = 0.0;
   /// Named parts of total_ms worth reporting on their own (OMPS: "normals"). [ms]
   std::vector<std::pair<std::string, double>> parts_ms;
-  /// floodplane's own phase times, when it was asked to measure them (Fig. 5).
-  std::optional<floodplane::PhaseTimes> phases;
 };
 
 class Method {
@@ -47,6 +45,28 @@ class Method {
   /// --repeat says; their accuracy is the point of running them, not their exact time.
   virtual bool slow() const { return false; }
 };
+
+/// The sequential extraction both RANSAC baselines run: `best_plane(remaining)` gives the
+/// inliers (pixel indices) of the best plane through `remaining` (the pixels of the finite
+/// points not yet labelled, in grid order); planes are labelled 1, 2, ... in extraction order
+/// until one has fewer than `min_inliers` inliers or fewer than `min_points` points are left.
+template <typename BestPlane>
+std::vector<std::uint32_t> extractPlanesInTurn(const Cloud& cloud, std::size_t min_inliers, std::size_t min_points,
+                                               BestPlane best_plane) {
+  std::vector<std::uint32_t> labels(cloud.size(), 0);
+  pcl::Indices remaining;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (pcl::isFinite(cloud[i])) remaining.push_back(static_cast<pcl::index_t>(i));
+  }
+  const auto labelled = [&labels](pcl::index_t i) { return labels[static_cast<std::size_t>(i)] != 0; };
+  for (std::uint32_t label = 1; remaining.size() >= min_points; ++label) {
+    const pcl::Indices inliers = best_plane(remaining);
+    if (inliers.size() < min_inliers) break;
+    for (const pcl::index_t index : inliers) labels[static_cast<std::size_t>(index)] = label;
+    remaining.erase(std::remove_if(remaining.begin(), remaining.end(), labelled), remaining.end());
+  }
+  return labels;
+}
 
 /// The parameters of a sequential RANSAC (PCL's or Open3D's): the best plane is extracted,
 /// then the best plane of the rest, until a plane has fewer than `min_inliers` inliers.
@@ -70,8 +90,8 @@ struct OmpsParameters {
 };
 
 /// floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> with the library's defaults, at
-/// the given sub-sampling factor; `measure_phases` turns on its phase timer.
-std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1, bool measure_phases = false);
+/// the given sub-sampling factor.
+std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1);
 /// PCL's sequential RANSAC. Labels number the planes in the order they were extracted.
 std::unique_ptr<Method> makeRansacMethod(const SequentialRansacParameters& parameters = {},
                                          const std::string& name = "ransac");

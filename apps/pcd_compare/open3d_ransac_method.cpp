@@ -8,7 +8,6 @@
 #include <open3d/utility/Random.h>
 
 #include <chrono>
-#include <cmath>
 #include <sstream>
 
 #include "method.h"
@@ -57,53 +56,25 @@ class Open3dRansacMethod : public Method {
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
-    using Clock = std::chrono::steady_clock;
-    MethodRun result;
-    result.labels.assign(cloud->size(), 0);
-    const auto start = Clock::now();
+    const auto start = std::chrono::steady_clock::now();
     const SingleOpenMpThread one_thread;
     open3d::utility::random::Seed(kSeed);
-
-    // The remaining points, and for each its pixel in the organized grid.
-    open3d::geometry::PointCloud remaining;
-    std::vector<std::size_t> pixel_of;
-    remaining.points_.reserve(cloud->size());
-    pixel_of.reserve(cloud->size());
-    for (std::size_t i = 0; i < cloud->size(); ++i) {
-      const pcl::PointXYZ& p = (*cloud)[i];
-      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
-        remaining.points_.emplace_back(p.x, p.y, p.z);
-        pixel_of.push_back(i);
-      }
-    }
-    std::uint32_t next_label = 1;
-    while (remaining.points_.size() >= static_cast<std::size_t>(kRansacN)) {
-      const auto [plane, inliers] = remaining.SegmentPlane(parameters_.distance_threshold, kRansacN, kIterations);
+    MethodRun result;
+    result.labels = extractPlanesInTurn(*cloud, parameters_.min_inliers, kRansacN, [&](const pcl::Indices& remaining) {
+      open3d::geometry::PointCloud points;
+      points.points_.reserve(remaining.size());
+      for (const pcl::index_t i : remaining) points.points_.emplace_back((*cloud)[i].x, (*cloud)[i].y, (*cloud)[i].z);
+      const auto [plane, inliers] = points.SegmentPlane(parameters_.distance_threshold, kRansacN, kIterations);
       (void)plane;
-      if (inliers.size() < parameters_.min_inliers) break;
-      for (const std::size_t index : inliers) result.labels[pixel_of[index]] = next_label;
-      ++next_label;
-      removeLabelled(result.labels, remaining, pixel_of);
-    }
-    result.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      pcl::Indices pixels(inliers.size());
+      for (std::size_t k = 0; k < inliers.size(); ++k) pixels[k] = remaining[inliers[k]];
+      return pixels;
+    });
+    result.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
   }
 
  private:
-  // Drops the points that now carry a label, keeping the order of the rest.
-  static void removeLabelled(const std::vector<std::uint32_t>& labels, open3d::geometry::PointCloud& remaining,
-                             std::vector<std::size_t>& pixel_of) {
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < pixel_of.size(); ++k) {
-      if (labels[pixel_of[k]] != 0) continue;
-      remaining.points_[kept] = remaining.points_[k];
-      pixel_of[kept] = pixel_of[k];
-      ++kept;
-    }
-    remaining.points_.resize(kept);
-    pixel_of.resize(kept);
-  }
-
   SequentialRansacParameters parameters_;
   std::string name_;
 };

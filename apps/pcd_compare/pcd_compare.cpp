@@ -56,7 +56,7 @@ struct Options {
   std::string json_file, png_dir, png3d_dir;
   std::string sensor;      // every input's sensor model; empty: from the file name
   std::string tuned_file;  // empty: defaultTunedFile()
-  bool resolutions = false, tuned = false, phases = false, quiet = false;
+  bool resolutions = false, tuned = false, quiet = false;
 };
 
 std::vector<std::string> splitList(const std::string& list) {
@@ -107,41 +107,29 @@ double median(std::vector<double> values) {
 
 // One warm-up run, whose labels are scored (every method is deterministic), then `repeat`
 // timed runs of the segmentation call alone. With `repeat` 0, and for slow methods, the scored
-// run is the one timed run.
-struct Measured {
-  MethodRun first;
-  Timing timing;
-  std::vector<floodplane::PhaseTimes> phases;  // of the timed runs, when the method measures them
-};
-
-Measured measure(Method& method, const Cloud::ConstPtr& cloud, int repeat) {
-  Measured measured;
-  measured.first = method.run(cloud);
+// run is the one timed run. Returns the scored run and sets `timing`.
+MethodRun measure(Method& method, const Cloud::ConstPtr& cloud, int repeat, Timing& timing) {
+  MethodRun first = method.run(cloud);
   const int runs = method.slow() ? 0 : repeat;
   std::vector<double> totals;
-  std::vector<std::vector<double>> parts(measured.first.parts_ms.size());
+  std::vector<std::vector<double>> parts(first.parts_ms.size());
   for (int r = 0; r < std::max(runs, 1); ++r) {
-    const MethodRun run = runs > 0 ? method.run(cloud) : measured.first;
+    const MethodRun run = runs > 0 ? method.run(cloud) : first;
     totals.push_back(run.total_ms);
-    for (std::size_t k = 0; k < parts.size() && k < run.parts_ms.size(); ++k)
-      parts[k].push_back(run.parts_ms[k].second);
-    if (run.phases) measured.phases.push_back(*run.phases);
+    for (std::size_t k = 0; k < parts.size(); ++k) parts[k].push_back(run.parts_ms.at(k).second);
   }
-  measured.timing.median_ms = median(totals);
-  measured.timing.min_ms = *std::min_element(totals.begin(), totals.end());
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    measured.timing.parts_median_ms.emplace_back(measured.first.parts_ms[k].first, median(parts[k]));
-  }
-  return measured;
+  timing = {median(totals), *std::min_element(totals.begin(), totals.end()), {}};
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    timing.parts_median_ms.emplace_back(first.parts_ms[k].first, median(parts[k]));
+  return first;
 }
 
-// The methods to run: those of --methods, the baselines among them at their tuned values (one
-// instance per sensor model of the tuning file), floodplane with its phase timer.
+// The methods to run: those of --methods, and the baselines among them at their tuned values
+// (one instance per sensor model of the tuning file).
 struct Methods {
   std::vector<std::unique_ptr<Method>> selected;
   using BySensor = std::map<std::string, std::unique_ptr<Method>>;
   std::vector<std::pair<std::string, BySensor>> tuned;  // row name, instance by sensor model
-  std::unique_ptr<Method> phase_timer;
 };
 
 Methods makeMethods(const Options& options, Json& configuration) {
@@ -164,21 +152,7 @@ Methods makeMethods(const Options& options, Json& configuration) {
       }
     }
   }
-  if (options.phases) {
-    // A separate instance and separate runs: the phase timer's clock reads must not be in
-    // the timings of the main table.
-    methods.phase_timer = makeFloodplaneMethod(1, true);
-    configuration["phases"] = methods.phase_timer->parameters() + "; separate runs, not those of the main table";
-  }
   return methods;
-}
-
-std::string compilerName() {
-#if defined(__clang__)
-  return std::string("clang ") + __VERSION__;
-#else
-  return std::string("GCC ") + __VERSION__;
-#endif
 }
 
 Json configuration(const Options& options) {
@@ -187,7 +161,7 @@ Json configuration(const Options& options) {
                                               : "one run per method and file (--repeat 0: no warm-up)";
   return {{"floodplane", FLOODPLANE_VERSION_STRING},
           {"PCL", PCL_VERSION_PRETTY},
-          {"compiler", compilerName()},
+          {"compiler", __VERSION__},
           {"build type", FLOODPLANE_BUILD_TYPE},
           {"timing", runs + ", of the segmentation call alone (cloud in memory; OMPS includes its normal "
                             "estimation), one thread, steady_clock"},
@@ -198,21 +172,18 @@ Json configuration(const Options& options) {
            "sensor model (--sensor, or the name <scene>.<sensor>.pcd)"}};
 }
 
-std::size_t distinctPlanes(const std::vector<std::uint32_t>& labels) {
-  std::set<std::uint32_t> planes(labels.begin(), labels.end());
-  planes.erase(0);
-  return planes.size();
-}
-
-Json resultJson(const Measured& measured, const InputCloud& input, std::uint32_t min_points) {
+Json resultJson(const std::vector<std::uint32_t>& labels, const Timing& timing, const InputCloud& input,
+                std::uint32_t min_points) {
   std::optional<floodplane::eval::SegmentationScores> scores;
   if (input.ground_truth) {
     floodplane::eval::MetricsOptions metrics;
     metrics.min_points = min_points;
     metrics.tolerance = kTolerance;
-    scores = floodplane::eval::evaluateSegmentation(*input.ground_truth, measured.first.labels, input.valid, metrics);
+    scores = floodplane::eval::evaluateSegmentation(*input.ground_truth, labels, input.valid, metrics);
   }
-  return methodJson(measured.timing, distinctPlanes(measured.first.labels), scores);
+  std::set<std::uint32_t> planes(labels.begin(), labels.end());
+  planes.erase(0);
+  return methodJson(timing, planes.size(), scores);
 }
 
 // <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings): ground
@@ -233,15 +204,11 @@ void writeComparisonImages(const Options& options, const InputCloud& input, cons
   for (const std::string& name : kOrder) {
     const auto run = runs.find(name);
     if (run == runs.end()) continue;
-    std::string title = name;
-    const Json& iou = scene["methods"][name].value("mean_iou", Json());
-    if (iou.is_number()) {
-      char text[32];
-      std::snprintf(text, sizeof text, "  IoU %.3f", iou.get<double>());
-      title += text;
-    }
+    char iou[32] = "";
+    const Json& mean_iou = scene["methods"][name].value("mean_iou", Json());
+    if (mean_iou.is_number()) std::snprintf(iou, sizeof iou, "  IoU %.3f", mean_iou.get<double>());
     panels.push_back(
-        {title, coloursMatchedToGroundTruth(run->second.labels, ground_truth, input.valid), run->second.labels});
+        {name + iou, coloursMatchedToGroundTruth(run->second.labels, ground_truth, input.valid), run->second.labels});
   }
   const std::string file = scene["name"].get<std::string>() + ".png";
   if (!options.png_dir.empty()) {
@@ -270,10 +237,10 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
   if (!input.sensor.empty()) scene["sensor"] = input.sensor;
   scene["methods"] = Json::object();
   std::map<std::string, MethodRun> runs;  // the scored runs, for the pictures
+  Timing timing;
   for (const auto& method : methods.selected) {
-    Measured measured = measure(*method, input.cloud, options.repeat);
-    scene["methods"][method->name()] = resultJson(measured, input, min_points);
-    runs[method->name()] = std::move(measured.first);
+    runs[method->name()] = measure(*method, input.cloud, options.repeat, timing);
+    scene["methods"][method->name()] = resultJson(runs[method->name()].labels, timing, input, min_points);
   }
   for (const auto& [row, by_sensor] : methods.tuned) {
     const auto method = by_sensor.find(input.sensor);
@@ -285,18 +252,8 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
           .push_back(input.name);
       continue;
     }
-    scene["methods"][row] = resultJson(measure(*method->second, input.cloud, options.repeat), input, min_points);
-  }
-  if (methods.phase_timer) {
-    const Measured timed = measure(*methods.phase_timer, input.cloud, options.repeat);
-    floodplane::PhaseTimes phases;
-    for (const auto& [key, member] : phaseMembers()) {
-      (void)key;
-      std::vector<double> times;
-      for (const floodplane::PhaseTimes& run : timed.phases) times.push_back(run.*member);
-      phases.*member = median(times);
-    }
-    scene["phases"] = phasesJson(phases, timed.timing.median_ms);
+    const MethodRun run = measure(*method->second, input.cloud, options.repeat, timing);
+    scene["methods"][row] = resultJson(run.labels, timing, input, min_points);
   }
   if (!options.png_dir.empty() || !options.png3d_dir.empty()) writeComparisonImages(options, input, scene, runs);
   return scene;
@@ -382,7 +339,6 @@ void addOptions(CLI::App& app, Options& options, std::string& method_list) {
                  "Write <scene>.png per file into this directory: the panels of --png in 3-D (an arrow along each "
                  "segment's normal). Needs an X display: on a machine without one, run under xvfb-run -a");
   app.add_flag("--resolutions", options.resolutions, "Also run floodplane at sub-sampling 1, 2, 4, 8 (Table III)");
-  app.add_flag("--phases", options.phases, "Also time floodplane's phases (Fig. 5), in separate runs");
   app.add_flag("--tuned", options.tuned,
                "Also run each baseline among --methods at its tuned values for the file's sensor model (a row "
                "'<method> (tuned)')");

@@ -7,8 +7,8 @@
 #include <pcl/segmentation/sac_segmentation.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 
 #include "method.h"
@@ -48,45 +48,17 @@ class RansacMethod : public Method {
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
-    using Clock = std::chrono::steady_clock;
+    const auto start = std::chrono::steady_clock::now();
+    segmentation_.setInputCloud(cloud);
     MethodRun result;
-    result.labels.assign(cloud->size(), 0);
-    const auto start = Clock::now();
-
     // The remaining points as indices into the organized cloud: the inliers PCL returns are
     // then grid positions, and no copy of the cloud is made per plane.
-    auto remaining = std::make_shared<pcl::Indices>();
-    remaining->reserve(cloud->size());
-    for (std::size_t i = 0; i < cloud->size(); ++i) {
-      const pcl::PointXYZ& p = (*cloud)[i];
-      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
-        remaining->push_back(static_cast<pcl::index_t>(i));
-      }
-    }
-    segmentation_.setInputCloud(cloud);
-    std::uint32_t next_label = 1;
-    while (remaining->size() >= 3) {
-      segmentation_.setIndices(remaining);
+    result.labels = extractPlanesInTurn(*cloud, parameters_.min_inliers, 3, [this](const pcl::Indices& remaining) {
+      segmentation_.setIndices(std::make_shared<const pcl::Indices>(remaining));
       segmentation_.segment(inliers_, coefficients_);
-      if (inliers_.indices.size() < parameters_.min_inliers) {
-        break;
-      }
-      for (const pcl::index_t index : inliers_.indices) {
-        result.labels[static_cast<std::size_t>(index)] = next_label;
-      }
-      ++next_label;
-      // Inliers are a subset of `remaining`; keep the rest, in order.
-      auto rest = std::make_shared<pcl::Indices>();
-      rest->reserve(remaining->size() - inliers_.indices.size());
-      for (const pcl::index_t index : *remaining) {
-        if (result.labels[static_cast<std::size_t>(index)] == 0) {
-          rest->push_back(index);
-        }
-      }
-      remaining = rest;
-    }
-    const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
-    result.total_ms = elapsed.count();
+      return inliers_.indices;
+    });
+    result.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
   }
 

@@ -158,31 +158,6 @@ Json methodJson(const Timing& timing, std::size_t planes,
   return json;
 }
 
-const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>>& phaseMembers() {
-  static const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>> members = {
-      {"preparation", &floodplane::PhaseTimes::preparation},
-      {"seed_selection", &floodplane::PhaseTimes::seed_selection},
-      {"flood_fill", &floodplane::PhaseTimes::flood_fill},
-      {"relabelling", &floodplane::PhaseTimes::relabelling},
-      {"merging", &floodplane::PhaseTimes::merging},
-      {"region_output", &floodplane::PhaseTimes::region_output},
-      {"pcl_conversion", &floodplane::PhaseTimes::pcl_conversion},
-  };
-  return members;
-}
-
-Json phasesJson(const floodplane::PhaseTimes& median, double call_median_ms) {
-  Json json;
-  const double total = median.total();
-  for (const auto& [key, member] : phaseMembers()) {
-    json["median_ms"][key] = median.*member;
-    json["share"][key] = number(total > 0.0 ? (median.*member) / total : kNaN);
-  }
-  json["phases_total_ms"] = total;
-  json["call_median_ms"] = call_median_ms;
-  return json;
-}
-
 void addMeans(Json& report) {
   std::vector<std::pair<std::string, MeanRow>> overall;
   std::map<std::string, std::vector<std::pair<std::string, MeanRow>>> by_sensor;

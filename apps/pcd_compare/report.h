@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "eval/segmentation_metrics.h"
-#include "floodplane/segmenter.h"
 
 namespace pcd_compare {
 
@@ -31,12 +30,6 @@ struct Timing {
 /// (mean and weighted IoU, Hoover counts, false-plane fraction, per plane; NaN as null).
 Json methodJson(const Timing& timing, std::size_t planes,
                 const std::optional<floodplane::eval::SegmentationScores>& scores);
-
-/// floodplane's phases (Fig. 5, and the preparation before it) in call order: each one's name
-/// in the JSON and its member of PhaseTimes.
-const std::vector<std::pair<const char*, double floodplane::PhaseTimes::*>>& phaseMembers();
-/// A scene's "phases": each phase's median [ms] and share of their total, and the call's median.
-Json phasesJson(const floodplane::PhaseTimes& median, double call_median_ms);
 
 /// Completes a report whose "scenes" are filled: each method's ratio_to_floodplane in its
 /// scene, then "means" (per method over every scene) and "means_by_sensor" (per sensor model
