@@ -30,7 +30,7 @@ echo "demo: comparing $methods on $(ls "$build"/data/rendered/*.pcd | wc -l) sce
 
 echo
 # The means over every scene: the first table after the configuration.
-sed -n '/^### all files/,/^$/p' "$out/compare.md"
+awk '/^### all files/ {on = 1; print; print ""; next} on && /^\|/ {print; rows = 1; next} on && rows {exit}' "$out/compare.md"
 cat <<EOF
 demo: done in $(( $(date +%s) - start )) s
   the means:         $out/compare.md (and per sensor model)
