@@ -10,89 +10,84 @@
 #include <utility>
 #include <vector>
 
+#include "common/omps_run.h"
+
 namespace pcd_compare {
 
 namespace {
 
-// Every tunable parameter of a baseline with its default, in the order they are described.
-std::vector<std::pair<std::string, double>> defaults(const std::string& baseline) {
-  if (baseline == "omps") {
-    const OmpsParameters omps;
-    return {{"angular_threshold", omps.angular_threshold},
-            {"distance_threshold", omps.distance_threshold},
-            {"normal_smoothing_size", omps.normal_smoothing_size},
-            {"max_depth_change_factor", omps.max_depth_change_factor},
-            {"maximum_curvature", omps.maximum_curvature},
-            {"min_inliers", static_cast<double>(omps.min_inliers)}};
-  }
-  if (baseline == "ransac" || baseline == "open3d_ransac") {
-    const SequentialRansacParameters ransac;
-    return {{"distance_threshold", ransac.distance_threshold},
-            {"min_inliers", static_cast<double>(ransac.min_inliers)}};
-  }
-  return {};
+using Settings = floodplane::apps::OmpsSettings;
+
+// A tunable baseline: every parameter with its default, in the order they are described, and
+// the method's factory.
+struct Baseline {
+  std::vector<std::pair<std::string, double>> defaults;
+  std::unique_ptr<Method> (*make)(const ParameterValues& values, const std::string& name);
+};
+
+// PCL's and Open3D's sequential RANSAC: the best plane is extracted, then the best plane of the
+// rest, until a plane has fewer than min_inliers inliers (that plane is dropped).
+const std::vector<std::pair<std::string, double>> kSequentialRansac = {
+    {"distance_threshold", 0.01},  // inlier distance from the plane [m]
+    {"min_inliers", 100}};
+
+// OMPS's defaults are the paper's Sec. IV settings (common/omps_run.h) and PCL's default maximum
+// curvature.
+const std::map<std::string, Baseline> kBaselines = {
+    {"omps",
+     {{{"angular_threshold", Settings::angular_threshold},          // [rad]
+       {"distance_threshold", Settings::distance_threshold},        // [m]
+       {"normal_smoothing_size", Settings::normal_smoothing_size},  // [pixels]
+       // Depth change that ends a normal's smoothing area, as a factor of the depth [1/m].
+       {"max_depth_change_factor", Settings::max_depth_change_factor},
+       {"maximum_curvature", 0.001},  // of a region's points
+       {"min_inliers", Settings::min_inliers}},
+      makeOmpsMethod}},
+    {"ransac", {kSequentialRansac, makeRansacMethod}},
+    {"open3d_ransac", {kSequentialRansac, makeOpen3dRansacMethod}}};
+
+const Baseline& baselineNamed(const std::string& baseline) {
+  const auto found = kBaselines.find(baseline);
+  if (found == kBaselines.end()) throw std::invalid_argument("'" + baseline + "' is not a tunable baseline");
+  return found->second;
 }
 
-// `values` completed with the defaults; unknown names rejected.
+// `values` completed with the defaults and checked: unknown names rejected, every value a
+// finite positive number, the one count (min_inliers) also whole.
 ParameterValues complete(const std::string& baseline, const ParameterValues& values) {
-  const auto known = defaults(baseline);
-  if (known.empty()) throw std::invalid_argument("'" + baseline + "' is not a tunable baseline");
+  const auto& defaults = baselineNamed(baseline).defaults;
   for (const auto& entry : values) {
-    if (std::none_of(known.begin(), known.end(), [&entry](const auto& d) { return d.first == entry.first; })) {
+    if (std::none_of(defaults.begin(), defaults.end(), [&entry](const auto& d) { return d.first == entry.first; })) {
       throw std::invalid_argument(baseline + " has no parameter '" + entry.first + "'");
     }
   }
   ParameterValues all = values;
-  for (const auto& [name, value] : known) all.emplace(name, value);
+  for (const auto& [name, default_value] : defaults) {
+    const double value = all.emplace(name, default_value).first->second;
+    if (!std::isfinite(value) || value <= 0.0) {
+      throw std::invalid_argument(name + " must be a positive number, got " + std::to_string(value));
+    }
+    if (name == "min_inliers" && (value != std::floor(value) || value > 1e9)) {
+      throw std::invalid_argument(name + " must be a whole number, got " + std::to_string(value));
+    }
+  }
   return all;
-}
-
-// Every value must be a finite positive number; counts must also be whole.
-double positive(const ParameterValues& values, const std::string& name) {
-  const double value = values.at(name);
-  if (!std::isfinite(value) || value <= 0.0) {
-    throw std::invalid_argument(name + " must be a positive number, got " + std::to_string(value));
-  }
-  return value;
-}
-
-std::size_t count(const ParameterValues& values, const std::string& name) {
-  const double value = positive(values, name);
-  if (value != std::floor(value) || value > 1e9) {
-    throw std::invalid_argument(name + " must be a whole number, got " + std::to_string(value));
-  }
-  return static_cast<std::size_t>(value);
 }
 
 }  // namespace
 
-bool isTunable(const std::string& baseline) { return !defaults(baseline).empty(); }
+bool isTunable(const std::string& baseline) { return kBaselines.count(baseline) > 0; }
 
 std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,
                                      const std::string& name) {
-  const ParameterValues all = complete(baseline, values);
-  if (baseline == "omps") {
-    OmpsParameters omps;
-    omps.angular_threshold = positive(all, "angular_threshold");
-    omps.distance_threshold = positive(all, "distance_threshold");
-    omps.normal_smoothing_size = positive(all, "normal_smoothing_size");
-    omps.max_depth_change_factor = positive(all, "max_depth_change_factor");
-    omps.maximum_curvature = positive(all, "maximum_curvature");
-    omps.min_inliers = count(all, "min_inliers");
-    return makeOmpsMethod(omps, name);
-  }
-  SequentialRansacParameters ransac;
-  ransac.distance_threshold = positive(all, "distance_threshold");
-  ransac.min_inliers = count(all, "min_inliers");
-  return baseline == "ransac" ? makeRansacMethod(ransac, name) : makeOpen3dRansacMethod(ransac, name);
+  return baselineNamed(baseline).make(complete(baseline, values), name);
 }
 
 std::string describeValues(const std::string& baseline, const ParameterValues& values) {
   const ParameterValues all = complete(baseline, values);
   std::ostringstream text;
-  for (const auto& [name, value] : defaults(baseline)) {
-    (void)value;
-    text << (text.tellp() > 0 ? ", " : "") << name << "=" << all.at(name);
+  for (const auto& entry : baselineNamed(baseline).defaults) {
+    text << (text.tellp() > 0 ? ", " : "") << entry.first << "=" << all.at(entry.first);
   }
   return text.str();
 }
@@ -106,7 +101,7 @@ TunedValues readTunedValues(const std::string& path) {
     for (const auto& [baseline, entry] : json.at("methods").items()) {
       for (const auto& [sensor, winner] : entry.at("by_sensor").items()) {
         const auto values = winner.at("parameters").get<ParameterValues>();
-        makeBaseline(baseline, values, baseline);  // checks the names and values
+        complete(baseline, values);  // checks the names and values
         tuned[baseline][sensor] = values;
       }
     }

@@ -11,8 +11,6 @@
 
 namespace pcd_compare {
 
-/// A value per parameter name.
-using ParameterValues = std::map<std::string, double>;
 /// Per baseline, then per sensor model, the tuned values.
 using TunedValues = std::map<std::string, std::map<std::string, ParameterValues>>;
 

@@ -1,8 +1,5 @@
 // floodplane itself, through its PCL drop-in class, as a user would call it.
 
-#include <chrono>
-#include <sstream>
-
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "io/params_json.h"
 #include "method.h"
@@ -26,14 +23,11 @@ class FloodplaneMethod : public Method {
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
-    using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     segmentation_.setInputCloud(cloud);
     segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels_, label_indices_, boundaries_);
-    const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
-
     MethodRun result;
-    result.total_ms = elapsed.count();
+    result.total_ms = millisecondsSince(start);
     result.labels.resize(cloud->size(), 0);
     // The label cloud is documented to number plane k as label k, 0 for no plane.
     if (labels_ && labels_->size() == cloud->size()) {

@@ -8,18 +8,26 @@
 #include <pcl/point_types.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "common/omps_run.h"
-
 namespace pcd_compare {
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+using Clock = std::chrono::steady_clock;
+/// A value per parameter name.
+using ParameterValues = std::map<std::string, double>;
+
+/// The time from `start` to now. [ms]
+inline double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 /// What one run of a method gives back.
 struct MethodRun {
@@ -68,38 +76,17 @@ std::vector<std::uint32_t> extractPlanesInTurn(const Cloud& cloud, std::size_t m
   return labels;
 }
 
-/// The parameters of a sequential RANSAC (PCL's or Open3D's): the best plane is extracted,
-/// then the best plane of the rest, until a plane has fewer than `min_inliers` inliers.
-struct SequentialRansacParameters {
-  double distance_threshold = 0.01;  ///< inlier distance from the plane [m]
-  std::size_t min_inliers = 100;     ///< the plane that stops the sequence (and is dropped)
-};
-
-/// The parameters of PCL's IntegralImageNormalEstimation + OrganizedMultiPlaneSegmentation.
-/// The defaults are the paper's Sec. IV settings (common/omps_run.h) and PCL's default maximum
-/// curvature.
-struct OmpsParameters {
-  using Settings = floodplane::apps::OmpsSettings;
-  double angular_threshold = Settings::angular_threshold;          ///< [rad]
-  double distance_threshold = Settings::distance_threshold;        ///< [m]
-  double normal_smoothing_size = Settings::normal_smoothing_size;  ///< [pixels]
-  /// Depth change that ends a normal's smoothing area, as a factor of the depth [1/m].
-  double max_depth_change_factor = Settings::max_depth_change_factor;
-  double maximum_curvature = 0.001;  ///< of a region's points; PCL's default
-  std::size_t min_inliers = Settings::min_inliers;
-};
-
 /// floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> with the library's defaults, at
 /// the given sub-sampling factor.
 std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1);
+// The tunable baselines, at `values` that name every parameter with a valid value: makeBaseline
+// (baselines.h) fills in the defaults and checks them.
 /// PCL's sequential RANSAC. Labels number the planes in the order they were extracted.
-std::unique_ptr<Method> makeRansacMethod(const SequentialRansacParameters& parameters = {},
-                                         const std::string& name = "ransac");
+std::unique_ptr<Method> makeRansacMethod(const ParameterValues& values, const std::string& name);
 /// Open3D's SegmentPlane, sequentially. Labels number the planes in the order they were
 /// extracted.
-std::unique_ptr<Method> makeOpen3dRansacMethod(const SequentialRansacParameters& parameters = {},
-                                               const std::string& name = "open3d_ransac");
+std::unique_ptr<Method> makeOpen3dRansacMethod(const ParameterValues& values, const std::string& name);
 /// PCL's IntegralImageNormalEstimation + OrganizedMultiPlaneSegmentation::segmentAndRefine.
-std::unique_ptr<Method> makeOmpsMethod(const OmpsParameters& parameters = {}, const std::string& name = "omps");
+std::unique_ptr<Method> makeOmpsMethod(const ParameterValues& values, const std::string& name);
 
 }  // namespace pcd_compare

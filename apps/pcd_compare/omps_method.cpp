@@ -4,7 +4,6 @@
 #include <pcl/features/integral_image_normal.h>
 #include <pcl/segmentation/organized_multi_plane_segmentation.h>
 
-#include <chrono>
 #include <sstream>
 
 #include "common/omps_run.h"
@@ -16,14 +15,14 @@ namespace {
 
 class OmpsMethod : public Method {
  public:
-  OmpsMethod(const OmpsParameters& parameters, std::string name) : parameters_(parameters), name_(std::move(name)) {
+  OmpsMethod(const ParameterValues& values, std::string name) : values_(values), name_(std::move(name)) {
     floodplane::apps::configureOmps(normal_estimation_, segmentation_);
-    normal_estimation_.setMaxDepthChangeFactor(static_cast<float>(parameters_.max_depth_change_factor));
-    normal_estimation_.setNormalSmoothingSize(static_cast<float>(parameters_.normal_smoothing_size));
-    segmentation_.setAngularThreshold(parameters_.angular_threshold);
-    segmentation_.setDistanceThreshold(parameters_.distance_threshold);
-    segmentation_.setMaximumCurvature(parameters_.maximum_curvature);
-    segmentation_.setMinInliers(static_cast<unsigned>(parameters_.min_inliers));
+    normal_estimation_.setMaxDepthChangeFactor(static_cast<float>(values.at("max_depth_change_factor")));
+    normal_estimation_.setNormalSmoothingSize(static_cast<float>(values.at("normal_smoothing_size")));
+    segmentation_.setAngularThreshold(values.at("angular_threshold"));
+    segmentation_.setDistanceThreshold(values.at("distance_threshold"));
+    segmentation_.setMaximumCurvature(values.at("maximum_curvature"));
+    segmentation_.setMinInliers(static_cast<unsigned>(values.at("min_inliers")));
   }
 
   std::string name() const override { return name_; }
@@ -31,7 +30,7 @@ class OmpsMethod : public Method {
   std::string parameters() const override {
     std::ostringstream text;
     text << "pcl::IntegralImageNormalEstimation AVERAGE_3D_GRADIENT, max depth change factor "
-         << parameters_.max_depth_change_factor << ", normal smoothing size " << parameters_.normal_smoothing_size
+         << values_.at("max_depth_change_factor") << ", normal smoothing size " << values_.at("normal_smoothing_size")
          << "; pcl::OrganizedMultiPlaneSegmentation<PointXYZ, Normal, Label>::segmentAndRefine, "
             "angular threshold "
          << segmentation_.getAngularThreshold() << " rad, distance threshold " << segmentation_.getDistanceThreshold()
@@ -41,21 +40,18 @@ class OmpsMethod : public Method {
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
-    using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
     normal_estimation_.setInputCloud(cloud);
     normal_estimation_.compute(*normals);
-    const auto normals_done = Clock::now();
+    const double normals_ms = millisecondsSince(start);
 
     segmentation_.setInputNormals(normals);
     segmentation_.setInputCloud(cloud);
     floodplane::apps::segmentAndRefineAfresh(segmentation_, outputs_);
-    const auto end = Clock::now();
-
     MethodRun result;
-    result.total_ms = std::chrono::duration<double, std::milli>(end - start).count();
-    result.parts_ms.emplace_back("normals", std::chrono::duration<double, std::milli>(normals_done - start).count());
+    result.total_ms = millisecondsSince(start);
+    result.parts_ms.emplace_back("normals", normals_ms);
     // OMPS's label cloud numbers connected components, not planes; the planes are the
     // refined inlier sets, so region k becomes label k + 1.
     result.labels.assign(cloud->size(), 0);
@@ -68,7 +64,7 @@ class OmpsMethod : public Method {
   }
 
  private:
-  OmpsParameters parameters_;
+  ParameterValues values_;  // for the description: PCL's normal estimation has no getters
   std::string name_;
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation_;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> segmentation_;
@@ -77,8 +73,8 @@ class OmpsMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> makeOmpsMethod(const OmpsParameters& parameters, const std::string& name) {
-  return std::make_unique<OmpsMethod>(parameters, name);
+std::unique_ptr<Method> makeOmpsMethod(const ParameterValues& values, const std::string& name) {
+  return std::make_unique<OmpsMethod>(values, name);
 }
 
 }  // namespace pcd_compare

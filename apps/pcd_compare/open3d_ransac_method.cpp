@@ -7,7 +7,6 @@
 #include <open3d/utility/Logging.h>
 #include <open3d/utility/Random.h>
 
-#include <chrono>
 #include <sstream>
 
 #include "method.h"
@@ -36,8 +35,10 @@ class SingleOpenMpThread {
 
 class Open3dRansacMethod : public Method {
  public:
-  Open3dRansacMethod(const SequentialRansacParameters& parameters, std::string name)
-      : parameters_(parameters), name_(std::move(name)) {
+  Open3dRansacMethod(const ParameterValues& values, std::string name)
+      : distance_threshold_(values.at("distance_threshold")),
+        min_inliers_(static_cast<std::size_t>(values.at("min_inliers"))),
+        name_(std::move(name)) {
     open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Warning);
   }
 
@@ -46,43 +47,44 @@ class Open3dRansacMethod : public Method {
 
   std::string parameters() const override {
     std::ostringstream text;
-    text << "open3d::geometry::PointCloud::SegmentPlane (Open3D 0.16), distance threshold "
-         << parameters_.distance_threshold << " m, ransac_n " << kRansacN << ", " << kIterations
+    text << "open3d::geometry::PointCloud::SegmentPlane (Open3D 0.16), distance threshold " << distance_threshold_
+         << " m, ransac_n " << kRansacN << ", " << kIterations
          << " iterations, probability 0.99999999 (Open3D's default: it may stop early); sequential: "
             "the best plane, its inliers removed, again on the rest until a plane has < "
-         << parameters_.min_inliers << " inliers; on the finite points only; one OpenMP thread; utility::random::Seed("
-         << kSeed << ") before every cloud, deterministic";
+         << min_inliers_ << " inliers; on the finite points only; one OpenMP thread; utility::random::Seed(" << kSeed
+         << ") before every cloud, deterministic";
     return text.str();
   }
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     const SingleOpenMpThread one_thread;
     open3d::utility::random::Seed(kSeed);
     MethodRun result;
-    result.labels = extractPlanesInTurn(*cloud, parameters_.min_inliers, kRansacN, [&](const pcl::Indices& remaining) {
+    result.labels = extractPlanesInTurn(*cloud, min_inliers_, kRansacN, [&](const pcl::Indices& remaining) {
       open3d::geometry::PointCloud points;
       points.points_.reserve(remaining.size());
       for (const pcl::index_t i : remaining) points.points_.emplace_back((*cloud)[i].x, (*cloud)[i].y, (*cloud)[i].z);
-      const auto [plane, inliers] = points.SegmentPlane(parameters_.distance_threshold, kRansacN, kIterations);
+      const auto [plane, inliers] = points.SegmentPlane(distance_threshold_, kRansacN, kIterations);
       (void)plane;
       pcl::Indices pixels(inliers.size());
       for (std::size_t k = 0; k < inliers.size(); ++k) pixels[k] = remaining[inliers[k]];
       return pixels;
     });
-    result.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.total_ms = millisecondsSince(start);
     return result;
   }
 
  private:
-  SequentialRansacParameters parameters_;
+  double distance_threshold_;
+  std::size_t min_inliers_;
   std::string name_;
 };
 
 }  // namespace
 
-std::unique_ptr<Method> makeOpen3dRansacMethod(const SequentialRansacParameters& parameters, const std::string& name) {
-  return std::make_unique<Open3dRansacMethod>(parameters, name);
+std::unique_ptr<Method> makeOpen3dRansacMethod(const ParameterValues& values, const std::string& name) {
+  return std::make_unique<Open3dRansacMethod>(values, name);
 }
 
 }  // namespace pcd_compare

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -25,6 +26,11 @@ using namespace pcd_compare;
 
 const std::string kStaircase = std::string(PCD_COMPARE_SCENE_DIR) + "/staircase.none.pcd";
 const std::string kTabletop = std::string(PCD_COMPARE_SCENE_DIR) + "/tabletop.kinect.pcd";
+
+// Open3D's sequential RANSAC at `values`, the defaults filled in.
+std::unique_ptr<Method> open3dRansac(const ParameterValues& values = {}) {
+  return makeBaseline("open3d_ransac", values, "open3d_ransac");
+}
 
 // The distinct non-zero labels of a run.
 std::set<std::uint32_t> planeLabels(const std::vector<std::uint32_t>& labels) {
@@ -74,7 +80,7 @@ InputCloud mostlyNaN(InputCloud input) {
 
 TEST(Open3dRansac, FindsTheStaircasePlanesWithLabelsInRange) {
   const InputCloud input = loadInputCloud(kStaircase);
-  const auto method = makeOpen3dRansacMethod();
+  const auto method = open3dRansac();
   EXPECT_EQ(method->name(), "open3d_ransac");
   // A sequential RANSAC merges coplanar treads and cuts risers (IoU about 0.3 on this scene,
   // as PCL's): the floor is found, so the mean is well above zero.
@@ -83,18 +89,18 @@ TEST(Open3dRansac, FindsTheStaircasePlanesWithLabelsInRange) {
 
 TEST(Open3dRansac, IsDeterministic) {
   const InputCloud input = loadInputCloud(kTabletop);
-  const auto method = makeOpen3dRansacMethod();
+  const auto method = open3dRansac();
   const std::vector<std::uint32_t> first = method->run(input.cloud).labels;
-  EXPECT_EQ(makeOpen3dRansacMethod()->run(input.cloud).labels, first);
+  EXPECT_EQ(open3dRansac()->run(input.cloud).labels, first);
   EXPECT_EQ(method->run(input.cloud).labels, first);
 }
 
 TEST(Open3dRansac, DistanceThresholdAndMinInliersChangeTheResult) {
   const InputCloud input = loadInputCloud(kTabletop);
-  const std::vector<std::uint32_t> standard = makeOpen3dRansacMethod()->run(input.cloud).labels;
-  EXPECT_NE(makeOpen3dRansacMethod({0.04, 100})->run(input.cloud).labels, standard);
+  const std::vector<std::uint32_t> standard = open3dRansac()->run(input.cloud).labels;
+  EXPECT_NE(open3dRansac({{"distance_threshold", 0.04}})->run(input.cloud).labels, standard);
   // A larger min_inliers stops the same sequence earlier: a prefix of the planes.
-  const std::vector<std::uint32_t> fewer = makeOpen3dRansacMethod({0.01, 3000})->run(input.cloud).labels;
+  const std::vector<std::uint32_t> fewer = open3dRansac({{"min_inliers", 3000}})->run(input.cloud).labels;
   EXPECT_LT(planeLabels(fewer).size(), planeLabels(standard).size());
   const std::size_t kept = planeLabels(fewer).size();
   for (std::size_t i = 0; i < fewer.size(); ++i) ASSERT_EQ(fewer[i], standard[i] <= kept ? standard[i] : 0u) << i;
@@ -110,7 +116,7 @@ TEST(FloodplaneSubsampled, FindsTheStaircasePlanesWithLabelsInRange) {
 
 TEST(NewMethods, SurviveACloudThatIsMostlyNaN) {
   const InputCloud input = mostlyNaN(loadInputCloud(kStaircase));
-  for (const auto& method : {makeOpen3dRansacMethod(), makeFloodplaneMethod(2)}) {
+  for (const auto& method : {open3dRansac(), makeFloodplaneMethod(2)}) {
     const MethodRun run = method->run(input.cloud);
     ASSERT_EQ(run.labels.size(), input.cloud->size()) << method->name();
     for (std::size_t i = 0; i < run.labels.size(); ++i) {
@@ -127,7 +133,7 @@ TEST(Open3dRansac, CloudWithFewerValidPointsThanASampleGivesNoPlane) {
   for (std::size_t i = 2; i < input.cloud->size(); ++i) {
     (*input.cloud)[i].x = (*input.cloud)[i].y = (*input.cloud)[i].z = nan;
   }
-  const MethodRun run = makeOpen3dRansacMethod()->run(input.cloud);
+  const MethodRun run = open3dRansac()->run(input.cloud);
   EXPECT_TRUE(planeLabels(run.labels).empty());
 }
 
