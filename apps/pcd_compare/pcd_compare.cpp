@@ -9,7 +9,6 @@
 #include <pcl/pcl_config.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -42,9 +41,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace pcd_compare;
-using Clock = std::chrono::steady_clock;
 
-constexpr double kTolerance = 0.8;  // Hoover's T, metrics.md's default
 const std::vector<std::string> kDefaultMethods = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
 const std::vector<std::string> kResolutions = {"floodplane", "floodplane/2", "floodplane/4", "floodplane/8"};
 const std::vector<std::string> kSensors = {"kinect", "scanner", "none"};
@@ -107,8 +104,9 @@ double median(std::vector<double> values) {
 
 // One warm-up run, whose labels are scored (every method is deterministic), then `repeat`
 // timed runs of the segmentation call alone. With `repeat` 0, and for slow methods, the scored
-// run is the one timed run. Returns the scored run and sets `timing`.
-MethodRun measure(Method& method, const Cloud::ConstPtr& cloud, int repeat, Timing& timing) {
+// run is the one timed run. Returns the scored run and sets `timing`: median and min of the
+// runs' total_ms, the medians of their parts (OMPS: "normals"). [ms]
+MethodRun measure(Method& method, const Cloud::ConstPtr& cloud, int repeat, Json& timing) {
   MethodRun first = method.run(cloud);
   const int runs = method.slow() ? 0 : repeat;
   std::vector<double> totals;
@@ -118,9 +116,8 @@ MethodRun measure(Method& method, const Cloud::ConstPtr& cloud, int repeat, Timi
     totals.push_back(run.total_ms);
     for (std::size_t k = 0; k < parts.size(); ++k) parts[k].push_back(run.parts_ms.at(k).second);
   }
-  timing = {median(totals), *std::min_element(totals.begin(), totals.end()), {}};
-  for (std::size_t k = 0; k < parts.size(); ++k)
-    timing.parts_median_ms.emplace_back(first.parts_ms[k].first, median(parts[k]));
+  timing = {{"median_ms", median(totals)}, {"min_ms", *std::min_element(totals.begin(), totals.end())}};
+  for (std::size_t k = 0; k < parts.size(); ++k) timing["parts_median_ms"][first.parts_ms[k].first] = median(parts[k]);
   return first;
 }
 
@@ -172,28 +169,13 @@ Json configuration(const Options& options) {
            "sensor model (--sensor, or the name <scene>.<sensor>.pcd)"}};
 }
 
-Json resultJson(const std::vector<std::uint32_t>& labels, const Timing& timing, const InputCloud& input,
-                std::uint32_t min_points) {
-  std::optional<floodplane::eval::SegmentationScores> scores;
-  if (input.ground_truth) {
-    floodplane::eval::MetricsOptions metrics;
-    metrics.min_points = min_points;
-    metrics.tolerance = kTolerance;
-    scores = floodplane::eval::evaluateSegmentation(*input.ground_truth, labels, input.valid, metrics);
-  }
-  std::set<std::uint32_t> planes(labels.begin(), labels.end());
-  planes.erase(0);
-  return methodJson(timing, planes.size(), scores);
-}
-
 // <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings): ground
 // truth, then the methods that ran in a fixed order, floodplane last.
 void writeComparisonImages(const Options& options, const InputCloud& input, const Json& scene,
                            const std::map<std::string, MethodRun>& runs) {
   static const std::vector<std::string> kOrder = {"ransac",       "open3d_ransac", "omps",      "floodplane/8",
                                                   "floodplane/4", "floodplane/2",  "floodplane"};
-  const std::vector<std::uint32_t> none;
-  const std::vector<std::uint32_t>& ground_truth = input.ground_truth ? *input.ground_truth : none;
+  const std::vector<std::uint32_t> ground_truth = input.ground_truth.value_or(std::vector<std::uint32_t>());
   std::vector<Panel> panels;
   if (input.ground_truth) {
     // Pixels without a point show as "no plane", as they do in the predictions.
@@ -210,16 +192,13 @@ void writeComparisonImages(const Options& options, const InputCloud& input, cons
     panels.push_back(
         {name + iou, coloursMatchedToGroundTruth(run->second.labels, ground_truth, input.valid), run->second.labels});
   }
-  const std::string file = scene["name"].get<std::string>() + ".png";
-  if (!options.png_dir.empty()) {
-    fs::create_directories(options.png_dir);
-    floodplane::io::writePng((fs::path(options.png_dir) / file).string(),
-                             comparisonImage(panels, input.cloud->width, input.cloud->height));
-  }
-  if (!options.png3d_dir.empty()) {
-    fs::create_directories(options.png3d_dir);
-    floodplane::io::writePng((fs::path(options.png3d_dir) / file).string(),
-                             comparisonImage3d(panels, input.cloud, scene["min_points"].get<std::size_t>()));
+  for (const bool in_3d : {false, true}) {
+    const std::string& directory = in_3d ? options.png3d_dir : options.png_dir;
+    if (directory.empty()) continue;
+    fs::create_directories(directory);
+    floodplane::io::writePng((fs::path(directory) / (input.name + ".png")).string(),
+                             in_3d ? comparisonImage3d(panels, input.cloud, scene["min_points"].get<std::size_t>())
+                                   : comparisonImage(panels, input.cloud->width, input.cloud->height));
   }
 }
 
@@ -237,10 +216,10 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
   if (!input.sensor.empty()) scene["sensor"] = input.sensor;
   scene["methods"] = Json::object();
   std::map<std::string, MethodRun> runs;  // the scored runs, for the pictures
-  Timing timing;
+  Json timing;
   for (const auto& method : methods.selected) {
     runs[method->name()] = measure(*method, input.cloud, options.repeat, timing);
-    scene["methods"][method->name()] = resultJson(runs[method->name()].labels, timing, input, min_points);
+    scene["methods"][method->name()] = methodJson(timing, runs[method->name()].labels, input, min_points);
   }
   for (const auto& [row, by_sensor] : methods.tuned) {
     const auto method = by_sensor.find(input.sensor);
@@ -253,7 +232,7 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
       continue;
     }
     const MethodRun run = measure(*method->second, input.cloud, options.repeat, timing);
-    scene["methods"][row] = resultJson(run.labels, timing, input, min_points);
+    scene["methods"][row] = methodJson(timing, run.labels, input, min_points);
   }
   if (!options.png_dir.empty() || !options.png3d_dir.empty()) writeComparisonImages(options, input, scene, runs);
   return scene;
@@ -274,7 +253,7 @@ void compareAll(const Options& options, Methods& methods, Json& report, MissingT
   for (std::size_t i = 0; i < files.size(); ++i) {
     const floodplane::io::InputFile& file = files[i];
     if (!options.quiet && files.size() > 1) {
-      const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      const double elapsed = millisecondsSince(start) / 1000.0;  // [s]
       std::cerr << "pcd_compare: [" << i + 1 << "/" << files.size() << "] " << file.path;
       if (i > 0) {
         std::cerr << " (" << minutes(elapsed) << " so far, about "

@@ -2,101 +2,82 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <limits>
-#include <map>
+#include <set>
+#include <utility>
+
+#include "eval/segmentation_metrics.h"
 
 namespace pcd_compare {
 
 namespace {
 
-using floodplane::eval::HooverClass;
-
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-const std::vector<std::string> kHooverCounts = {"correct", "over", "under", "missed", "noise"};
+// The Hoover counts' keys: a plane's class (HooverClass's order), then the noise segments.
+constexpr const char* kHooverCounts[] = {"correct", "over", "under", "missed", "noise"};
+static_assert(static_cast<int>(floodplane::eval::HooverClass::missed) == 3, "kHooverCounts follows HooverClass");
 
 Json number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
-double value(const Json& json) { return json.is_number() ? json.get<double>() : kNaN; }
 
-std::string hooverName(HooverClass hoover) {
-  switch (hoover) {
-    case HooverClass::correct:
-      return "correct";
-    case HooverClass::over_segmented:
-      return "over";
-    case HooverClass::under_segmented:
-      return "under";
-    case HooverClass::missed:
-      break;
-  }
-  return "missed";
-}
-
-// One method's sums over scenes, for its mean row.
-struct MeanRow {
-  std::size_t scenes = 0, scored = 0, with_floodplane = 0, with_non_plane = 0;
-  double median_ms = 0.0, min_ms = 0.0, floodplane_ms = 0.0, planes = 0.0, false_planes = 0.0;
-  std::map<std::string, double> parts_ms, accuracy;  // accuracy: the IoUs and Hoover counts
-
-  void add(const Json& scene, const Json& result) {
-    ++scenes;
-    median_ms += value(result["median_ms"]);
-    min_ms += value(result["min_ms"]);
-    planes += value(result["planes"]);
-    const Json parts = result.value("parts_median_ms", Json::object());
-    for (const auto& [part, ms] : parts.items()) parts_ms[part] += value(ms);
-    if (scene["methods"].contains("floodplane")) {
-      floodplane_ms += value(scene["methods"]["floodplane"]["median_ms"]);
-      ++with_floodplane;
-    }
-    if (result.contains("false_plane_fraction") && result["false_plane_fraction"].is_number()) {
-      false_planes += value(result["false_plane_fraction"]);
-      ++with_non_plane;
-    }
-    // Scenes whose ground truth keeps no plane have no IoU to average.
-    if (result.value("ground_truth_planes", 0) == 0) return;
-    ++scored;
-    accuracy["mean_iou"] += value(result["mean_iou"]);
-    accuracy["weighted_iou"] += value(result["weighted_iou"]);
-    for (const std::string& count : kHooverCounts) accuracy[count] += value(result["hoover"][count]);
-  }
-
-  Json json() const {
-    const auto time = [this](double sum) { return number(scenes > 0 ? sum / static_cast<double>(scenes) : kNaN); };
-    const auto mean = [this](const std::string& key) {
-      return number(scored > 0 ? accuracy.at(key) / static_cast<double>(scored) : kNaN);
-    };
-    Json row = {{"scenes", scenes},
-                {"scenes_with_ground_truth", scored},
-                {"median_ms", time(median_ms)},
-                {"min_ms", time(min_ms)},
-                // The ratio of the mean medians: long scenes weigh as they weigh in a user's
-                // waiting. Only when floodplane ran on every scene.
-                {"ratio_to_floodplane",
-                 number(with_floodplane == scenes && floodplane_ms > 0.0 ? median_ms / floodplane_ms : kNaN)},
-                {"planes", time(planes)}};
-    for (const auto& [part, ms] : parts_ms) row["parts_median_ms"][part] = time(ms);
-    row["mean_iou"] = mean("mean_iou");
-    row["weighted_iou"] = mean("weighted_iou");
-    for (const std::string& count : kHooverCounts) row["hoover"][count] = mean(count);
-    row["false_plane_fraction"] =
-        number(with_non_plane > 0 ? false_planes / static_cast<double>(with_non_plane) : kNaN);
-    row["scenes_with_non_plane_ground_truth"] = with_non_plane;
-    return row;
-  }
+// The sum of the numbers at `key` (a JSON pointer) in `results`, and how many there were.
+struct Sum {
+  double sum = 0.0;
+  std::size_t count = 0;
+  Json mean() const { return number(count > 0 ? sum / static_cast<double>(count) : kNaN); }
 };
 
-Json meansJson(const std::vector<std::pair<std::string, MeanRow>>& rows) {
-  Json json = Json::object();
-  for (const auto& [method, row] : rows) json[method] = row.json();
-  return json;
+Sum sumOf(const std::vector<const Json*>& results, const std::string& key) {
+  const Json::json_pointer pointer(key);
+  Sum total;
+  for (const Json* result : results) {
+    if (!result->contains(pointer) || !result->at(pointer).is_number()) continue;
+    total.sum += result->at(pointer).get<double>();
+    ++total.count;
+  }
+  return total;
 }
 
-MeanRow& rowOf(std::vector<std::pair<std::string, MeanRow>>& rows, const std::string& method) {
-  for (auto& [name, row] : rows) {
-    if (name == method) return row;
+// The mean row of `method` over the scenes of sensor model `sensor` (empty: every scene) that
+// ran it; null if none did.
+Json meanRow(const Json& scenes, const std::string& method, const std::string& sensor) {
+  std::vector<const Json*> all, scored;
+  double floodplane_ms = 0.0;
+  bool floodplane_everywhere = true;
+  for (const Json& scene : scenes) {
+    const Json& methods = scene.at("methods");
+    if (!methods.contains(method) || (!sensor.empty() && scene.value("sensor", "") != sensor)) continue;
+    all.push_back(&methods.at(method));
+    // Scenes whose ground truth keeps no plane have no IoU to average.
+    if (all.back()->value("ground_truth_planes", 0) > 0) scored.push_back(all.back());
+    floodplane_everywhere = floodplane_everywhere && methods.contains("floodplane");
+    if (methods.contains("floodplane")) floodplane_ms += methods.at("floodplane").at("median_ms").get<double>();
   }
-  return rows.emplace_back(method, MeanRow{}).second;
+  if (all.empty()) return Json();
+  const Sum median = sumOf(all, "/median_ms");
+  const Sum false_planes = sumOf(all, "/false_plane_fraction");
+  Json row = {
+      {"scenes", all.size()},
+      {"scenes_with_ground_truth", scored.size()},
+      {"median_ms", median.mean()},
+      {"min_ms", sumOf(all, "/min_ms").mean()},
+      // The ratio of the mean medians: long scenes weigh as they weigh in a user's
+      // waiting. Only when floodplane ran on every scene.
+      {"ratio_to_floodplane", number(floodplane_everywhere && floodplane_ms > 0.0 ? median.sum / floodplane_ms : kNaN)},
+      {"planes", sumOf(all, "/planes").mean()}};
+  for (const Json* result : all) {
+    const Json parts = result->value("parts_median_ms", Json::object());
+    for (const auto& part : parts.items()) {
+      row["parts_median_ms"][part.key()] = sumOf(all, "/parts_median_ms/" + part.key()).mean();
+    }
+  }
+  row["mean_iou"] = sumOf(scored, "/mean_iou").mean();
+  row["weighted_iou"] = sumOf(scored, "/weighted_iou").mean();
+  for (const char* count : kHooverCounts) row["hoover"][count] = sumOf(scored, std::string("/hoover/") + count).mean();
+  row["false_plane_fraction"] = false_planes.mean();
+  row["scenes_with_non_plane_ground_truth"] = false_planes.count;
+  return row;
 }
 
 std::string fixed(const Json& json, int decimals) {
@@ -122,7 +103,7 @@ std::string meanTable(const std::string& title, const Json& rows, bool normals, 
         " " + fixed(row["planes"], 1) + " |";
     if (accuracy) {
       out += " " + fixed(row["mean_iou"], 3) + " | " + fixed(row["weighted_iou"], 3) + " |";
-      for (const std::string& count : kHooverCounts) out += " " + fixed(row["hoover"][count], 1) + " |";
+      for (const char* count : kHooverCounts) out += " " + fixed(row["hoover"][count], 1) + " |";
       out += " " + fixed(row["false_plane_fraction"], 3) + " |";
     }
     out += "\n";
@@ -132,48 +113,62 @@ std::string meanTable(const std::string& title, const Json& rows, bool normals, 
 
 }  // namespace
 
-Json methodJson(const Timing& timing, std::size_t planes,
-                const std::optional<floodplane::eval::SegmentationScores>& scores) {
-  Json json = {{"median_ms", timing.median_ms}, {"min_ms", timing.min_ms}, {"planes", planes}};
-  for (const auto& [name, ms] : timing.parts_median_ms) json["parts_median_ms"][name] = ms;
-  if (!scores) return json;
-  json["mean_iou"] = number(scores->mean_iou);
-  json["weighted_iou"] = number(scores->weighted_iou);
-  json["hoover"] = {{"correct", scores->hoover.correct},
-                    {"over", scores->hoover.over},
-                    {"under", scores->hoover.under},
-                    {"missed", scores->hoover.missed},
-                    {"noise", scores->hoover.noise}};
-  json["false_plane_fraction"] = number(scores->false_plane_fraction);
-  json["ground_truth_planes"] = scores->planes.size();
-  json["predicted_segments"] = scores->predicted_segments;
+Json methodJson(Json timing, const std::vector<std::uint32_t>& labels, const InputCloud& input,
+                std::uint32_t min_points) {
+  Json json = std::move(timing);
+  std::set<std::uint32_t> planes(labels.begin(), labels.end());
+  planes.erase(0);
+  json["planes"] = planes.size();
+  if (!input.ground_truth) return json;
+  floodplane::eval::MetricsOptions options;
+  options.min_points = min_points;
+  options.tolerance = 0.8;  // Hoover's T, metrics.md's default
+  const auto scores = floodplane::eval::evaluateSegmentation(*input.ground_truth, labels, input.valid, options);
+  json["mean_iou"] = number(scores.mean_iou);
+  json["weighted_iou"] = number(scores.weighted_iou);
+  json["hoover"] = {{"correct", scores.hoover.correct},
+                    {"over", scores.hoover.over},
+                    {"under", scores.hoover.under},
+                    {"missed", scores.hoover.missed},
+                    {"noise", scores.hoover.noise}};
+  json["false_plane_fraction"] = number(scores.false_plane_fraction);
+  json["ground_truth_planes"] = scores.planes.size();
+  json["predicted_segments"] = scores.predicted_segments;
   json["per_plane"] = Json::array();
-  for (const auto& plane : scores->planes) {
+  for (const auto& plane : scores.planes) {
     json["per_plane"].push_back({{"label", plane.label},
                                  {"pixels", plane.pixels},
                                  {"iou", plane.iou},
                                  {"best_segment", plane.best_segment},
-                                 {"hoover", hooverName(plane.hoover)}});
+                                 {"hoover", kHooverCounts[static_cast<int>(plane.hoover)]}});
   }
   return json;
 }
 
 void addMeans(Json& report) {
-  std::vector<std::pair<std::string, MeanRow>> overall;
-  std::map<std::string, std::vector<std::pair<std::string, MeanRow>>> by_sensor;
+  std::vector<std::string> methods;  // in run order
+  std::set<std::string> sensors;
   for (Json& scene : report["scenes"]) {
     const double floodplane_ms =
-        scene["methods"].contains("floodplane") ? value(scene["methods"]["floodplane"]["median_ms"]) : kNaN;
+        scene["methods"].contains("floodplane") ? scene["methods"]["floodplane"]["median_ms"].get<double>() : kNaN;
     for (auto& [method, result] : scene["methods"].items()) {
-      result["ratio_to_floodplane"] = number(floodplane_ms > 0.0 ? value(result["median_ms"]) / floodplane_ms : kNaN);
-      rowOf(overall, method).add(scene, result);
-      if (!scene.contains("sensor")) continue;
-      rowOf(by_sensor[scene["sensor"].get<std::string>()], method).add(scene, result);
+      result["ratio_to_floodplane"] =
+          number(floodplane_ms > 0.0 ? result["median_ms"].get<double>() / floodplane_ms : kNaN);
+      if (std::find(methods.begin(), methods.end(), method) == methods.end()) methods.push_back(method);
     }
+    if (scene.contains("sensor")) sensors.insert(scene["sensor"].get<std::string>());
   }
-  report["means"] = meansJson(overall);
+  const auto means = [&](const std::string& sensor) {
+    Json rows = Json::object();
+    for (const std::string& method : methods) {
+      Json row = meanRow(report["scenes"], method, sensor);
+      if (!row.is_null()) rows[method] = std::move(row);
+    }
+    return rows;
+  };
+  report["means"] = means("");
   report["means_by_sensor"] = Json::object();
-  for (const auto& [sensor, rows] : by_sensor) report["means_by_sensor"][sensor] = meansJson(rows);
+  for (const std::string& sensor : sensors) report["means_by_sensor"][sensor] = means(sensor);
 }
 
 std::string markdownConfiguration(const Json& report) {

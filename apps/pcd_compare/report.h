@@ -6,30 +6,22 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstddef>
-#include <optional>
+#include <cstdint>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "eval/segmentation_metrics.h"
+#include "input_cloud.h"
 
 namespace pcd_compare {
 
 using Json = nlohmann::ordered_json;
 
-/// A method's time on one scene: median and min of its timed runs, and the medians of its
-/// named parts (OMPS: "normals"). [ms]
-struct Timing {
-  double median_ms = 0.0;
-  double min_ms = 0.0;
-  std::vector<std::pair<std::string, double>> parts_median_ms;
-};
-
-/// A method's entry in a scene: timing, planes found and, against ground truth, the scores
-/// (mean and weighted IoU, Hoover counts, false-plane fraction, per plane; NaN as null).
-Json methodJson(const Timing& timing, std::size_t planes,
-                const std::optional<floodplane::eval::SegmentationScores>& scores);
+/// A method's entry in a scene: `timing` (median_ms, min_ms and the parts' parts_median_ms),
+/// the planes of `labels` and, when `input` has ground truth, the scores against it as in
+/// metrics.md (T = 0.8; planes and segments below `min_points` pixels ignored): mean and
+/// weighted IoU, Hoover counts, false-plane fraction, per plane; NaN as null.
+Json methodJson(Json timing, const std::vector<std::uint32_t>& labels, const InputCloud& input,
+                std::uint32_t min_points);
 
 /// Completes a report whose "scenes" are filled: each method's ratio_to_floodplane in its
 /// scene, then "means" (per method over every scene) and "means_by_sensor" (per sensor model
