@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "common/plane_view.h"
 #include "io/label_palette.h"
 
 namespace pcd_compare {
@@ -21,49 +22,8 @@ constexpr double kTitleFontSize = 15.0;   // pixels
 constexpr double kTitleMargin = 4.0;      // pixels left of the text
 constexpr std::size_t kPanelGap = 4;
 
-}  // namespace
-
-std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::uint32_t>& predicted,
-                                                       const std::vector<std::uint32_t>& ground_truth,
-                                                       const std::vector<std::uint8_t>& valid) {
-  if (ground_truth.empty()) {
-    return predicted;
-  }
-  // overlap[p][g] = pixels of segment p on plane g.
-  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> overlap;
-  for (std::size_t i = 0; i < predicted.size(); ++i) {
-    if (predicted[i] != 0 && ground_truth[i] != 0 && valid[i] != 0) {
-      ++overlap[predicted[i]][ground_truth[i]];
-    }
-  }
-  std::map<std::uint32_t, std::uint32_t> colour_of;
-  for (const auto& [segment, planes] : overlap) {
-    const auto best = std::max_element(planes.begin(), planes.end(),
-                                       [](const auto& a, const auto& b) { return a.second < b.second; });
-    colour_of[segment] = best->first;
-  }
-  std::vector<std::uint32_t> colours(predicted.size(), 0);
-  for (std::size_t i = 0; i < predicted.size(); ++i) {
-    if (predicted[i] == 0) {
-      continue;
-    }
-    const auto found = colour_of.find(predicted[i]);
-    colours[i] = found != colour_of.end() ? found->second : predicted[i] + kUnmatchedLabelOffset;
-  }
-  return colours;
-}
-
-floodplane::io::RgbImage comparisonImage(const std::vector<Panel>& panels, std::size_t width, std::size_t height) {
-  if (panels.empty()) {
-    throw std::invalid_argument("comparisonImage: no panels");
-  }
-  std::vector<std::pair<std::string, floodplane::io::RgbImage>> images;
-  for (const Panel& panel : panels) {
-    images.emplace_back(panel.title, floodplane::io::labelImage(panel.colour_labels, width, height));
-  }
-  return titledImages(images);
-}
-
+// Images of one size side by side, each with its title in a strip above. Throws
+// std::invalid_argument if there are none or their sizes differ.
 floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, floodplane::io::RgbImage>>& images) {
   if (images.empty()) {
     throw std::invalid_argument("titledImages: no images");
@@ -116,6 +76,77 @@ floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, f
     }
   }
   return image;
+}
+
+// Labels that give `predicted` colours comparable with the ground truth's. Separate
+// segmentations number their planes arbitrarily, so coloured by their own labels the same
+// wall would get a different colour in every panel. Instead each predicted segment takes
+// the label of the ground-truth plane it overlaps most (over valid pixels), and segments on
+// no plane keep their own label, shifted past any plausible ground-truth label so that they
+// do not borrow a plane's colour. Label 0 stays 0. Without ground truth (empty vector) the
+// labels are returned as they are.
+std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::uint32_t>& predicted,
+                                                       const std::vector<std::uint32_t>& ground_truth,
+                                                       const std::vector<std::uint8_t>& valid) {
+  if (ground_truth.empty()) {
+    return predicted;
+  }
+  // overlap[p][g] = pixels of segment p on plane g.
+  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> overlap;
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    if (predicted[i] != 0 && ground_truth[i] != 0 && valid[i] != 0) {
+      ++overlap[predicted[i]][ground_truth[i]];
+    }
+  }
+  std::map<std::uint32_t, std::uint32_t> colour_of;
+  for (const auto& [segment, planes] : overlap) {
+    const auto best = std::max_element(planes.begin(), planes.end(),
+                                       [](const auto& a, const auto& b) { return a.second < b.second; });
+    colour_of[segment] = best->first;
+  }
+  std::vector<std::uint32_t> colours(predicted.size(), 0);
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    if (predicted[i] == 0) {
+      continue;
+    }
+    const auto found = colour_of.find(predicted[i]);
+    colours[i] = found != colour_of.end() ? found->second : predicted[i] + kUnmatchedLabelOffset;
+  }
+  return colours;
+}
+
+}  // namespace
+
+floodplane::io::RgbImage comparisonImage(const InputCloud& input, const std::vector<LabelledPanel>& panels,
+                                         std::size_t min_points, bool in_3d) {
+  const Cloud& cloud = *input.cloud;
+  std::vector<std::pair<std::string, floodplane::io::RgbImage>> images;
+  // `segments` (a method's own labels, one segment each) coloured as `colours` says.
+  const auto add = [&](const std::string& title, const std::vector<std::uint32_t>& colours,
+                       const std::vector<std::uint32_t>& segments) {
+    if (!in_3d) {
+      images.emplace_back(title, floodplane::io::labelImage(colours, cloud.width, cloud.height));
+      return;
+    }
+    floodplane::view::PlaneScene scene;
+    scene.cloud = input.cloud;
+    scene.colour_labels = colours;
+    scene.planes = floodplane::view::planeMarkersFromLabels(cloud, segments, colours, min_points);
+    scene.show_plane_text = false;  // segment numbers differ between methods and mean nothing here
+    images.emplace_back(title,
+                        floodplane::view::renderImage(scene, floodplane::view::CameraView::oblique,
+                                                      static_cast<int>(cloud.width), static_cast<int>(cloud.height)));
+  };
+  const std::vector<std::uint32_t> ground_truth = input.ground_truth.value_or(std::vector<std::uint32_t>());
+  if (input.ground_truth) {
+    // Pixels without a point show as "no plane", as they do in the predictions.
+    std::vector<std::uint32_t> shown = ground_truth;
+    for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = input.valid[i] != 0 ? shown[i] : 0;
+    add("ground truth", shown, shown);
+  }
+  for (const auto& [title, labels] : panels)
+    add(title, coloursMatchedToGroundTruth(labels, ground_truth, input.valid), labels);
+  return titledImages(images);
 }
 
 }  // namespace pcd_compare

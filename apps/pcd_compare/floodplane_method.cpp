@@ -10,11 +10,9 @@ namespace {
 
 class FloodplaneMethod : public Method {
  public:
-  explicit FloodplaneMethod(int subsampling) { segmentation_.setSubsampling(subsampling); }
-
-  std::string name() const override {
-    const int factor = segmentation_.getSubsampling();
-    return factor == 1 ? "floodplane" : "floodplane/" + std::to_string(factor);
+  explicit FloodplaneMethod(int subsampling)
+      : Method(subsampling == 1 ? "floodplane" : "floodplane/" + std::to_string(subsampling), false) {
+    segmentation_.setSubsampling(subsampling);
   }
 
   std::string parameters() const override {

@@ -1,7 +1,6 @@
 #include "input_cloud.h"
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
@@ -42,11 +41,8 @@ InputCloud loadInputCloud(const std::string& path) {
   input.name = withoutPcdExtension(path);
   input.sensor = sensorModel(path);
   input.cloud = std::make_shared<Cloud>(std::move(frame.xyz));
-  input.valid.resize(input.cloud->size());
-  for (std::size_t i = 0; i < input.cloud->size(); ++i) {
-    const pcl::PointXYZ& p = (*input.cloud)[i];
-    input.valid[i] = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) ? 1 : 0;
-  }
+  input.valid.reserve(input.cloud->size());
+  for (const pcl::PointXYZ& point : *input.cloud) input.valid.push_back(pcl::isFinite(point) ? 1 : 0);
   input.ground_truth = std::move(frame.labels);
   return input;
 }

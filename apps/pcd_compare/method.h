@@ -42,16 +42,21 @@ struct MethodRun {
 
 class Method {
  public:
+  Method(std::string name, bool slow) : name_(std::move(name)), slow_(slow) {}
   virtual ~Method() = default;
   /// Short name used in tables, file names and --methods.
-  virtual std::string name() const = 0;
+  const std::string& name() const { return name_; }
   /// Every parameter that decides the result, as text for the configuration block.
   virtual std::string parameters() const = 0;
   /// Segments one organized cloud. Deterministic: the same cloud gives the same labels.
   virtual MethodRun run(const Cloud::ConstPtr& cloud) = 0;
   /// Seconds a cloud (the sequential RANSACs): timed once, on the scored run, whatever
   /// --repeat says; their accuracy is the point of running them, not their exact time.
-  virtual bool slow() const { return false; }
+  bool slow() const { return slow_; }
+
+ private:
+  std::string name_;
+  bool slow_;
 };
 
 /// The sequential extraction both RANSAC baselines run: `best_plane(remaining)` gives the

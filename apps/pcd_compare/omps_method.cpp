@@ -15,7 +15,7 @@ namespace {
 
 class OmpsMethod : public Method {
  public:
-  OmpsMethod(const ParameterValues& values, std::string name) : values_(values), name_(std::move(name)) {
+  OmpsMethod(const ParameterValues& values, std::string name) : Method(std::move(name), false), values_(values) {
     floodplane::apps::configureOmps(normal_estimation_, segmentation_);
     normal_estimation_.setMaxDepthChangeFactor(static_cast<float>(values.at("max_depth_change_factor")));
     normal_estimation_.setNormalSmoothingSize(static_cast<float>(values.at("normal_smoothing_size")));
@@ -24,8 +24,6 @@ class OmpsMethod : public Method {
     segmentation_.setMaximumCurvature(values.at("maximum_curvature"));
     segmentation_.setMinInliers(static_cast<unsigned>(values.at("min_inliers")));
   }
-
-  std::string name() const override { return name_; }
 
   std::string parameters() const override {
     std::ostringstream text;
@@ -65,7 +63,6 @@ class OmpsMethod : public Method {
 
  private:
   ParameterValues values_;  // for the description: PCL's normal estimation has no getters
-  std::string name_;
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation_;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> segmentation_;
   floodplane::apps::OmpsOutputs<pcl::PointXYZ> outputs_;

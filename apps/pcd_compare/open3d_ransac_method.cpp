@@ -36,14 +36,11 @@ class SingleOpenMpThread {
 class Open3dRansacMethod : public Method {
  public:
   Open3dRansacMethod(const ParameterValues& values, std::string name)
-      : distance_threshold_(values.at("distance_threshold")),
-        min_inliers_(static_cast<std::size_t>(values.at("min_inliers"))),
-        name_(std::move(name)) {
+      : Method(std::move(name), true),
+        distance_threshold_(values.at("distance_threshold")),
+        min_inliers_(static_cast<std::size_t>(values.at("min_inliers"))) {
     open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Warning);
   }
-
-  std::string name() const override { return name_; }
-  bool slow() const override { return true; }
 
   std::string parameters() const override {
     std::ostringstream text;
@@ -78,7 +75,6 @@ class Open3dRansacMethod : public Method {
  private:
   double distance_threshold_;
   std::size_t min_inliers_;
-  std::string name_;
 };
 
 }  // namespace

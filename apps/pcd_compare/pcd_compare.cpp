@@ -27,7 +27,6 @@
 #include "common/cli.h"
 #include "common/display_check.h"
 #include "comparison_image.h"
-#include "comparison_image_3d.h"
 #include "eval/segmentation_metrics.h"
 #include "floodplane/version.h"
 #include "input_cloud.h"
@@ -175,30 +174,21 @@ void writeComparisonImages(const Options& options, const InputCloud& input, cons
                            const std::map<std::string, MethodRun>& runs) {
   static const std::vector<std::string> kOrder = {"ransac",       "open3d_ransac", "omps",      "floodplane/8",
                                                   "floodplane/4", "floodplane/2",  "floodplane"};
-  const std::vector<std::uint32_t> ground_truth = input.ground_truth.value_or(std::vector<std::uint32_t>());
-  std::vector<Panel> panels;
-  if (input.ground_truth) {
-    // Pixels without a point show as "no plane", as they do in the predictions.
-    std::vector<std::uint32_t> shown = ground_truth;
-    for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = input.valid[i] != 0 ? shown[i] : 0;
-    panels.push_back({"ground truth", std::move(shown), {}});
-  }
+  std::vector<LabelledPanel> panels;
   for (const std::string& name : kOrder) {
     const auto run = runs.find(name);
     if (run == runs.end()) continue;
     char iou[32] = "";
     const Json& mean_iou = scene["methods"][name].value("mean_iou", Json());
     if (mean_iou.is_number()) std::snprintf(iou, sizeof iou, "  IoU %.3f", mean_iou.get<double>());
-    panels.push_back(
-        {name + iou, coloursMatchedToGroundTruth(run->second.labels, ground_truth, input.valid), run->second.labels});
+    panels.emplace_back(name + iou, run->second.labels);
   }
   for (const bool in_3d : {false, true}) {
     const std::string& directory = in_3d ? options.png3d_dir : options.png_dir;
     if (directory.empty()) continue;
     fs::create_directories(directory);
     floodplane::io::writePng((fs::path(directory) / (input.name + ".png")).string(),
-                             in_3d ? comparisonImage3d(panels, input.cloud, scene["min_points"].get<std::size_t>())
-                                   : comparisonImage(panels, input.cloud->width, input.cloud->height));
+                             comparisonImage(input, panels, scene["min_points"].get<std::size_t>(), in_3d));
   }
 }
 

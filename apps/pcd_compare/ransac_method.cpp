@@ -19,7 +19,7 @@ namespace {
 class RansacMethod : public Method {
  public:
   RansacMethod(const ParameterValues& values, std::string name)
-      : min_inliers_(static_cast<std::size_t>(values.at("min_inliers"))), name_(std::move(name)) {
+      : Method(std::move(name), true), min_inliers_(static_cast<std::size_t>(values.at("min_inliers"))) {
     // SACSegmentation's default `random = false` makes every RANSAC it creates seed its
     // generator with the fixed 12345 (pcl/sample_consensus/sac_model.h), so runs repeat
     // exactly; srand covers any std::rand use inside PCL as well.
@@ -29,9 +29,6 @@ class RansacMethod : public Method {
     segmentation_.setDistanceThreshold(values.at("distance_threshold"));
     segmentation_.setOptimizeCoefficients(true);
   }
-
-  std::string name() const override { return name_; }
-  bool slow() const override { return true; }
 
   std::string parameters() const override {
     std::ostringstream text;
@@ -63,7 +60,6 @@ class RansacMethod : public Method {
 
  private:
   std::size_t min_inliers_;
-  std::string name_;
   pcl::SACSegmentation<pcl::PointXYZ> segmentation_;
   pcl::PointIndices inliers_;
   pcl::ModelCoefficients coefficients_;
