@@ -25,8 +25,7 @@ struct Baseline {
   std::unique_ptr<Method> (*make)(const ParameterValues& values, const std::string& name);
 };
 
-// PCL's and Open3D's sequential RANSAC: the best plane is extracted, then the best plane of the
-// rest, until a plane has fewer than min_inliers inliers (that plane is dropped).
+// PCL's and Open3D's sequential RANSAC (extractPlanesInTurn, method.h).
 const std::vector<std::pair<std::string, double>> kSequentialRansac = {
     {"distance_threshold", 0.01},  // inlier distance from the plane [m]
     {"min_inliers", 100}};

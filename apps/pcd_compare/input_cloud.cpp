@@ -9,27 +9,6 @@
 
 namespace pcd_compare {
 
-namespace {
-
-std::string withoutPcdExtension(const std::string& path) {
-  std::string name = std::filesystem::path(path).filename().string();
-  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".pcd") == 0) name.resize(name.size() - 4);
-  return name;
-}
-
-}  // namespace
-
-std::string sensorModel(const std::string& path) {
-  const std::string name = withoutPcdExtension(path);
-  const std::size_t dot = name.rfind('.');
-  if (dot == std::string::npos) return "";
-  const std::string sensor = name.substr(dot + 1);
-  // Recorded frames are often named by time ("frame_20121214T142255.814212"): digits after
-  // the dot are a fraction of a second, not a sensor model.
-  const bool number = std::all_of(sensor.begin(), sensor.end(), [](char c) { return c >= '0' && c <= '9'; });
-  return number ? "" : sensor;
-}
-
 InputCloud loadInputCloud(const std::string& path) {
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(path);
   if (frame.xyz.width <= 1) {
@@ -38,8 +17,14 @@ InputCloud loadInputCloud(const std::string& path) {
   }
   InputCloud input;
   input.path = path;
-  input.name = withoutPcdExtension(path);
-  input.sensor = sensorModel(path);
+  const std::string file = std::filesystem::path(path).filename().string();
+  const bool pcd = file.size() > 4 && file.compare(file.size() - 4, 4, ".pcd") == 0;
+  input.name = pcd ? file.substr(0, file.size() - 4) : file;
+  // Recorded frames are often named by time ("frame_20121214T142255.814212"): digits after
+  // the dot are a fraction of a second, not a sensor model.
+  const std::size_t dot = input.name.rfind('.');
+  const std::string sensor = dot == std::string::npos ? "" : input.name.substr(dot + 1);
+  if (!std::all_of(sensor.begin(), sensor.end(), [](char c) { return c >= '0' && c <= '9'; })) input.sensor = sensor;
   input.cloud = std::make_shared<Cloud>(std::move(frame.xyz));
   input.valid.reserve(input.cloud->size());
   for (const pcl::PointXYZ& point : *input.cloud) input.valid.push_back(pcl::isFinite(point) ? 1 : 0);

@@ -18,7 +18,6 @@
 #include <memory>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,13 +40,14 @@ namespace {
 namespace fs = std::filesystem;
 using namespace pcd_compare;
 
-const std::vector<std::string> kDefaultMethods = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
+const std::vector<std::string> kMethods = {"floodplane", "floodplane/2",  "floodplane/4", "floodplane/8",
+                                           "ransac",     "open3d_ransac", "omps"};
 const std::vector<std::string> kResolutions = {"floodplane", "floodplane/2", "floodplane/4", "floodplane/8"};
 const std::vector<std::string> kSensors = {"kinect", "scanner", "none"};
 
 struct Options {
   std::vector<std::string> inputs;
-  std::vector<std::string> methods;
+  std::vector<std::string> methods = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
   int repeat = 20;
   std::string json_file, png_dir, png3d_dir;
   std::string sensor;      // every input's sensor model; empty: from the file name
@@ -55,23 +55,19 @@ struct Options {
   bool resolutions = false, tuned = false, quiet = false;
 };
 
-std::vector<std::string> splitList(const std::string& list) {
-  std::vector<std::string> items;
-  std::istringstream stream(list);
-  for (std::string item; std::getline(stream, item, ',');) {
-    if (!item.empty() && std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
+// `names` in order, each once.
+std::vector<std::string> firstOfEach(const std::vector<std::string>& names) {
+  std::vector<std::string> once;
+  for (const std::string& name : names) {
+    if (std::find(once.begin(), once.end(), name) == once.end()) once.push_back(name);
   }
-  return items;
+  return once;
 }
 
 std::string joined(const std::vector<std::string>& items, const std::string& separator = ", ") {
   std::string text;
   for (const std::string& item : items) text += (text.empty() ? "" : separator) + item;
   return text;
-}
-
-bool isMethodName(const std::string& name) {
-  return isTunable(name) || std::find(kResolutions.begin(), kResolutions.end(), name) != kResolutions.end();
 }
 
 std::unique_ptr<Method> makeMethod(const std::string& name) {
@@ -270,28 +266,21 @@ void compareAll(const Options& options, Methods& methods, Json& report, MissingT
 }
 
 constexpr const char* kDescription =
-    "Compares plane segmentations of organized PCD files: floodplane (at sub-sampling 1 and 2, or 4 and 8), "
-    "PCL's sequential RANSAC, Open3D's sequential RANSAC and PCL's OrganizedMultiPlaneSegmentation, the "
-    "baselines also at tuned values (--tuned). Prints the configuration and the means per method (over all "
-    "files, then per sensor model): runtime (median and min over --repeat runs after a warm-up; the "
-    "sequential RANSACs, which take seconds, run once) and, for files with a ground-truth `label` field, mean "
-    "and weighted IoU, Hoover counts and the false-plane fraction. --json has every file and plane; "
-    "bench/compare_tables.py makes the per-file tables and CSV from it, bench/tune_baselines.py tunes the "
-    "baselines. INPUT is a PCD file or a directory (its *.pcd files, sorted).";
+    "Compares plane segmentations of organized PCD files: floodplane, PCL's and Open3D's sequential RANSAC and "
+    "PCL's OrganizedMultiPlaneSegmentation (omps). Prints the configuration and the means per method, over all "
+    "files and per sensor model: runtime and, for files with a ground-truth `label` field, mean and weighted IoU, "
+    "Hoover counts and the false-plane fraction. --json has every file and plane; bench/compare_tables.py makes "
+    "the per-file tables and CSV from it, bench/tune_baselines.py tunes the baselines.";
 
-void addOptions(CLI::App& app, Options& options, std::string& method_list) {
+void addOptions(CLI::App& app, Options& options) {
   // No existence check here: a missing file is reported with the others, and the batch goes on.
-  app.add_option("inputs", options.inputs, "PCD files or directories of *.pcd")->required();
-  // One comma-separated token, split here: a vector option would also swallow the INPUTs
-  // that follow it ("--methods omps scene.pcd").
-  app.add_option("--methods", method_list,
-                 "Methods to run, comma-separated, from " + joined(kDefaultMethods) + ", floodplane/4, floodplane/8")
-      ->check([](const std::string& list) -> std::string {
-        for (const std::string& name : splitList(list)) {
-          if (!isMethodName(name)) return "unknown method '" + name + "'";
-        }
-        return splitList(list).empty() ? "no method given" : "";
-      })
+  app.add_option("inputs", options.inputs, "PCD files, or directories (their *.pcd files, sorted)")->required();
+  // One comma-separated token: without allow_extra_args(false) the option would also swallow
+  // the INPUTs that follow it ("--methods omps scene.pcd").
+  app.add_option("--methods", options.methods, "Methods to run, comma-separated")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember(kMethods))
       ->capture_default_str();
   app.add_option("--repeat", options.repeat,
                  "Timed runs per method and file after one warm-up (the sequential RANSACs run once); 0: one run "
@@ -325,12 +314,12 @@ void addOptions(CLI::App& app, Options& options, std::string& method_list) {
 
 int main(int argc, char** argv) {
   Options options;
-  std::string method_list = joined(kDefaultMethods, ",");
   CLI::App app{kDescription, "pcd_compare"};
   floodplane::apps::addVersionFlag(app);
-  addOptions(app, options, method_list);
+  addOptions(app, options);
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
-  options.methods = splitList(method_list + (options.resolutions ? "," + joined(kResolutions, ",") : ""));
+  if (options.resolutions) options.methods.insert(options.methods.end(), kResolutions.begin(), kResolutions.end());
+  options.methods = firstOfEach(options.methods);
   if (!options.png3d_dir.empty()) {
     // Before any work: the comparison can take minutes, and every image would fail alike.
     if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {

@@ -42,30 +42,27 @@ Sum sumOf(const std::vector<const Json*>& results, const std::string& key) {
 // The mean row of `method` over the scenes of sensor model `sensor` (empty: every scene) that
 // ran it; null if none did.
 Json meanRow(const Json& scenes, const std::string& method, const std::string& sensor) {
-  std::vector<const Json*> all, scored;
-  double floodplane_ms = 0.0;
-  bool floodplane_everywhere = true;
+  std::vector<const Json*> all, scored, floodplane;
   for (const Json& scene : scenes) {
     const Json& methods = scene.at("methods");
     if (!methods.contains(method) || (!sensor.empty() && scene.value("sensor", "") != sensor)) continue;
     all.push_back(&methods.at(method));
     // Scenes whose ground truth keeps no plane have no IoU to average.
     if (all.back()->value("ground_truth_planes", 0) > 0) scored.push_back(all.back());
-    floodplane_everywhere = floodplane_everywhere && methods.contains("floodplane");
-    if (methods.contains("floodplane")) floodplane_ms += methods.at("floodplane").at("median_ms").get<double>();
+    if (methods.contains("floodplane")) floodplane.push_back(&methods.at("floodplane"));
   }
   if (all.empty()) return Json();
   const Sum median = sumOf(all, "/median_ms");
   const Sum false_planes = sumOf(all, "/false_plane_fraction");
-  Json row = {
-      {"scenes", all.size()},
-      {"scenes_with_ground_truth", scored.size()},
-      {"median_ms", median.mean()},
-      {"min_ms", sumOf(all, "/min_ms").mean()},
-      // The ratio of the mean medians: long scenes weigh as they weigh in a user's
-      // waiting. Only when floodplane ran on every scene.
-      {"ratio_to_floodplane", number(floodplane_everywhere && floodplane_ms > 0.0 ? median.sum / floodplane_ms : kNaN)},
-      {"planes", sumOf(all, "/planes").mean()}};
+  Json row = {{"scenes", all.size()},
+              {"scenes_with_ground_truth", scored.size()},
+              {"median_ms", median.mean()},
+              {"min_ms", sumOf(all, "/min_ms").mean()},
+              // The ratio of the mean medians: long scenes weigh as they weigh in a user's
+              // waiting. Only when floodplane ran on every scene.
+              {"ratio_to_floodplane",
+               number(floodplane.size() == all.size() ? median.sum / sumOf(floodplane, "/median_ms").sum : kNaN)},
+              {"planes", sumOf(all, "/planes").mean()}};
   for (const Json* result : all) {
     const Json parts = result->value("parts_median_ms", Json::object());
     for (const auto& part : parts.items()) {
