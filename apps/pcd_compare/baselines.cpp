@@ -1,4 +1,5 @@
-#include "baselines.h"
+// The tunable baselines of method.h: one table of their parameters and defaults, and the file of
+// tuned values.
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "common/omps_run.h"
+#include "method.h"
 
 namespace pcd_compare {
 

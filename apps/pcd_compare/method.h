@@ -1,7 +1,7 @@
 #pragma once
-// The common interface of the segmentation methods pcd_compare runs. Each method lives in its
-// own file so that the heavy PCL headers (sample consensus, OMPS, normal estimation) are
-// compiled once, in the file that needs them.
+// The segmentation methods pcd_compare runs: their common interface and how each is made. Each
+// method lives in its own file so that the heavy PCL headers (sample consensus, OMPS, normal
+// estimation) are compiled once, in the file that needs them.
 
 #include <pcl/common/point_tests.h>
 #include <pcl/point_cloud.h>
@@ -84,12 +84,31 @@ std::vector<std::uint32_t> extractPlanesInTurn(const Cloud& cloud, std::size_t m
 /// floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> with the library's defaults, at
 /// the given sub-sampling factor.
 std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1);
-// The tunable baselines, at `values` that name every parameter with a valid value: makeBaseline
-// (baselines.h) fills in the defaults and checks them.
-/// PCL's sequential RANSAC. Labels number the planes in the order they were extracted.
+
+// The baselines whose parameters can be tuned (PCL's OMPS and RANSAC, Open3D's RANSAC), made
+// from values by name (baselines.cpp), and the tuned values that bench/tune_baselines.py writes
+// per baseline and sensor model, which --tuned reads.
+
+/// Per baseline, then per sensor model, the tuned values.
+using TunedValues = std::map<std::string, std::map<std::string, ParameterValues>>;
+
+/// True for "omps", "ransac" and "open3d_ransac".
+bool isTunable(const std::string& baseline);
+/// The tunable `baseline` at `values` (missing names take their defaults), named `name`.
+/// Throws std::invalid_argument for an unknown parameter or a value out of range.
+std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,
+                                     const std::string& name);
+/// Every parameter of `baseline` with its value, the defaults filled in: "name=value, ...".
+std::string describeValues(const std::string& baseline, const ParameterValues& values);
+/// Reads a tuning result; std::runtime_error naming the file if it cannot be read, parsed, or
+/// names an unknown baseline, parameter or bad value.
+TunedValues readTunedValues(const std::string& path);
+
+// Each baseline at `values` that name every parameter with a valid value: makeBaseline fills in
+// the defaults and checks them.
+/// PCL's sequential RANSAC.
 std::unique_ptr<Method> makeRansacMethod(const ParameterValues& values, const std::string& name);
-/// Open3D's SegmentPlane, sequentially. Labels number the planes in the order they were
-/// extracted.
+/// Open3D's SegmentPlane, sequentially.
 std::unique_ptr<Method> makeOpen3dRansacMethod(const ParameterValues& values, const std::string& name);
 /// PCL's IntegralImageNormalEstimation + OrganizedMultiPlaneSegmentation::segmentAndRefine.
 std::unique_ptr<Method> makeOmpsMethod(const ParameterValues& values, const std::string& name);

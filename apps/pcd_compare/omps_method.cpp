@@ -1,5 +1,5 @@
 // PCL's OrganizedMultiPlaneSegmentation with integral-image normals, as in PCL's own
-// organized segmentation demo (settings and the call in common/omps_run.h).
+// organized segmentation demo (its settings and the one safe call in common/omps_run.h).
 
 #include <pcl/features/integral_image_normal.h>
 #include <pcl/segmentation/organized_multi_plane_segmentation.h>
@@ -16,7 +16,7 @@ namespace {
 class OmpsMethod : public Method {
  public:
   OmpsMethod(const ParameterValues& values, std::string name) : Method(std::move(name), false), values_(values) {
-    floodplane::apps::configureOmps(normal_estimation_, segmentation_);
+    normal_estimation_.setNormalEstimationMethod(normal_estimation_.AVERAGE_3D_GRADIENT);
     normal_estimation_.setMaxDepthChangeFactor(static_cast<float>(values.at("max_depth_change_factor")));
     normal_estimation_.setNormalSmoothingSize(static_cast<float>(values.at("normal_smoothing_size")));
     segmentation_.setAngularThreshold(values.at("angular_threshold"));

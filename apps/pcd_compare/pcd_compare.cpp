@@ -22,7 +22,6 @@
 #include <string>
 #include <vector>
 
-#include "baselines.h"
 #include "common/cli.h"
 #include "common/display_check.h"
 #include "comparison_image.h"
@@ -201,12 +200,13 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
                 {"min_points", min_points}};
   if (!input.sensor.empty()) scene["sensor"] = input.sensor;
   scene["methods"] = Json::object();
-  std::map<std::string, MethodRun> runs;  // the scored runs, for the pictures
-  Json timing;
-  for (const auto& method : methods.selected) {
-    runs[method->name()] = measure(*method, input.cloud, options.repeat, timing);
-    scene["methods"][method->name()] = methodJson(timing, runs[method->name()].labels, input, min_points);
-  }
+  std::map<std::string, MethodRun> runs;  // the scored runs by row, for the pictures
+  const auto compare = [&](Method& method, const std::string& row) {
+    Json timing;
+    runs[row] = measure(method, input.cloud, options.repeat, timing);
+    scene["methods"][row] = methodJson(timing, runs[row].labels, input, min_points);
+  };
+  for (const auto& method : methods.selected) compare(*method, method->name());
   for (const auto& [row, by_sensor] : methods.tuned) {
     const auto method = by_sensor.find(input.sensor);
     if (method == by_sensor.end()) {
@@ -217,8 +217,7 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
           .push_back(input.name);
       continue;
     }
-    const MethodRun run = measure(*method->second, input.cloud, options.repeat, timing);
-    scene["methods"][row] = methodJson(timing, run.labels, input, min_points);
+    compare(*method->second, row);
   }
   if (!options.png_dir.empty() || !options.png3d_dir.empty()) writeComparisonImages(options, input, scene, runs);
   return scene;

@@ -63,11 +63,10 @@ Json meanRow(const Json& scenes, const std::string& method, const std::string& s
               {"ratio_to_floodplane",
                number(floodplane.size() == all.size() ? median.sum / sumOf(floodplane, "/median_ms").sum : kNaN)},
               {"planes", sumOf(all, "/planes").mean()}};
-  for (const Json* result : all) {
-    const Json parts = result->value("parts_median_ms", Json::object());
-    for (const auto& part : parts.items()) {
-      row["parts_median_ms"][part.key()] = sumOf(all, "/parts_median_ms/" + part.key()).mean();
-    }
+  // A method names the same parts on every scene.
+  const Json parts = all.front()->value("parts_median_ms", Json::object());
+  for (const auto& part : parts.items()) {
+    row["parts_median_ms"][part.key()] = sumOf(all, "/parts_median_ms/" + part.key()).mean();
   }
   row["mean_iou"] = sumOf(scored, "/mean_iou").mean();
   row["weighted_iou"] = sumOf(scored, "/weighted_iou").mean();
@@ -146,8 +145,7 @@ void addMeans(Json& report) {
   std::vector<std::string> methods;  // in run order
   std::set<std::string> sensors;
   for (Json& scene : report["scenes"]) {
-    const double floodplane_ms =
-        scene["methods"].contains("floodplane") ? scene["methods"]["floodplane"]["median_ms"].get<double>() : kNaN;
+    const double floodplane_ms = scene["methods"].value(Json::json_pointer("/floodplane/median_ms"), kNaN);
     for (auto& [method, result] : scene["methods"].items()) {
       result["ratio_to_floodplane"] =
           number(floodplane_ms > 0.0 ? result["median_ms"].get<double>() / floodplane_ms : kNaN);
@@ -158,8 +156,7 @@ void addMeans(Json& report) {
   const auto means = [&](const std::string& sensor) {
     Json rows = Json::object();
     for (const std::string& method : methods) {
-      Json row = meanRow(report["scenes"], method, sensor);
-      if (!row.is_null()) rows[method] = std::move(row);
+      if (Json row = meanRow(report["scenes"], method, sensor); !row.is_null()) rows[method] = std::move(row);
     }
     return rows;
   };

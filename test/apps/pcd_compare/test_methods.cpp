@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "baselines.h"
 #include "eval/segmentation_metrics.h"
 #include "input_cloud.h"
 #include "method.h"
