@@ -83,14 +83,10 @@ floodplane::io::RgbImage titledImages(const std::vector<std::pair<std::string, f
 // wall would get a different colour in every panel. Instead each predicted segment takes
 // the label of the ground-truth plane it overlaps most (over valid pixels), and segments on
 // no plane keep their own label, shifted past any plausible ground-truth label so that they
-// do not borrow a plane's colour. Label 0 stays 0. Without ground truth (empty vector) the
-// labels are returned as they are.
+// do not borrow a plane's colour. Label 0 stays 0.
 std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::uint32_t>& predicted,
                                                        const std::vector<std::uint32_t>& ground_truth,
                                                        const std::vector<std::uint8_t>& valid) {
-  if (ground_truth.empty()) {
-    return predicted;
-  }
   // overlap[p][g] = pixels of segment p on plane g.
   std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> overlap;
   for (std::size_t i = 0; i < predicted.size(); ++i) {
@@ -98,17 +94,14 @@ std::vector<std::uint32_t> coloursMatchedToGroundTruth(const std::vector<std::ui
       ++overlap[predicted[i]][ground_truth[i]];
     }
   }
-  std::map<std::uint32_t, std::uint32_t> colour_of;
+  std::map<std::uint32_t, std::uint32_t> colour_of = {{0, 0}};
   for (const auto& [segment, planes] : overlap) {
     const auto best = std::max_element(planes.begin(), planes.end(),
                                        [](const auto& a, const auto& b) { return a.second < b.second; });
     colour_of[segment] = best->first;
   }
-  std::vector<std::uint32_t> colours(predicted.size(), 0);
+  std::vector<std::uint32_t> colours(predicted.size());
   for (std::size_t i = 0; i < predicted.size(); ++i) {
-    if (predicted[i] == 0) {
-      continue;
-    }
     const auto found = colour_of.find(predicted[i]);
     colours[i] = found != colour_of.end() ? found->second : predicted[i] + kUnmatchedLabelOffset;
   }
@@ -137,15 +130,16 @@ floodplane::io::RgbImage comparisonImage(const InputCloud& input, const std::vec
                         floodplane::view::renderImage(scene, floodplane::view::CameraView::oblique,
                                                       static_cast<int>(cloud.width), static_cast<int>(cloud.height)));
   };
-  const std::vector<std::uint32_t> ground_truth = input.ground_truth.value_or(std::vector<std::uint32_t>());
   if (input.ground_truth) {
     // Pixels without a point show as "no plane", as they do in the predictions.
-    std::vector<std::uint32_t> shown = ground_truth;
+    std::vector<std::uint32_t> shown = *input.ground_truth;
     for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = input.valid[i] != 0 ? shown[i] : 0;
     add("ground truth", shown, shown);
   }
-  for (const auto& [title, labels] : panels)
-    add(title, coloursMatchedToGroundTruth(labels, ground_truth, input.valid), labels);
+  for (const auto& [title, labels] : panels) {
+    add(title, input.ground_truth ? coloursMatchedToGroundTruth(labels, *input.ground_truth, input.valid) : labels,
+        labels);
+  }
   return titledImages(images);
 }
 

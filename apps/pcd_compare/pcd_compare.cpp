@@ -252,10 +252,8 @@ void compareAll(const Options& options, Methods& methods, Json& report, MissingT
       if (!options.sensor.empty()) input.sensor = options.sensor;
       // Scenes are named by their file name; two files of one name from different
       // directories would share a row label and an image file.
-      if (!names.insert(input.name).second) {
-        input.name = fs::path(file.path).parent_path().filename().string() + "/" + input.name;
-        std::replace(input.name.begin(), input.name.end(), '/', '_');
-      }
+      if (!names.insert(input.name).second)
+        input.name = fs::path(file.path).parent_path().filename().string() + "_" + input.name;
       report["scenes"].push_back(compareScene(options, methods, input, missing));
     } catch (const std::exception& error) {
       std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
@@ -319,12 +317,10 @@ int main(int argc, char** argv) {
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
   if (options.resolutions) options.methods.insert(options.methods.end(), kResolutions.begin(), kResolutions.end());
   options.methods = firstOfEach(options.methods);
-  if (!options.png3d_dir.empty()) {
-    // Before any work: the comparison can take minutes, and every image would fail alike.
-    if (const std::optional<std::string> reason = floodplane::view::renderingUnavailableReason()) {
-      std::cerr << "pcd_compare: error: --png3d cannot draw in 3-D: " << *reason << "\n";
-      return 1;
-    }
+  // Before any work: the comparison can take minutes, and every image would fail alike.
+  if (const auto reason = options.png3d_dir.empty() ? std::nullopt : floodplane::view::renderingUnavailableReason()) {
+    std::cerr << "pcd_compare: error: --png3d cannot draw in 3-D: " << *reason << "\n";
+    return 1;
   }
   Json report = {{"configuration", configuration(options)}, {"scenes", Json::array()}, {"failed", Json::array()}};
   Methods methods;

@@ -147,8 +147,7 @@ void addMeans(Json& report) {
   for (Json& scene : report["scenes"]) {
     const double floodplane_ms = scene["methods"].value(Json::json_pointer("/floodplane/median_ms"), kNaN);
     for (auto& [method, result] : scene["methods"].items()) {
-      result["ratio_to_floodplane"] =
-          number(floodplane_ms > 0.0 ? result["median_ms"].get<double>() / floodplane_ms : kNaN);
+      result["ratio_to_floodplane"] = number(result["median_ms"].get<double>() / floodplane_ms);
       if (std::find(methods.begin(), methods.end(), method) == methods.end()) methods.push_back(method);
     }
     if (scene.contains("sensor")) sensors.insert(scene["sensor"].get<std::string>());
