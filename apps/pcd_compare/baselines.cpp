@@ -3,7 +3,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -57,14 +56,12 @@ const Baseline& baselineNamed(const std::string& baseline) {
 // finite positive number, the one count (min_inliers) also whole.
 ParameterValues complete(const std::string& baseline, const ParameterValues& values) {
   const auto& defaults = baselineNamed(baseline).defaults;
-  for (const auto& entry : values) {
-    if (std::none_of(defaults.begin(), defaults.end(), [&entry](const auto& d) { return d.first == entry.first; })) {
-      throw std::invalid_argument(baseline + " has no parameter '" + entry.first + "'");
-    }
+  ParameterValues all(defaults.begin(), defaults.end());
+  for (const auto& [name, value] : values) {
+    if (all.count(name) == 0) throw std::invalid_argument(baseline + " has no parameter '" + name + "'");
+    all[name] = value;
   }
-  ParameterValues all = values;
-  for (const auto& [name, default_value] : defaults) {
-    const double value = all.emplace(name, default_value).first->second;
+  for (const auto& [name, value] : all) {
     if (!std::isfinite(value) || value <= 0.0) {
       throw std::invalid_argument(name + " must be a positive number, got " + std::to_string(value));
     }
@@ -76,8 +73,6 @@ ParameterValues complete(const std::string& baseline, const ParameterValues& val
 }
 
 }  // namespace
-
-bool isTunable(const std::string& baseline) { return kBaselines.count(baseline) > 0; }
 
 std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,
                                      const std::string& name) {

@@ -26,13 +26,11 @@ class FloodplaneMethod : public Method {
     segmentation_.segmentAndRefine(regions_, coefficients_, inliers_, labels_, label_indices_, boundaries_);
     MethodRun result;
     result.total_ms = millisecondsSince(start);
-    result.labels.resize(cloud->size(), 0);
     // The label cloud is documented to number plane k as label k, 0 for no plane.
     if (labels_ && labels_->size() == cloud->size()) {
-      for (std::size_t i = 0; i < labels_->size(); ++i) {
-        result.labels[i] = (*labels_)[i].label;
-      }
+      for (const pcl::Label& label : *labels_) result.labels.push_back(label.label);
     }
+    result.labels.resize(cloud->size(), 0);  // no label cloud (bad data): no plane
     return result;
   }
 

@@ -92,8 +92,6 @@ std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1);
 /// Per baseline, then per sensor model, the tuned values.
 using TunedValues = std::map<std::string, std::map<std::string, ParameterValues>>;
 
-/// True for "omps", "ransac" and "open3d_ransac".
-bool isTunable(const std::string& baseline);
 /// The tunable `baseline` at `values` (missing names take their defaults), named `name`.
 /// Throws std::invalid_argument for an unknown parameter or a value out of range.
 std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,

@@ -349,9 +349,8 @@ int main(int argc, char** argv) {
   }
   const std::size_t failed = report["failed"].size();
   if (failed > 0) {
-    std::cerr << "pcd_compare: " << failed << " of " << failed + report["scenes"].size() << " files failed:";
-    for (const auto& file : report["failed"]) std::cerr << " " << file.get<std::string>();
-    std::cerr << "\n";
+    std::cerr << "pcd_compare: " << failed << " of " << failed + report["scenes"].size()
+              << " files failed: " << joined(report["failed"].get<std::vector<std::string>>(), " ") << "\n";
   }
   return failed == 0 && written ? 0 : 1;
 }
