@@ -1,5 +1,4 @@
-// The tunable baselines of method.h: one table of their parameters and defaults, and the file of
-// tuned values.
+// The tunable baselines of method.h: one table of their parameters, and the tuned values' file.
 
 #include <nlohmann/json.hpp>
 
@@ -46,17 +45,12 @@ const std::map<std::string, Baseline> kBaselines = {
     {"ransac", {kSequentialRansac, makeRansacMethod}},
     {"open3d_ransac", {kSequentialRansac, makeOpen3dRansacMethod}}};
 
-const Baseline& baselineNamed(const std::string& baseline) {
-  const auto found = kBaselines.find(baseline);
-  if (found == kBaselines.end()) throw std::invalid_argument("'" + baseline + "' is not a tunable baseline");
-  return found->second;
-}
-
-// `values` completed with the defaults and checked: unknown names rejected, every value a
-// finite positive number, the one count (min_inliers) also whole.
+// `values` completed with the defaults and checked: unknown baselines and names rejected, every
+// value a finite positive number, the one count (min_inliers) also whole.
 ParameterValues complete(const std::string& baseline, const ParameterValues& values) {
-  const auto& defaults = baselineNamed(baseline).defaults;
-  ParameterValues all(defaults.begin(), defaults.end());
+  const auto known = kBaselines.find(baseline);
+  if (known == kBaselines.end()) throw std::invalid_argument("'" + baseline + "' is not a tunable baseline");
+  ParameterValues all(known->second.defaults.begin(), known->second.defaults.end());
   for (const auto& [name, value] : values) {
     if (all.count(name) == 0) throw std::invalid_argument(baseline + " has no parameter '" + name + "'");
     all[name] = value;
@@ -76,13 +70,14 @@ ParameterValues complete(const std::string& baseline, const ParameterValues& val
 
 std::unique_ptr<Method> makeBaseline(const std::string& baseline, const ParameterValues& values,
                                      const std::string& name) {
-  return baselineNamed(baseline).make(complete(baseline, values), name);
+  const ParameterValues all = complete(baseline, values);
+  return kBaselines.at(baseline).make(all, name);
 }
 
 std::string describeValues(const std::string& baseline, const ParameterValues& values) {
   const ParameterValues all = complete(baseline, values);
   std::ostringstream text;
-  for (const auto& entry : baselineNamed(baseline).defaults) {
+  for (const auto& entry : kBaselines.at(baseline).defaults) {
     text << (text.tellp() > 0 ? ", " : "") << entry.first << "=" << all.at(entry.first);
   }
   return text.str();

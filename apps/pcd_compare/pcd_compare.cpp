@@ -2,7 +2,7 @@
 // on organized PCD files and reports their runtime and, where a file carries ground-truth
 // labels, their accuracy (the project's metrics.md, floodplane_eval). This file is the driver:
 // options, the timing protocol, the loop over files. The methods are in *_method.cpp, the
-// report in report.cpp, the pictures in comparison_image*.cpp; the baselines' tuning and the
+// report in report.cpp, the pictures in comparison_image.cpp; the baselines' tuning and the
 // tables beyond the means are bench/tune_baselines.py and bench/compare_tables.py.
 
 #include <CLI/CLI.hpp>
