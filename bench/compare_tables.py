@@ -29,7 +29,7 @@ import tempfile
 NAN = float("nan")
 TABLES = ["configuration", "means", "iou", "files", "subsampling", "phases"]
 HOOVER = ["correct", "over", "under", "missed", "noise"]
-# floodplane's phases in call order (phaseMembers() of apps/pcd_compare/report.cpp).
+# floodplane's phases in call order, as reports written before 2026-12-03 (pcd_compare --phases) hold them.
 PHASES = ["preparation", "seed_selection", "flood_fill", "relabelling", "merging", "region_output",
           "pcl_conversion"]
 SUBSAMPLED = re.compile(r"floodplane/([1-9][0-9]*)")
