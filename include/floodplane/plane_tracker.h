@@ -1,0 +1,142 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "floodplane/segmenter.h"
+
+namespace floodplane {
+
+/// One surface followed over frames. Its parameters are in the camera frame of the last frame
+/// given to PlaneTracker::update: as measured when the surface is in that frame, and, when it
+/// is not, as last measured, moved by the camera motions given since (or left as they were when
+/// no motion was given).
+struct PlaneTrack {
+  std::uint32_t id = 0;            ///< 1, 2, ... in order of appearance; never reused before reset()
+  std::size_t first_frame = 0;     ///< index of the frame it was first seen in (0 = the first update)
+  std::size_t last_frame = 0;      ///< index of the frame it was last seen in
+  std::size_t frames_seen = 0;     ///< frames it was seen in (not necessarily consecutive)
+  int plane = -1;                  ///< its index in the last frame's planes; -1 when not seen in it
+  std::uint32_t inlier_count = 0;  ///< pixels when last seen
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();           ///< n of n . P + d = 0, unit
+  double offset = 0.0;                                         ///< d [m]
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();          ///< of its inliers when last seen [m]
+  Eigen::Vector3d smoothed_normal = Eigen::Vector3d::UnitZ();  ///< exponentially smoothed n, unit
+  double smoothed_offset = 0.0;                                ///< exponentially smoothed d [m]
+};
+
+/// Gives the planes of a stream of segmentations ids that persist over frames (PCL-free).
+///
+/// Feed it each frame's Segmentation in order, with the camera's motion since the previous
+/// frame when it is known. Each plane of the frame is matched one-to-one to a track, by three
+/// cues:
+///  - the angle between the normals and the difference of the offsets (plane distances),
+///    which must both be within Options' limits (a gate, not a preference);
+///  - the pixel overlap of the plane with the track's pixels in the previous frame, as
+///    intersection over union of the two label images, counted in one pass over them.
+/// A pair's score is its overlap (0 when the track was not in the previous frame, or when the
+/// overlap is not used, below) plus its parameter similarity
+///   1 - (angle / max_normal_angle + |offset difference| / max_offset_difference) / 2,
+/// both in [0, 1]; the pairs are taken greedily by falling score. Overlap weighs as much as the
+/// whole parameter range because without a motion the camera's own movement shifts every
+/// plane's offset (by up to the distance moved), and two parallel planes a few centimetres
+/// apart then swap their offsets, not their pixels. Greedy rather than an optimal assignment:
+/// after the gate almost every plane has one candidate; where it has more, the pair with the
+/// most evidence is the one to trust, whereas maximising the sum of scores may give it up for
+/// two doubtful pairs; and it is deterministic (ties go to the older track, then the larger
+/// plane) and costs O(n^2 log n) for n planes.
+///
+/// With a motion, the tracks' parameters are first moved into the current camera frame, so the
+/// gate and the parameter similarity compare like with like however far the camera moved. The
+/// previous label image cannot be moved without depths and the camera's intrinsics, so it is
+/// compared as it is when the motion is small (rotation at most overlap_max_rotation and
+/// translation at most overlap_max_translation) and not at all when it is larger, or when the
+/// image size changed: the match then rests on the parameters alone.
+///
+/// Planes that match no track start new tracks. A track not matched stays (lost) for up to
+/// max_lost_frames frames and can be matched again, by its parameters only, in any of them: a
+/// surface that leaves the view and returns within that many frames gets its id back. Since
+/// a track is matched by its plane's parameters, a surface coplanar with a lost one (within the
+/// gate) may take its id; two planes of one frame never share one.
+///
+/// Cost per frame: a copy of the label image and one pass over it and the previous one
+/// (counting runs of equal label pairs, not pixels one by one), plus O(tracks x planes).
+/// Not thread-safe; one tracker per stream.
+class PlaneTracker {
+ public:
+  struct Options {
+    /// Largest angle between a track's normal and a plane's normal for them to match [rad].
+    /// Covers the fit's noise and, without motions, the camera's turn between two frames.
+    double max_normal_angle = 0.15;
+    /// Largest difference between a track's offset and a plane's offset for them to match
+    /// [m]. Covers the fit's noise and, without motions, the camera's movement between two
+    /// frames (walking speed at 30 Hz is 5 cm).
+    double max_offset_difference = 0.08;
+    /// How many consecutive frames a track may go unseen and still be matched again (K).
+    int max_lost_frames = 30;
+    /// Weight of the newest measurement in the smoothed parameters, in (0, 1]; 1 is no
+    /// smoothing. The smoothed normal is renormalised after each step.
+    double smoothing = 0.3;
+    /// Largest rotation [rad] and translation [m] of a given motion for which the previous
+    /// label image is still compared with the current one pixel by pixel.
+    double overlap_max_rotation = 0.05;
+    double overlap_max_translation = 0.1;
+  };
+
+  PlaneTracker();
+  explicit PlaneTracker(const Options& options);
+
+  /// Validates and sets the options; throws std::invalid_argument naming the option. Takes
+  /// effect from the next update; the tracks are kept.
+  void setOptions(const Options& options);
+  const Options& options() const { return options_; }
+
+  /// Takes the next frame. Returns the track id of each of its planes (planes[k] has ids[k];
+  /// ids are >= 1), valid until the next call. Throws std::invalid_argument when the labels do
+  /// not fill width x height or name a plane the segmentation does not have.
+  const std::vector<std::uint32_t>& update(const Segmentation& segmentation);
+  /// The same, with the camera's motion since the previous frame: the pose of the current
+  /// camera in the previous camera's frame (T_previous_current, as odometry gives it), so that
+  /// a point P in the current camera's frame is motion * P in the previous one. Ignored for
+  /// the first frame. Throws std::invalid_argument when the motion is not finite and rigid.
+  const std::vector<std::uint32_t>& update(const Segmentation& segmentation, const Eigen::Isometry3d& motion);
+  /// The same, with the motion as a 4 x 4 homogeneous matrix (last row 0 0 0 1).
+  const std::vector<std::uint32_t>& update(const Segmentation& segmentation, const Eigen::Matrix4d& motion);
+
+  /// Track ids of the last frame's planes, as update returned them.
+  const std::vector<std::uint32_t>& trackIds() const { return plane_track_ids_; }
+  /// Writes the last frame's label image with track ids in place of plane labels (0 stays
+  /// 0). `labels` is that frame's Segmentation::labels; `track_labels` may be the same vector.
+  /// Throws std::invalid_argument on a label above the last frame's plane count.
+  void relabel(const std::vector<std::uint32_t>& labels, std::vector<std::uint32_t>& track_labels) const;
+
+  /// The tracks seen in the last frame and the lost ones still kept, by increasing id.
+  const std::vector<PlaneTrack>& tracks() const { return tracks_; }
+  /// The track with this id, or nullptr when there is none (never was, or dropped). Valid until
+  /// the next update or reset.
+  const PlaneTrack* track(std::uint32_t id) const;
+  /// Frames taken since construction or reset(); the last frame's index is frameCount() - 1.
+  std::size_t frameCount() const { return frame_count_; }
+
+  /// Forgets every track and the previous frame; ids start again at 1. Keeps the options.
+  void reset();
+
+ private:
+  const std::vector<std::uint32_t>& associate(const Segmentation& segmentation, const Eigen::Isometry3d* motion);
+
+  Options options_;
+  std::vector<PlaneTrack> tracks_;
+  std::vector<std::uint32_t> plane_track_ids_;
+  std::size_t frame_count_ = 0;
+  std::uint32_t next_id_ = 1;
+  // The last frame's labels, compared with the next frame's (its track ids: plane_track_ids_).
+  int previous_width_ = 0;
+  int previous_height_ = 0;
+  std::vector<std::uint32_t> previous_labels_;
+};
+
+}  // namespace floodplane

@@ -1,0 +1,271 @@
+#include "floodplane/plane_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace floodplane {
+
+namespace {
+
+std::string problem(const PlaneTracker::Options& options) {
+  const auto number = [](double value) { return std::to_string(value); };
+  if (!(std::isfinite(options.max_normal_angle) && options.max_normal_angle > 0.0 && options.max_normal_angle <= M_PI))
+    return "max_normal_angle must be in (0, pi] radians, got " + number(options.max_normal_angle);
+  if (!(std::isfinite(options.max_offset_difference) && options.max_offset_difference > 0.0))
+    return "max_offset_difference must be a finite number of metres > 0, got " + number(options.max_offset_difference);
+  if (options.max_lost_frames < 0)
+    return "max_lost_frames must be >= 0, got " + std::to_string(options.max_lost_frames);
+  if (!(options.smoothing > 0.0 && options.smoothing <= 1.0))
+    return "smoothing must be in (0, 1], got " + number(options.smoothing);
+  if (!(std::isfinite(options.overlap_max_rotation) && options.overlap_max_rotation >= 0.0))
+    return "overlap_max_rotation must be a finite number of radians >= 0, got " + number(options.overlap_max_rotation);
+  if (!(std::isfinite(options.overlap_max_translation) && options.overlap_max_translation >= 0.0))
+    return "overlap_max_translation must be a finite number of metres >= 0, got " +
+           number(options.overlap_max_translation);
+  return {};
+}
+
+bool isRigid(const Eigen::Matrix4d& motion) {
+  if (!motion.allFinite() || motion.row(3) != Eigen::RowVector4d(0.0, 0.0, 0.0, 1.0)) return false;
+  const Eigen::Matrix3d rotation = motion.topLeftCorner<3, 3>();
+  return (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
+         rotation.determinant() > 0.0;
+}
+
+// A plane n . P + d = 0 in the previous camera's frame, where P_previous = R P_current + t, is
+// n . (R P_current + t) + d = 0, i.e. (R^T n) . P_current + (n . t + d) = 0 in the current one.
+void moveIntoCurrentFrame(PlaneTrack& track, const Eigen::Isometry3d& motion) {
+  const Eigen::Matrix3d rotation = motion.linear();
+  const Eigen::Vector3d translation = motion.translation();
+  track.offset += track.normal.dot(translation);
+  track.normal = rotation.transpose() * track.normal;
+  track.smoothed_offset += track.smoothed_normal.dot(translation);
+  track.smoothed_normal = rotation.transpose() * track.smoothed_normal;
+  track.centroid = motion.inverse() * track.centroid;
+}
+
+// Pixel counts of two label images of one size: per label of each, and per pair of plane
+// labels that share pixels. One pass, by runs of equal pairs: along a row a plane's label
+// rarely changes, so a frame has a few thousand runs for 300 000 pixels.
+struct LabelOverlap {
+  std::vector<std::uint32_t> previous_pixels;  // [previous label]
+  std::vector<std::uint32_t> current_pixels;   // [current label]
+  struct Pair {
+    std::uint64_t labels;  // previous label << 32 | current label
+    std::uint32_t pixels;
+  };
+  std::vector<Pair> pairs;  // by labels, each pair once
+};
+
+// Throws on a current label above current_planes; previous labels were checked a frame ago.
+LabelOverlap countOverlap(const std::vector<std::uint32_t>& previous, std::size_t previous_planes,
+                          const std::vector<std::uint32_t>& current, std::size_t current_planes) {
+  LabelOverlap overlap;
+  overlap.previous_pixels.assign(previous_planes + 1, 0);
+  overlap.current_pixels.assign(current_planes + 1, 0);
+  const std::size_t size = current.size();
+  for (std::size_t start = 0; start < size;) {
+    const std::uint32_t a = previous[start], b = current[start];
+    std::size_t end = start + 1;
+    while (end < size && previous[end] == a && current[end] == b) ++end;
+    if (b > current_planes)
+      throw std::invalid_argument("floodplane::PlaneTracker::update: label " + std::to_string(b) + " but only " +
+                                  std::to_string(current_planes) + " planes");
+    const auto pixels = static_cast<std::uint32_t>(end - start);
+    overlap.previous_pixels[a] += pixels;
+    overlap.current_pixels[b] += pixels;
+    if (a != 0 && b != 0) overlap.pairs.push_back({static_cast<std::uint64_t>(a) << 32 | b, pixels});
+    start = end;
+  }
+  std::sort(overlap.pairs.begin(), overlap.pairs.end(),
+            [](const LabelOverlap::Pair& x, const LabelOverlap::Pair& y) { return x.labels < y.labels; });
+  std::size_t kept = 0;
+  for (const LabelOverlap::Pair& pair : overlap.pairs) {
+    if (kept > 0 && overlap.pairs[kept - 1].labels == pair.labels)
+      overlap.pairs[kept - 1].pixels += pair.pixels;
+    else
+      overlap.pairs[kept++] = pair;
+  }
+  overlap.pairs.resize(kept);
+  return overlap;
+}
+
+void checkLabels(const std::vector<std::uint32_t>& labels, std::size_t planes, const char* method) {
+  const auto highest = std::max_element(labels.begin(), labels.end());
+  if (highest != labels.end() && *highest > planes)
+    throw std::invalid_argument(std::string("floodplane::PlaneTracker::") + method + ": label " +
+                                std::to_string(*highest) + " but only " + std::to_string(planes) + " planes");
+}
+
+struct Candidate {
+  double score;
+  std::size_t track;  // index into the tracks
+  std::size_t plane;  // index into the frame's planes
+};
+
+}  // namespace
+
+PlaneTracker::PlaneTracker() = default;
+
+PlaneTracker::PlaneTracker(const Options& options) { setOptions(options); }
+
+void PlaneTracker::setOptions(const Options& options) {
+  const std::string what = problem(options);
+  if (!what.empty()) throw std::invalid_argument("floodplane::PlaneTracker::Options: " + what);
+  options_ = options;
+}
+
+const std::vector<std::uint32_t>& PlaneTracker::update(const Segmentation& segmentation) {
+  return associate(segmentation, nullptr);
+}
+
+const std::vector<std::uint32_t>& PlaneTracker::update(const Segmentation& segmentation,
+                                                       const Eigen::Isometry3d& motion) {
+  return update(segmentation, motion.matrix());
+}
+
+const std::vector<std::uint32_t>& PlaneTracker::update(const Segmentation& segmentation,
+                                                       const Eigen::Matrix4d& motion) {
+  if (!isRigid(motion))
+    throw std::invalid_argument(
+        "floodplane::PlaneTracker::update: the motion must be a finite rigid transform (orthonormal rotation, last "
+        "row 0 0 0 1)");
+  const Eigen::Isometry3d isometry(motion);
+  return associate(segmentation, &isometry);
+}
+
+const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& segmentation,
+                                                          const Eigen::Isometry3d* motion) {
+  if (segmentation.width < 0 || segmentation.height < 0 ||
+      segmentation.labels.size() !=
+          static_cast<std::size_t>(segmentation.width) * static_cast<std::size_t>(segmentation.height))
+    throw std::invalid_argument("floodplane::PlaneTracker::update: the labels do not fill width x height");
+  const std::size_t frame = frame_count_;
+  const std::vector<SegmentedPlane>& planes = segmentation.planes;
+
+  // 1. Pixel overlap with the previous frame (this also checks the labels, before anything changes).
+  const bool same_grid = frame > 0 && segmentation.width == previous_width_ && segmentation.height == previous_height_;
+  const bool small_motion = !motion || (Eigen::AngleAxisd(motion->linear()).angle() <= options_.overlap_max_rotation &&
+                                        motion->translation().norm() <= options_.overlap_max_translation);
+  const bool use_overlap = same_grid && small_motion;
+  LabelOverlap counts;
+  if (use_overlap)
+    counts = countOverlap(previous_labels_, plane_track_ids_.size(), segmentation.labels, planes.size());
+  else
+    checkLabels(segmentation.labels, planes.size(), "update");
+
+  // 2. The tracks into the current camera frame.
+  if (motion && frame > 0)
+    for (PlaneTrack& track : tracks_) moveIntoCurrentFrame(track, *motion);
+  for (PlaneTrack& track : tracks_) track.plane = -1;
+
+  // 3. The overlap as intersection over union per (track, plane).
+  std::vector<double> overlap(tracks_.size() * planes.size(), 0.0);  // [track * planes + plane]
+  for (const LabelOverlap::Pair& pair : counts.pairs) {
+    const auto previous = static_cast<std::uint32_t>(pair.labels >> 32);
+    const auto current = static_cast<std::uint32_t>(pair.labels & 0xffffffffu);
+    // The previous frame's tracks were all seen in it, so none has been dropped.
+    const std::uint32_t id = plane_track_ids_[previous - 1];
+    const auto track = std::lower_bound(tracks_.begin(), tracks_.end(), id,
+                                        [](const PlaneTrack& t, std::uint32_t i) { return t.id < i; });
+    const double union_pixels =
+        static_cast<double>(counts.previous_pixels[previous]) + counts.current_pixels[current] - pair.pixels;
+    overlap[static_cast<std::size_t>(track - tracks_.begin()) * planes.size() + current - 1] =
+        pair.pixels / union_pixels;
+  }
+
+  // 4. Candidate pairs within the gate, scored by overlap plus parameter similarity.
+  std::vector<Candidate> candidates;
+  for (std::size_t t = 0; t < tracks_.size(); ++t)
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+      const PlaneFit& fit = planes[p].fit;
+      const double angle = std::acos(std::clamp(tracks_[t].normal.dot(fit.normal), -1.0, 1.0));
+      const double offset_difference = std::abs(tracks_[t].offset - fit.offset);
+      if (!(angle <= options_.max_normal_angle && offset_difference <= options_.max_offset_difference)) continue;
+      const double similarity =
+          1.0 - 0.5 * (angle / options_.max_normal_angle + offset_difference / options_.max_offset_difference);
+      candidates.push_back({overlap[t * planes.size() + p] + similarity, t, p});
+    }
+  // Ties go to the older track (tracks_ is by id), then to the larger plane (planes by size).
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.score != b.score) return a.score > b.score;
+    if (a.track != b.track) return a.track < b.track;
+    return a.plane < b.plane;
+  });
+
+  // 5. Greedy one-to-one assignment; the planes left over start new tracks.
+  plane_track_ids_.assign(planes.size(), 0);
+  const double alpha = options_.smoothing;
+  for (const Candidate& candidate : candidates) {
+    PlaneTrack& track = tracks_[candidate.track];
+    if (track.plane >= 0 || plane_track_ids_[candidate.plane] != 0) continue;
+    const SegmentedPlane& plane = planes[candidate.plane];
+    track.plane = static_cast<int>(candidate.plane);
+    track.last_frame = frame;
+    ++track.frames_seen;
+    track.inlier_count = plane.inlier_count;
+    track.normal = plane.fit.normal;
+    track.offset = plane.fit.offset;
+    track.centroid = plane.fit.centroid;
+    track.smoothed_normal = ((1.0 - alpha) * track.smoothed_normal + alpha * plane.fit.normal).normalized();
+    track.smoothed_offset = (1.0 - alpha) * track.smoothed_offset + alpha * plane.fit.offset;
+    plane_track_ids_[candidate.plane] = track.id;
+  }
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (plane_track_ids_[p] != 0) continue;
+    PlaneTrack track;
+    track.id = next_id_++;
+    track.first_frame = track.last_frame = frame;
+    track.frames_seen = 1;
+    track.plane = static_cast<int>(p);
+    track.inlier_count = planes[p].inlier_count;
+    track.normal = track.smoothed_normal = planes[p].fit.normal;
+    track.offset = track.smoothed_offset = planes[p].fit.offset;
+    track.centroid = planes[p].fit.centroid;
+    tracks_.push_back(track);  // ids grow, so tracks_ stays by id
+    plane_track_ids_[p] = track.id;
+  }
+
+  // 6. The tracks that have now been lost for more than max_lost_frames frames go.
+  const auto max_lost = static_cast<std::size_t>(options_.max_lost_frames);
+  tracks_.erase(std::remove_if(tracks_.begin(), tracks_.end(),
+                               [&](const PlaneTrack& track) { return frame - track.last_frame > max_lost; }),
+                tracks_.end());
+
+  previous_width_ = segmentation.width;
+  previous_height_ = segmentation.height;
+  previous_labels_ = segmentation.labels;
+  ++frame_count_;
+  return plane_track_ids_;
+}
+
+void PlaneTracker::relabel(const std::vector<std::uint32_t>& labels, std::vector<std::uint32_t>& track_labels) const {
+  checkLabels(labels, plane_track_ids_.size(), "relabel");
+  std::vector<std::uint32_t> id_of_label(plane_track_ids_.size() + 1, 0);  // [label]; 0 stays 0
+  std::copy(plane_track_ids_.begin(), plane_track_ids_.end(), id_of_label.begin() + 1);
+  track_labels.resize(labels.size());
+  std::transform(labels.begin(), labels.end(), track_labels.begin(),
+                 [&](std::uint32_t label) { return id_of_label[label]; });
+}
+
+const PlaneTrack* PlaneTracker::track(std::uint32_t id) const {
+  const auto found = std::lower_bound(tracks_.begin(), tracks_.end(), id,
+                                      [](const PlaneTrack& t, std::uint32_t i) { return t.id < i; });
+  return found != tracks_.end() && found->id == id ? &*found : nullptr;
+}
+
+void PlaneTracker::reset() {
+  tracks_.clear();
+  plane_track_ids_.clear();
+  frame_count_ = 0;
+  next_id_ = 1;
+  previous_width_ = previous_height_ = 0;
+  previous_labels_.clear();
+}
+
+}  // namespace floodplane
