@@ -6,34 +6,11 @@
 
 namespace floodplane {
 
-std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int width, const PixelBox& box,
-                                                   std::int32_t label, std::int32_t& next_label,
-                                                   std::size_t smallest_piece) {
-  runs_.clear();
-  for (int y = box.y_min; !box.empty() && y <= box.y_max; ++y) {
-    const std::int32_t* row = labels + static_cast<std::size_t>(y) * width;
-    int x = box.x_min;
-    while (true) {
-      x = findInRow(row, x, box.x_max, label, true);
-      if (x > box.x_max) break;
-      const Run run{y, x, findInRow(row, x, box.x_max, label, false) - 1, -1};
-      runs_.push_back(run);
-      x = run.x_end + 1;
-    }
-  }
-  return splitRuns(labels, width, label, next_label, smallest_piece);
-}
-
 std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int width, const Run* runs,
                                                    std::size_t run_count, std::int32_t label, std::int32_t& next_label,
                                                    std::size_t smallest_piece) {
   runs_.assign(runs, runs + run_count);
   for (Run& run : runs_) run.set = -1;
-  return splitRuns(labels, width, label, next_label, smallest_piece);
-}
-
-std::vector<std::int32_t> ComponentSplitter::splitRuns(std::int32_t* labels, int width, std::int32_t label,
-                                                       std::int32_t& next_label, std::size_t smallest_piece) {
   std::vector<std::int32_t> created;
   sets_.reset(0);
   set_size_.clear();

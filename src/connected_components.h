@@ -9,26 +9,8 @@
 
 namespace floodplane {
 
-/// An inclusive pixel rectangle.
-struct PixelBox {
-  int x_min = 0, y_min = 0, x_max = -1, y_max = -1;
-
-  bool empty() const { return x_max < x_min || y_max < y_min; }
-  void include(int x, int y) {
-    if (empty()) {
-      x_min = x_max = x;
-      y_min = y_max = y;
-      return;
-    }
-    if (x < x_min) x_min = x;
-    if (x > x_max) x_max = x;
-    if (y < y_min) y_min = y;
-    if (y > y_max) y_max = y;
-  }
-};
-
 /// The relabelling after Eq. 4 (Sec. III-B): when later floods take pixels from a segment,
-/// what is left of it may fall apart. This splits the pixels labelled `label` inside `box`
+/// what is left of it may fall apart. This splits the pixels labelled `label`, given as their runs,
 /// into 4-connected components with the classic two-pass union-find labelling (as PCL's
 /// OrganizedConnectedComponentSegmentation, [16]), over runs of pixels rather than pixels. The first component in
 /// raster order keeps `label`; every other one gets the next label from `next_label`, which is advanced. Components of
@@ -38,30 +20,23 @@ struct PixelBox {
 /// (empty when the segment is still connected). Scratch memory is reused across calls.
 class ComponentSplitter {
  public:
-  std::vector<std::int32_t> split(std::int32_t* labels, int width, const PixelBox& box, std::int32_t label,
-                                  std::int32_t& next_label, std::size_t smallest_piece = 1);
-  /// Pixels released by the last split.
-  std::size_t releasedPixels() const { return released_; }
-
   /// A maximal horizontal run of the split segment's pixels, x_begin..x_end inclusive.
   struct Run {
     int y, x_begin, x_end;
     std::int32_t set;  ///< after split(): the label the run's pixels carry (0: released)
   };
+
+  /// Splits segment `label`, given as `run_count` runs from `runs`: every maximal run of
+  /// `label` in the image, in raster order, as RunsByLabel finds them.
+  std::vector<std::int32_t> split(std::int32_t* labels, int width, const Run* runs, std::size_t run_count,
+                                  std::int32_t label, std::int32_t& next_label, std::size_t smallest_piece = 1);
+  /// Pixels released by the last split.
+  std::size_t releasedPixels() const { return released_; }
+
   /// The runs of the last split, in raster order.
   const std::vector<Run>& runs() const { return runs_; }
 
-  /// split() for a segment whose runs are known (`run_count` runs from `runs`: every maximal
-  /// run of `label` in the image, in raster order, as RunsByLabel finds them), without
-  /// scanning its box. The same result as split().
-  std::vector<std::int32_t> split(std::int32_t* labels, int width, const Run* runs, std::size_t run_count,
-                                  std::int32_t label, std::int32_t& next_label, std::size_t smallest_piece = 1);
-
  private:
-  // Both splits once runs_ holds the segment's runs in raster order.
-  std::vector<std::int32_t> splitRuns(std::int32_t* labels, int width, std::int32_t label, std::int32_t& next_label,
-                                      std::size_t smallest_piece);
-
   std::vector<Run> runs_;
   std::vector<std::int32_t> final_label_;  // per set root: the label it receives
   std::vector<std::size_t> set_size_;      // pixels per set; per root after pass 1

@@ -41,7 +41,6 @@ class FloodVisitor {
   // Eq. 1 with Eq. 4: `to` joins from its neighbour `from` when its point is a 3-D neighbour
   // of from's, lies within the plane tolerance and fits this plane better than its owner's.
   FLOODPLANE_ALWAYS_INLINE bool join(std::size_t from, std::size_t to) {
-    ++attempts_;
     const std::int32_t owner = buffer_.label(to);
     if (owner == label_) return false;
     const Vec3 p = Vec3::load(grid_.point(from));
@@ -115,13 +114,6 @@ class FloodVisitor {
     prefetchRange(distances_ + first, distances_ + last + 1);
   }
 
-  // Called by the fill for every finished span: the segment's bounding box.
-  void span(int y, int x_begin, int x_end) {
-    PixelBox& box = self_.box;
-    box.include(x_begin, y);
-    box.include(x_end, y);
-  }
-
   // The least-squares plane of the pixels collected so far replaces the current estimate
   // when its normal is more certain. That takes an area: the first spans of a flood are
   // single image rows, whose points lie on a line (or, with depth noise, on the fan of that
@@ -152,7 +144,6 @@ class FloodVisitor {
   bool samePlane(std::int32_t owner) const {
     return std::abs(criterion_.normal.dot(segments_[owner].criterion.normal)) >= same_plane_cosine_;
   }
-  std::size_t attempts() const { return attempts_; }
 
  private:
 #if FLOODPLANE_SIMD
@@ -207,7 +198,6 @@ class FloodVisitor {
         taken_over_ += kBlock;
         self_.sums.merge(block);
       }
-      attempts_ += kBlock;
       return kBlock;
     }
     // The pixels before the first that fails, in the order of the walk, as join() takes them.
@@ -216,7 +206,6 @@ class FloodVisitor {
       const std::size_t lane = step > 0 ? static_cast<std::size_t>(k) : static_cast<std::size_t>(kBlock - 1 - k);
       const std::size_t to = first + lane;
       const Vec3 point = Vec3::load(grid_.point(to));
-      ++attempts_;
       if (owner != 0) {
         Segment& loser = segments_[owner];
         loser.sums.remove(point);
@@ -253,7 +242,6 @@ class FloodVisitor {
   double uncertainty_;  // of the current normal [rad]
   const float same_plane_cosine_;
   std::size_t taken_over_ = 0;
-  std::size_t attempts_ = 0;
 };
 
 }  // namespace
@@ -280,7 +268,6 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
   const int width = grid.width;
   const int seed_x = static_cast<int>(seed.index % static_cast<std::size_t>(width));
   const int seed_y = static_cast<int>(seed.index / static_cast<std::size_t>(width));
-  segment.box.include(seed_x, seed_y);
 
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
@@ -302,7 +289,6 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
     }
     if (!grew) break;
   }
-  join_attempts_ = visitor.attempts();
   return visitor.takenOver();
 }
 

@@ -5,7 +5,6 @@
 #include <utility>
 #include <vector>
 
-#include "connected_components.h"
 #include "distance_buffer.h"
 #include "tolerances.h"
 #include "distance_function.h"
@@ -20,7 +19,6 @@ namespace floodplane {
 /// A segment grown by one flood, as the later stages need it.
 struct Segment {
   PlaneSums sums;            ///< of the pixels it owns now (Eq. 4 takeovers are subtracted)
-  PixelBox box;              ///< of every pixel it ever owned
   FloodCriterion criterion;  ///< its plane and thresholds when its flood ended
   bool lost_pixels = false;  ///< a later flood took pixels from it: it may be split
 };
@@ -54,15 +52,11 @@ class PlaneFlood {
                    const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
                    std::vector<SegmentEdge>& edges);
 
-  /// Pixels examined (join attempts) by the last grow, for tests and statistics.
-  std::size_t joinAttempts() const { return join_attempts_; }
-
  private:
   std::vector<Shadow> shadows_;
   std::vector<std::pair<std::size_t, std::size_t>> frontier_;  // (from, to) rejected by Eq. 2
   std::vector<std::pair<std::size_t, std::size_t>> retest_;
   std::vector<std::int32_t> neighbour_mark_;  // per segment: the last flood that recorded it
-  std::size_t join_attempts_ = 0;
 };
 
 }  // namespace floodplane

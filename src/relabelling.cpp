@@ -41,8 +41,6 @@ void Relabelling::run(const PointGrid& grid, int subsampling, std::vector<std::i
       if (run.set == 0) continue;  // released
       Segment& piece = segments[run.set];
       piece.sums.merge(moved);
-      piece.box.include(run.x_begin, run.y);
-      piece.box.include(run.x_end, run.y);
       addPieceEdges(grid, labels, piece.criterion, run, edges);
     }
   }

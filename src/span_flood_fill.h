@@ -53,8 +53,6 @@ int joinRunPixelByPixel(Visitor& visitor, std::size_t from, int step, int max) {
 /// many joined. A visitor that decides pixel by pixel gets it from joinRunPixelByPixel; one
 /// that can decide several pixels at once (SIMD) does so there.
 ///
-/// `visitor.span(y, x_begin, x_end)` is told of every span once it is complete.
-///
 /// `visitor.prefetch(first, last)` is told of the pixels first..last (a shadow) when they are
 /// queued: a fill moves from row to row, and each new row's pixels are a cache miss that the
 /// visitor can ask the memory for while the fill works on the rows queued after it.
@@ -69,7 +67,6 @@ void spanFloodFill(int width, int height, int seed_x, int seed_y, Visitor& visit
   const auto extendSpan = [&](int x, int y, int& left, int& right) {
     left = x - visitor.joinRun(index(x, y), -1, x);
     right = x + visitor.joinRun(index(x, y), +1, width - 1 - x);
-    visitor.span(y, left, right);
   };
   const auto push = [&](int y, int x_begin, int x_end, int direction) {
     if (y >= 0 && y < height) {

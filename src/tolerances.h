@@ -19,7 +19,6 @@ class Tolerances {
   Tolerances(const Params& params, const DepthNoise& noise, double angular_pitch, std::size_t pixels);
 
   const DepthNoise& noise() const { return noise_; }
-  double angularPitch() const { return angular_pitch_; }
   /// The width of a pixel's footprint at range r [m].
   double footprint(double range) const { return angular_pitch_ * range; }
 

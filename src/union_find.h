@@ -42,8 +42,6 @@ class UnionFind {
     return a;
   }
 
-  std::size_t size() const { return parent_.size(); }
-
  private:
   std::vector<std::int32_t> parent_;
   std::vector<std::int32_t> size_;

@@ -18,7 +18,6 @@ namespace {
 TEST(UnionFind, StartsWithEveryElementItsOwnSet) {
   UnionFind sets;
   sets.reset(5);
-  EXPECT_EQ(sets.size(), 5u);
   for (std::int32_t i = 0; i < 5; ++i) EXPECT_EQ(sets.find(i), i);
 }
 
@@ -93,7 +92,6 @@ TEST(UnionFind, AddAppendsASingleton) {
   sets.reset(0);
   EXPECT_EQ(sets.add(), 0);
   EXPECT_EQ(sets.add(), 1);
-  EXPECT_EQ(sets.size(), 2u);
   EXPECT_EQ(sets.find(1), 1);
   sets.unite(0, 1);
   EXPECT_EQ(sets.find(1), 0);
@@ -121,7 +119,14 @@ struct Labels {
       for (char c : row) data.push_back(c == '.' ? 0 : c <= '9' ? c - '0' : c - 'a' + 10);
   }
   std::int32_t at(int x, int y) const { return data[static_cast<std::size_t>(y) * width + x]; }
-  PixelBox box() const { return {0, 0, width - 1, height - 1}; }
+  // Splits `label` as the relabelling does: from its runs, collected in one pass.
+  std::vector<std::int32_t> split(ComponentSplitter& splitter, std::int32_t label, std::int32_t& next) {
+    std::vector<bool> wanted(static_cast<std::size_t>(label) + 1, false);
+    wanted[static_cast<std::size_t>(label)] = true;
+    RunsByLabel runs;
+    runs.collect(data.data(), width, height, wanted);
+    return splitter.split(data.data(), width, runs.runs(label), runs.count(label), label, next);
+  }
   std::vector<std::string> art() const {
     std::vector<std::string> rows;
     for (int y = 0; y < height; ++y) {
@@ -136,21 +141,6 @@ struct Labels {
   }
 };
 
-TEST(PixelBox, GrowsToIncludeEachPixel) {
-  PixelBox box;
-  EXPECT_TRUE(box.empty());
-  box.include(4, 2);
-  EXPECT_FALSE(box.empty());
-  EXPECT_EQ(box.x_min, 4);
-  EXPECT_EQ(box.x_max, 4);
-  box.include(1, 5);
-  box.include(6, 3);
-  EXPECT_EQ(box.x_min, 1);
-  EXPECT_EQ(box.x_max, 6);
-  EXPECT_EQ(box.y_min, 2);
-  EXPECT_EQ(box.y_max, 5);
-}
-
 TEST(ComponentSplitter, KeepsAUShapeAsOnePiece) {
   // The two arms start as separate provisional sets and meet only in the bottom row.
   Labels labels({
@@ -163,7 +153,7 @@ TEST(ComponentSplitter, KeepsAUShapeAsOnePiece) {
   const Labels before = labels;
   ComponentSplitter splitter;
   std::int32_t next = 5;
-  const std::vector<std::int32_t> created = splitter.split(labels.data.data(), labels.width, labels.box(), 1, next);
+  const std::vector<std::int32_t> created = labels.split(splitter, 1, next);
   EXPECT_TRUE(created.empty());
   EXPECT_EQ(next, 5);
   EXPECT_EQ(labels.art(), before.art());
@@ -180,7 +170,7 @@ TEST(ComponentSplitter, KeepsACombWhoseTeethJoinOnlyInTheLastRowAsOnePiece) {
   const Labels before = labels;
   ComponentSplitter splitter;
   std::int32_t next = 2;
-  EXPECT_TRUE(splitter.split(labels.data.data(), labels.width, labels.box(), 1, next).empty());
+  EXPECT_TRUE(labels.split(splitter, 1, next).empty());
   EXPECT_EQ(next, 2);
   EXPECT_EQ(labels.art(), before.art());
 }
@@ -193,7 +183,7 @@ TEST(ComponentSplitter, SplitsTwoBlobsAndNumbersTheSecondFromNextLabel) {
   });
   ComponentSplitter splitter;
   std::int32_t next = 7;
-  const std::vector<std::int32_t> created = splitter.split(labels.data.data(), labels.width, labels.box(), 1, next);
+  const std::vector<std::int32_t> created = labels.split(splitter, 1, next);
   EXPECT_EQ(created, std::vector<std::int32_t>{7});
   EXPECT_EQ(next, 8);
   EXPECT_EQ(labels.art(), (std::vector<std::string>{
@@ -210,7 +200,7 @@ TEST(ComponentSplitter, TreatsDiagonalContactAsTwoPieces) {
   });
   ComponentSplitter splitter;
   std::int32_t next = 3;
-  const std::vector<std::int32_t> created = splitter.split(labels.data.data(), labels.width, labels.box(), 1, next);
+  const std::vector<std::int32_t> created = labels.split(splitter, 1, next);
   EXPECT_EQ(created, std::vector<std::int32_t>{3});
   EXPECT_EQ(next, 4);
   EXPECT_EQ(labels.art(), (std::vector<std::string>{"1.", ".3"}));
@@ -227,7 +217,7 @@ TEST(ComponentSplitter, NumbersNewPiecesInRasterOrderOfTheirFirstPixel) {
       "2222..2.",
       "2.....2.",
   });
-  const std::vector<std::int32_t> made = splitter.split(three.data.data(), three.width, three.box(), 2, next);
+  const std::vector<std::int32_t> made = three.split(splitter, 2, next);
   EXPECT_EQ(made, (std::vector<std::int32_t>{4, 5}));
   EXPECT_EQ(next, 6);
   EXPECT_EQ(three.art(), (std::vector<std::string>{
@@ -247,7 +237,7 @@ TEST(ComponentSplitter, LeavesPixelsOfOtherLabelsUntouched) {
   });
   ComponentSplitter splitter;
   std::int32_t next = 10;
-  const std::vector<std::int32_t> created = splitter.split(labels.data.data(), labels.width, labels.box(), 3, next);
+  const std::vector<std::int32_t> created = labels.split(splitter, 3, next);
   EXPECT_EQ(created, std::vector<std::int32_t>{10});
   EXPECT_EQ(labels.art(), (std::vector<std::string>{
                               "335aa",
@@ -256,31 +246,7 @@ TEST(ComponentSplitter, LeavesPixelsOfOtherLabelsUntouched) {
                           }));
 }
 
-TEST(ComponentSplitter, WorksOnABoxInsideTheGridAndLeavesTheRestAlone) {
-  // The box covers columns 1..4, rows 1..3 of a larger grid; pixels of label 1 outside it
-  // are not looked at.
-  Labels labels({
-      "1.....1",
-      ".11.1..",
-      ".11.1..",
-      "....1..",
-      "1.....1",
-  });
-  ComponentSplitter splitter;
-  std::int32_t next = 2;
-  const PixelBox box{1, 1, 4, 3};
-  const std::vector<std::int32_t> created = splitter.split(labels.data.data(), labels.width, box, 1, next);
-  EXPECT_EQ(created, std::vector<std::int32_t>{2});
-  EXPECT_EQ(labels.art(), (std::vector<std::string>{
-                              "1.....1",
-                              ".11.2..",
-                              ".11.2..",
-                              "....2..",
-                              "1.....1",
-                          }));
-}
-
-TEST(ComponentSplitter, HandlesABoxThatReachesTheGridBorder) {
+TEST(ComponentSplitter, HandlesPiecesAtTheGridBorder) {
   // Pieces in the grid's corners: first and last row and column.
   Labels labels({
       "1...1",
@@ -289,7 +255,7 @@ TEST(ComponentSplitter, HandlesABoxThatReachesTheGridBorder) {
   });
   ComponentSplitter splitter;
   std::int32_t next = 2;
-  const std::vector<std::int32_t> created = splitter.split(labels.data.data(), labels.width, labels.box(), 1, next);
+  const std::vector<std::int32_t> created = labels.split(splitter, 1, next);
   EXPECT_EQ(created, (std::vector<std::int32_t>{2, 3, 4}));
   EXPECT_EQ(labels.art(), (std::vector<std::string>{
                               "1...2",
@@ -298,7 +264,7 @@ TEST(ComponentSplitter, HandlesABoxThatReachesTheGridBorder) {
                           }));
 }
 
-TEST(ComponentSplitter, CanBeReusedAcrossCallsAndBoxSizes) {
+TEST(ComponentSplitter, CanBeReusedAcrossCallsAndImageSizes) {
   ComponentSplitter splitter;
   Labels big({
       "1.1.1.1",
@@ -306,31 +272,30 @@ TEST(ComponentSplitter, CanBeReusedAcrossCallsAndBoxSizes) {
       "1.1.1.1",
   });
   std::int32_t next = 2;
-  EXPECT_EQ(splitter.split(big.data.data(), big.width, big.box(), 1, next).size(), 7u);
+  EXPECT_EQ(big.split(splitter, 1, next).size(), 7u);
   Labels small({
       "11",
       "11",
   });
   next = 2;
-  EXPECT_TRUE(splitter.split(small.data.data(), small.width, small.box(), 1, next).empty());
+  EXPECT_TRUE(small.split(splitter, 1, next).empty());
   EXPECT_EQ(small.art(), (std::vector<std::string>{"11", "11"}));
 }
 
-TEST(ComponentSplitter, DoesNothingForAnEmptyBoxOrAnAbsentLabel) {
+TEST(ComponentSplitter, DoesNothingForAnAbsentLabel) {
   Labels labels({"1.1"});
   ComponentSplitter splitter;
   std::int32_t next = 2;
-  EXPECT_TRUE(splitter.split(labels.data.data(), labels.width, PixelBox{}, 1, next).empty());
-  EXPECT_TRUE(splitter.split(labels.data.data(), labels.width, labels.box(), 4, next).empty());
+  EXPECT_TRUE(labels.split(splitter, 4, next).empty());
   EXPECT_EQ(next, 2);
   EXPECT_EQ(labels.art(), std::vector<std::string>{"1.1"});
 }
 
 // The relabelling finds the runs of every segment to split in one pass (RunsByLabel) and
-// splits each from its runs; that must give what splitting each segment from its bounding box
-// gives, in the same order, on images where segments interleave, skip rows and meet the
-// borders, also after earlier splits have renumbered pixels.
-TEST(ComponentSplitter, SplittingFromCollectedRunsEqualsSplittingFromTheBox) {
+// splits each from its runs; that must give what collecting each segment's runs afresh just
+// before its split gives, in the same order, on images where segments interleave, skip rows
+// and meet the borders, also after earlier splits have renumbered pixels.
+TEST(ComponentSplitter, SplittingFromRunsCollectedOnceEqualsCollectingThemBeforeEachSplit) {
   std::uint32_t state = 12345;
   const auto random = [&state](std::uint32_t n) {
     state = state * 1664525u + 1013904223u;
@@ -339,45 +304,46 @@ TEST(ComponentSplitter, SplittingFromCollectedRunsEqualsSplittingFromTheBox) {
   for (int image = 0; image < 20; ++image) {
     const int width = 5 + static_cast<int>(random(40)), height = 3 + static_cast<int>(random(30));
     const std::int32_t labels_used = 1 + static_cast<std::int32_t>(random(6));
-    std::vector<std::int32_t> by_box(static_cast<std::size_t>(width) * height);
+    std::vector<std::int32_t> afresh(static_cast<std::size_t>(width) * height);
     // Blobs: each pixel copies its left or upper neighbour most of the time.
     for (int y = 0; y < height; ++y) {
       for (int x = 0; x < width; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * width + x;
         const std::uint32_t r = random(10);
-        by_box[i] = r < 4 && x > 0   ? by_box[i - 1]
-                    : r < 8 && y > 0 ? by_box[i - static_cast<std::size_t>(width)]
+        afresh[i] = r < 4 && x > 0   ? afresh[i - 1]
+                    : r < 8 && y > 0 ? afresh[i - static_cast<std::size_t>(width)]
                                      : static_cast<std::int32_t>(random(static_cast<std::uint32_t>(labels_used) + 1));
       }
     }
-    std::vector<std::int32_t> by_runs = by_box;
+    std::vector<std::int32_t> once = afresh;
     std::vector<bool> wanted(static_cast<std::size_t>(labels_used) + 1, false);
     for (std::int32_t label = 1; label <= labels_used; ++label)
       wanted[static_cast<std::size_t>(label)] = random(4) != 0;
-    RunsByLabel runs;
-    runs.collect(by_runs.data(), width, height, wanted);
-    ComponentSplitter box_splitter, run_splitter;
-    std::int32_t next_by_box = labels_used + 1, next_by_runs = labels_used + 1;
+    RunsByLabel runs_once;
+    runs_once.collect(once.data(), width, height, wanted);
+    ComponentSplitter once_splitter, afresh_splitter;
+    std::int32_t next_once = labels_used + 1, next_afresh = labels_used + 1;
     for (std::int32_t label = 1; label <= labels_used; ++label) {
       if (!wanted[static_cast<std::size_t>(label)]) continue;
-      PixelBox box;
-      for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-          if (by_box[static_cast<std::size_t>(y) * width + x] == label) box.include(x, y);
+      std::vector<bool> only(static_cast<std::size_t>(label) + 1, false);
+      only[static_cast<std::size_t>(label)] = true;
+      RunsByLabel runs_now;
+      runs_now.collect(afresh.data(), width, height, only);
       const std::size_t smallest = 1 + random(3);
-      EXPECT_EQ(
-          run_splitter.split(by_runs.data(), width, runs.runs(label), runs.count(label), label, next_by_runs, smallest),
-          box_splitter.split(by_box.data(), width, box, label, next_by_box, smallest))
+      EXPECT_EQ(once_splitter.split(once.data(), width, runs_once.runs(label), runs_once.count(label), label, next_once,
+                                    smallest),
+                afresh_splitter.split(afresh.data(), width, runs_now.runs(label), runs_now.count(label), label,
+                                      next_afresh, smallest))
           << "image " << image << ", label " << label;
-      EXPECT_EQ(run_splitter.releasedPixels(), box_splitter.releasedPixels());
-      ASSERT_EQ(run_splitter.runs().size(), box_splitter.runs().size());
-      for (std::size_t r = 0; r < box_splitter.runs().size(); ++r) {
-        const ComponentSplitter::Run &a = run_splitter.runs()[r], &b = box_splitter.runs()[r];
+      EXPECT_EQ(once_splitter.releasedPixels(), afresh_splitter.releasedPixels());
+      ASSERT_EQ(once_splitter.runs().size(), afresh_splitter.runs().size());
+      for (std::size_t r = 0; r < afresh_splitter.runs().size(); ++r) {
+        const ComponentSplitter::Run &a = once_splitter.runs()[r], &b = afresh_splitter.runs()[r];
         EXPECT_EQ(std::tie(a.y, a.x_begin, a.x_end, a.set), std::tie(b.y, b.x_begin, b.x_end, b.set));
       }
     }
-    EXPECT_EQ(next_by_runs, next_by_box);
-    EXPECT_EQ(by_runs, by_box) << "image " << image;
+    EXPECT_EQ(next_once, next_afresh);
+    EXPECT_EQ(once, afresh) << "image " << image;
   }
 }
 

@@ -106,9 +106,6 @@ TEST(PlaneFlood, ClaimsEveryPixelOfAPlaneAndSumsThem) {
   EXPECT_EQ(f.count(1), 40u * 30u);
   EXPECT_DOUBLE_EQ(f.segments[1].sums.count, 1200.0);
   EXPECT_NEAR(f.segments[1].sums.centroid().z(), 2.0, 1e-6);
-  EXPECT_EQ(f.segments[1].box.x_min, 0);
-  EXPECT_EQ(f.segments[1].box.x_max, 39);
-  EXPECT_EQ(f.segments[1].box.y_max, 29);
   EXPECT_TRUE(f.edges.empty());
 }
 
@@ -162,7 +159,6 @@ void claimRightHalf(Flood& f, const Grid& g, float owned_distance, Vec3 owner_no
     for (int u = g.width / 2; u < g.width; ++u) {
       f.buffer.claim(g.index(u, v), 1, owned_distance);
       owner.sums.add(g.point(u, v));
-      owner.box.include(u, v);
     }
   }
 }

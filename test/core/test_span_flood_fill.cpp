@@ -31,7 +31,6 @@ struct CountingVisitor {
   const Mask& mask;
   std::vector<bool> in_region;
   std::size_t attempts = 0;
-  std::size_t spans = 0;
 
   explicit CountingVisitor(const Mask& m) : mask(m), in_region(m.inside.size(), false) {}
   bool join(std::size_t from, std::size_t to) {
@@ -42,7 +41,6 @@ struct CountingVisitor {
     return true;
   }
   int joinRun(std::size_t from, int step, int max) { return joinRunPixelByPixel(*this, from, step, max); }
-  void span(int, int, int) { ++spans; }
   void prefetch(std::size_t first, std::size_t last) const {
     // A shadow: pixels of one row of the grid.
     EXPECT_LE(first, last);
@@ -153,15 +151,14 @@ TEST(SpanFloodFill, ExaminesPixelsAboutOnceOnIrregularShapes) {
   EXPECT_GT(static_cast<double>(naive_attempts) / static_cast<double>(countTrue(expected)), 3.5);
 }
 
-TEST(SpanFloodFill, ReportsEverySpanOfTheRegion) {
+TEST(SpanFloodFill, FillsARingAroundAHole) {
   const Mask mask({
       "###",
       "#.#",
       "###",
   });
   const CountingVisitor visitor = fill(mask, 0, 0);
-  EXPECT_EQ(countTrue(visitor.in_region), 8u);
-  EXPECT_GE(visitor.spans, 4u);  // the middle row has two spans
+  EXPECT_EQ(countTrue(visitor.in_region), 8u);  // the middle row has two spans
 }
 
 TEST(SpanFloodFill, WorksOnSinglePixelsRowsAndColumns) {
