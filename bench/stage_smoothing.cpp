@@ -16,7 +16,7 @@ namespace {
 void runSmoothing(benchmark::State& state, const Frame& frame, DepthSmoothing::VectorWidth width) {
   const PointGrid grid = gridOf(frame);
   NoiseEstimator estimator;
-  const DepthNoise noise = DepthNoise::of(estimator.estimate(grid));
+  const NoiseModel noise = estimator.estimate(grid);
   DepthSmoothing smoothing(width);
   for (auto _ : state) benchmark::DoNotOptimize(smoothing.smooth(grid, noise).data);
 }

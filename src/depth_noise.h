@@ -1,55 +1,55 @@
 #pragma once
 
-#include <algorithm>
-
 #include "floodplane/segmenter.h"
 
 namespace floodplane {
 
-/// The sensor's depth noise, the one model every stage takes its tolerances from:
-///   sigma(r) = sigma_0 + c r^2,
-/// the shape of a triangulating sensor's error (structured light, stereo: Nguyen et al. 2012
-/// for the Kinect, whose axial noise and disparity quantisation both grow with the square of
-/// the depth). A tolerance is the larger of a fixed threshold and three standard deviations.
-/// All functions take r^2, so that the per-pixel hot path needs no square root; they are
-/// templates so that float hot paths stay in float.
-struct DepthNoise {
-  double constant = 0.0;   ///< sigma_0 [m]
-  double quadratic = 0.0;  ///< c [1/m]; 0 with sigma_0 = 0: the paper's fixed thresholds
+// The sensor's depth noise, the one model every stage takes its tolerances from: NoiseModel's
+//   sigma(r) = sigma_0 + c r^2,
+// the shape of a triangulating sensor's error (structured light, stereo: Nguyen et al. 2012
+// for the Kinect, whose axial noise and disparity quantisation both grow with the square of
+// the depth). These helpers take r^2, so that the per-pixel hot paths need no square root;
+// they are templates so that float hot paths stay in float.
 
-  static DepthNoise of(const NoiseModel& model) {
-    DepthNoise noise;
-    noise.constant = model.sigma_constant;
-    noise.quadratic = model.sigma_quadratic;
-    return noise;
-  }
+/// How many noise deviations a tolerance allows, named once for every stage:
+/// - one point's depth: 3 sigma(r) holds 99.7 % of Gaussian noise. The point band of Eq. 2 along
+///   the ray, the angle it subtends in the seed test (Eqs. 6-7), and every length that must
+///   clear one point's noise (half the seed cube, Sec. III-C; sigma_plane-merge, Eq. 9).
+constexpr double kPointDeviations = 3.0;
+/// - the difference of two noisy depths, whose deviation is sqrt(2) sigma(r): 3 sqrt(2) sigma(r).
+///   Eq. 3 between two neighbours, the depth smoothing's gate, the hole filling's bridge.
+constexpr double kDifferenceDeviations = 3.0 * 1.4142135623730951;  // 3 sqrt(2)
 
-  /// Whether the model describes exact data (float round-off at most).
-  bool negligible() const { return constant < 1e-7 && quadratic < 1e-7; }
+/// sigma(r), for r^2 = range_sq.
+template <class Real>
+Real depthSigma(const NoiseModel& noise, Real range_sq) {
+  return static_cast<Real>(noise.sigma_constant) + static_cast<Real>(noise.sigma_quadratic) * range_sq;
+}
 
-  /// Whether the noise is below a tenth of the pixel footprint (range x `angular_pitch`) over
-  /// the ranges of rooms, 0.5-8 m: exact geometry for every purpose of the grid, although not
-  /// exact. A depth image stored in 0.2 mm units (TUM's 16-bit PNGs) is exact data rounded to
-  /// a 0.2 mm lattice, a noise of 0.06 mm, a twentieth of a Kinect pixel's footprint at 1 m; a
-  /// depth camera's own noise is several footprints.
-  bool negligibleAgainstPixels(double angular_pitch) const {
-    constexpr double kShare = 0.1;
-    constexpr double kNear = 0.5;
-    constexpr double kFar = 8.0;
-    return negligible() || (sigma(kNear * kNear) <= kShare * kNear * angular_pitch &&
-                            sigma(kFar * kFar) <= kShare * kFar * angular_pitch);
-  }
+/// k noise deviations at range r: k sigma(r), for r^2 = range_sq (k: kPointDeviations,
+/// kDifferenceDeviations).
+template <class Real>
+Real noiseDeviations(const NoiseModel& noise, double k, Real range_sq) {
+  return static_cast<Real>(k) * depthSigma(noise, range_sq);
+}
 
-  template <class Real>
-  Real sigma(Real range_sq) const {
-    return static_cast<Real>(constant) + static_cast<Real>(quadratic) * range_sq;
-  }
-  /// max(fixed, 3 sigma(r)).
-  template <class Real>
-  Real tolerance(Real fixed, Real range_sq) const {
-    return std::max(fixed, static_cast<Real>(3) * sigma(range_sq));
-  }
-};
+/// Whether the model describes exact data (float round-off at most).
+inline bool negligibleNoise(const NoiseModel& noise) {
+  return noise.sigma_constant < 1e-7 && noise.sigma_quadratic < 1e-7;
+}
+
+/// Whether the noise is below a tenth of the pixel footprint (range x `angular_pitch`) over
+/// the ranges of rooms, 0.5-8 m: exact geometry for every purpose of the grid, although not
+/// exact. A depth image stored in 0.2 mm units (TUM's 16-bit PNGs) is exact data rounded to
+/// a 0.2 mm lattice, a noise of 0.06 mm, a twentieth of a Kinect pixel's footprint at 1 m; a
+/// depth camera's own noise is several footprints.
+inline bool negligibleAgainstPixels(const NoiseModel& noise, double angular_pitch) {
+  constexpr double kShare = 0.1;
+  constexpr double kNear = 0.5;
+  constexpr double kFar = 8.0;
+  return negligibleNoise(noise) || (depthSigma(noise, kNear * kNear) <= kShare * kNear * angular_pitch &&
+                                    depthSigma(noise, kFar * kFar) <= kShare * kFar * angular_pitch);
+}
 
 /// The squared range at which to take the depth noise when pixel q is tested from its
 /// neighbour p: the nearer of the two. On one surface the two ranges are nearly equal, so

@@ -9,22 +9,19 @@ namespace floodplane {
 
 namespace {
 
-// Neighbours within this many noise deviations in depth of a point take part in its mean (the
-// difference of two noisy depths has sqrt(2) sigma).
-const double kGateDeviations = 3.0 * std::sqrt(2.0);
-
 // The mean of a point and those of its two neighbours along a line (`before`, `after`: null
 // beyond the grid's edge) within the depth gate, into `out`. Sums in the order before,
 // centre, after.
 inline void smoothPoint(const float* before, const float* centre, const float* after, float* out,
-                        const DepthNoise& noise) {
+                        const NoiseModel& noise) {
   out[3] = 0.f;
   if (!std::isfinite(centre[2])) {
     out[0] = out[1] = out[2] = std::numeric_limits<float>::quiet_NaN();
     return;
   }
   const double range_sq = centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2];
-  const float gate = static_cast<float>(kGateDeviations * noise.sigma(range_sq));
+  // Neighbours within the noise of a depth difference take part in the mean.
+  const float gate = static_cast<float>(noiseDeviations(noise, kDifferenceDeviations, range_sq));
   // The centre is within its own gate; a NaN neighbour or one across a depth step is not.
   const bool use_before = before != nullptr && std::abs(before[2] - centre[2]) <= gate;
   const bool use_after = after != nullptr && std::abs(after[2] - centre[2]) <= gate;
@@ -63,12 +60,12 @@ inline Float4 gatedSum(Mask4 use_before, Mask4 use_after, Float4 before, Float4 
 // a point). Every lane operation is smoothPoint's in its order, so each lane holds
 // smoothPoint's result bit for bit.
 void smoothFour(const float* before_points, const float* centre, const float* after_points, std::size_t stride,
-                float* out, const DepthNoise& noise) {
+                float* out, const NoiseModel& noise) {
   const auto points = [stride](const float* first) {
     return PointLanes::transpose(first, first + stride, first + 2 * stride, first + 3 * stride);
   };
   const PointLanes c = points(centre), before = points(before_points), after = points(after_points);
-  const Float4 gate = scaledSigma(noise, kGateDeviations, c.squaredNorm());
+  const Float4 gate = noiseDeviations(noise, kDifferenceDeviations, c.squaredNorm());
   const Mask4 use_before = (before.z - c.z).abs() <= gate;
   const Mask4 use_after = (after.z - c.z).abs() <= gate;
   const Float4 zero = Float4::broadcast(0.f), one = Float4::broadcast(1.f);
@@ -97,10 +94,10 @@ FLOODPLANE_TARGET_AVX inline Float8 gatedSum(Mask8 use_before, Mask8 use_after, 
 // smoothFour for eight points, with the same operations in each lane (AVX; only where
 // cpuHasAvx()).
 FLOODPLANE_TARGET_AVX void smoothEight(const float* before_points, const float* centre, const float* after_points,
-                                       std::size_t stride, float* out, const DepthNoise& noise) {
+                                       std::size_t stride, float* out, const NoiseModel& noise) {
   const PointLanes8 c = PointLanes8::load(centre, stride), before = PointLanes8::load(before_points, stride),
                     after = PointLanes8::load(after_points, stride);
-  const Float8 gate = scaledSigma(noise, kGateDeviations, c.squaredNorm());
+  const Float8 gate = noiseDeviations(noise, kDifferenceDeviations, c.squaredNorm());
   const Mask8 use_before = (before.z - c.z).abs() <= gate;
   const Mask8 use_after = (after.z - c.z).abs() <= gate;
   const Float8 zero = Float8::broadcast(0.f), one = Float8::broadcast(1.f);
@@ -119,7 +116,7 @@ FLOODPLANE_TARGET_AVX void smoothEight(const float* before_points, const float* 
 // The row pass over one row of `width` points (`stride` floats apart), neighbours left and
 // right, into `out` (four floats a point). The points that have both neighbours go up to
 // `lanes` (1, 4 or 8) at a time.
-void smoothAlongRow(const float* row, std::size_t stride, int width, int lanes, float* out, const DepthNoise& noise) {
+void smoothAlongRow(const float* row, std::size_t stride, int width, int lanes, float* out, const NoiseModel& noise) {
   int x = 0;
 #if FLOODPLANE_SIMD
   if (lanes >= 4 && width > 4) {
@@ -150,7 +147,7 @@ void smoothAlongRow(const float* row, std::size_t stride, int width, int lanes, 
 // The column pass over one row of `width` points (four floats each), neighbours from the rows
 // `above` and `below` (null beyond the grid's edge), into `out`.
 void smoothAcrossRows(const float* above, const float* row, const float* below, int width, int lanes, float* out,
-                      const DepthNoise& noise) {
+                      const NoiseModel& noise) {
   int x = 0;
 #if FLOODPLANE_SIMD
   if (lanes >= 4 && above != nullptr && below != nullptr) {
@@ -177,7 +174,7 @@ void smoothAcrossRows(const float* above, const float* row, const float* below, 
 
 }  // namespace
 
-const PointGrid& DepthSmoothing::smooth(const PointGrid& grid, const DepthNoise& noise) {
+const PointGrid& DepthSmoothing::smooth(const PointGrid& grid, const NoiseModel& noise) {
   const std::size_t width = static_cast<std::size_t>(grid.width);
   result_points_.resize(grid.size() * 4);
   // The row pass runs one row ahead of the column pass, into a ring of three rows: the frame

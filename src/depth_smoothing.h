@@ -28,7 +28,7 @@ class DepthSmoothing {
   explicit DepthSmoothing(VectorWidth width = VectorWidth::kWidest) : width_(width) {}
 
   /// The smoothed `grid` (valid until the next call).
-  const PointGrid& smooth(const PointGrid& grid, const DepthNoise& noise);
+  const PointGrid& smooth(const PointGrid& grid, const NoiseModel& noise);
 
  private:
   VectorWidth width_;

@@ -24,7 +24,7 @@ bool finitePoint(const float* p) { return std::isfinite(p[0]) && std::isfinite(p
 bool bridgeable(const Vec3& a, const Vec3& b, int pixels, const Tolerances& tolerances) {
   const double range_sq = std::min(a.squaredNorm(), b.squaredNorm());
   const double reach = pixels * kMaxObliquity * tolerances.footprint(std::sqrt(range_sq)) +
-                       3.0 * std::sqrt(2.0) * tolerances.noise().sigma(range_sq);
+                       noiseDeviations(tolerances.noise(), kDifferenceDeviations, range_sq);
   return static_cast<double>((a - b).squaredNorm()) <= reach * reach;
 }
 

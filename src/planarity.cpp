@@ -84,8 +84,8 @@ bool PlanarityTest::curved(std::uint32_t k, const Tolerances& tolerances) const 
   const PlaneFit& fit = fits_[k - 1];
   const double range = fit.centroid.norm();
   const double incidence = range > 0.0 ? std::abs(fit.normal.dot(fit.centroid)) / range : 1.0;
-  const double across =
-      std::max(tolerances.noise().sigma(range * range) * incidence, kFootprintFloor * tolerances.footprint(range));
+  const double across = std::max(depthSigma(tolerances.noise(), range * range) * incidence,
+                                 kFootprintFloor * tolerances.footprint(range));
   return q.explained > kSignificance * across * across && q.curvature > kSmallestCurvature;
 }
 

@@ -12,9 +12,10 @@ namespace {
 constexpr int kLargestRho = 48;  // bounds the cost of Eq. 7 for points close to the camera
 constexpr float kHalfPi = 1.5707963f;
 
-// The cosine of the test angle widened by what 3 sigma_depth subtends over `lever` metres.
-float widenedCosine(float angle, float noise_sigma, float lever) {
-  const float widened = angle + std::atan2(3.0f * noise_sigma, lever);
+// The cosine of the test angle widened by what the depth noise `noise_band` (3 sigma_depth)
+// subtends over `lever` metres.
+float widenedCosine(float angle, float noise_band, float lever) {
+  const float widened = angle + std::atan2(noise_band, lever);
   return widened >= kHalfPi ? 0.0f : std::cos(widened);
 }
 
@@ -32,7 +33,6 @@ void SeedSelector::configure(const Params& params, const Tolerances& tolerances,
   scale_ = scale;
   angle_ = static_cast<float>(params.angular_threshold);
   cos_angle_ = std::cos(angle_);
-  noise_ = tolerances.noise();
   angular_pitch_ = angular_pitch;
   width_ = width;
   height_ = height;
@@ -84,8 +84,8 @@ SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) 
   const float lever_sq = std::min(std::min(to_right.squaredNorm(), to_left.squaredNorm()),
                                   std::min(to_up.squaredNorm(), to_down.squaredNorm()));
   const float lever = std::sqrt(lever_sq);
-  const float noise_sigma = noise_.sigma(range_sq);
-  const float cos_coarse = widenedCosine(angle_, noise_sigma, lever);
+  const float noise_band = noiseDeviations(tolerances_.noise(), kPointDeviations, range_sq);
+  const float cos_coarse = widenedCosine(angle_, noise_band, lever);
   for (int i = 0; i < 4; ++i) {
     for (int j = i + 1; j < 4; ++j) {
       if (!sameDirection(normals[i], normals[j], cos_coarse)) return SeedVerdict::kCoarseCurvature;
@@ -96,7 +96,7 @@ SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) 
   // endpoint. To keep the lever long against noise, points in the near half of an arm are
   // seen from the endpoint (E - P_i against E - P) and the far half from the centre
   // (P_i - P against E - P); an edge anywhere on the arm bends one of the two.
-  const float cos_fine = widenedCosine(angle_, noise_sigma, 0.5f * lever);
+  const float cos_fine = widenedCosine(angle_, noise_band, 0.5f * lever);
   const std::ptrdiff_t steps[4] = {-static_cast<std::ptrdiff_t>(width_), static_cast<std::ptrdiff_t>(width_), -1, 1};
   const Vec3* endpoints[4] = {&up, &down, &left, &right};
   PlaneSums cross;  // the points of the cross, for n_seed

@@ -78,7 +78,6 @@ class SeedSelector {
   double scale_ = 1.0;
   float cos_angle_ = 1.f;
   float angle_ = 0.1f;
-  DepthNoise noise_;
   float angular_pitch_ = 1.0f / 525.0f;
   int max_rho_ = 0;
   int width_ = 0;

@@ -94,23 +94,22 @@ struct Segmenter::Workspace {
     frame.full_pitch = SeedSelector::estimateAngularPitch(full, pitch_scratch);
     frame.pitch = frame.full_pitch * static_cast<float>(s);
     noise = noiseModel(full, params);
-    const DepthNoise depth_noise = DepthNoise::of(noise);
-    const PointGrid& filled = holes.fill(full, Tolerances(params, depth_noise, frame.full_pitch, full.size()));
+    const PointGrid& filled = holes.fill(full, Tolerances(params, noise, frame.full_pitch, full.size()));
     // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
     // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
     // Kinect). A noise model the user gives describes the raw data: no smoothing then.
-    DepthNoise segment_noise = depth_noise;
+    NoiseModel segment_noise = noise;
     frame.source = &filled;
-    if (params.estimatesNoise() && !depth_noise.negligibleAgainstPixels(frame.full_pitch)) {
-      frame.source = &smoothing.smooth(filled, depth_noise);
-      segment_noise = DepthNoise::of(noise_estimator.estimate(*frame.source));
+    if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch)) {
+      frame.source = &smoothing.smooth(filled, noise);
+      segment_noise = noise_estimator.estimate(*frame.source);
     }
     frame.grid = sample(*frame.source, s);
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(
         params, frame.tolerances,
-        1.0 / (segment_noise.negligibleAgainstPixels(frame.full_pitch) ? kNoiseFreeFineSeedDivisor : kFineSeedDivisor),
+        1.0 / (negligibleAgainstPixels(segment_noise, frame.full_pitch) ? kNoiseFreeFineSeedDivisor : kFineSeedDivisor),
         frame.pitch, frame.grid.width, frame.grid.height);
     buffer.reset(frame.grid.size());
     segments.assign(1, Segment());  // label 0: no segment

@@ -15,10 +15,14 @@ constexpr double kSeedFootprints = 6.0;
 constexpr double kMergeFootprints = 1.0;
 // The default smallest plane: one pixel in this many.
 constexpr double kPixelsPerMinimumPlane = 1000.0;
+// A merge's parts fit its plane within half of sigma_plane or this many noise deviations (RMS):
+// a part further off the merged plane than that on average is a plane of its own (a 2 cm
+// board on a wall).
+constexpr double kMergeFitDeviations = 2.0;
 
 }  // namespace
 
-Tolerances::Tolerances(const Params& params, const DepthNoise& noise, double angular_pitch, std::size_t pixels)
+Tolerances::Tolerances(const Params& params, const NoiseModel& noise, double angular_pitch, std::size_t pixels)
     : distance_threshold_(params.distance_threshold),
       seed_size_(params.seed_size),
       merge_distance_(params.merge_distance),
@@ -35,18 +39,16 @@ double Tolerances::planeFloor(double range) const {
 
 double Tolerances::seedHalfSide(double range, double scale) const {
   const double fixed = seed_size_ ? 0.5 * *seed_size_ : kSeedFootprints * footprint(range);
-  return noise_.tolerance(scale * fixed, range * range);
+  return std::max(scale * fixed, noiseDeviations(noise_, kPointDeviations, range * range));
 }
 
 double Tolerances::mergeDistance(double range) const {
   const double fixed = merge_distance_ ? *merge_distance_ : kMergeFootprints * footprint(range);
-  return noise_.tolerance(fixed, range * range);
+  return std::max(fixed, noiseDeviations(noise_, kPointDeviations, range * range));
 }
 
 double Tolerances::mergeFit(double range) const {
-  // Half of sigma_plane, or two noise deviations: a part further off the merged plane than
-  // that on average is a plane of its own (a 2 cm board on a wall).
-  return std::max(0.5 * planeFloor(range), 2.0 * noise_.sigma(range * range));
+  return std::max(0.5 * planeFloor(range), noiseDeviations(noise_, kMergeFitDeviations, range * range));
 }
 
 }  // namespace floodplane

@@ -12,13 +12,13 @@ namespace floodplane {
 /// Every length tolerance of the method at a range r, in one place: the paper's fixed
 /// lengths where Params sets them, otherwise the scale-free defaults, derived from the depth
 /// noise sigma(r) and the pixel footprint alpha r (alpha: the angle between neighbouring
-/// viewing rays). Three standard deviations of the noise widen every tolerance, as before.
+/// viewing rays). kPointDeviations of the noise widen every tolerance (depth_noise.h).
 class Tolerances {
  public:
   Tolerances() = default;
-  Tolerances(const Params& params, const DepthNoise& noise, double angular_pitch, std::size_t pixels);
+  Tolerances(const Params& params, const NoiseModel& noise, double angular_pitch, std::size_t pixels);
 
-  const DepthNoise& noise() const { return noise_; }
+  const NoiseModel& noise() const { return noise_; }
   /// The width of a pixel's footprint at range r [m].
   double footprint(double range) const { return angular_pitch_ * range; }
 
@@ -40,7 +40,7 @@ class Tolerances {
   std::optional<double> distance_threshold_;
   std::optional<double> seed_size_;
   std::optional<double> merge_distance_;
-  DepthNoise noise_;
+  NoiseModel noise_;
   double angular_pitch_ = 0.0;
   std::uint32_t min_inliers_ = 0;
 };

@@ -21,9 +21,9 @@ using test::RenderedGrid;
 
 Pinhole camera() { return test::kinectView(120, 90); }
 
-DepthNoise constantNoise(double sigma) {
-  DepthNoise noise;
-  noise.constant = sigma;
+NoiseModel constantNoise(double sigma) {
+  NoiseModel noise;
+  noise.sigma_constant = sigma;
   return noise;
 }
 
@@ -102,9 +102,9 @@ TEST(DepthSmoothing, KeepsHolesAndAveragesOnlyTheReturnsAroundThem) {
 void expectSmoothingChangesNoBit(DepthSmoothing::VectorWidth vector_width) {
   test::ScenePlane board = test::frontalPlane(1.95, 2);
   board.contains = [](const Eigen::Vector3d& p) { return p.x() < 0.0; };
-  DepthNoise noise;
-  noise.constant = 0.001;
-  noise.quadratic = 0.0007;
+  NoiseModel noise;
+  noise.sigma_constant = 0.001;
+  noise.sigma_quadratic = 0.0007;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (const auto& [width, height] :
        {std::pair{123, 37}, {1, 1}, {5, 1}, {1, 6}, {6, 2}, {9, 3}, {10, 4}, {17, 5}, {24, 3}}) {

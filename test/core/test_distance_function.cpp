@@ -62,48 +62,48 @@ TEST(SquaredEuclideanDistance, IsNaNWhenEitherPointIsAHole) {
   EXPECT_FALSE(squaredEuclideanDistance({0, 0, 1}, {0, kNaN, 0}) < 1e9f);
 }
 
-// --- DepthNoise ----------------------------------------------------------------------------
+// --- Depth noise (depth_noise.h) -----------------------------------------------------------
 
-DepthNoise quadraticNoise(double c) {
-  DepthNoise noise;
-  noise.quadratic = c;
+NoiseModel quadraticNoise(double c) {
+  NoiseModel noise;
+  noise.sigma_quadratic = c;
   return noise;
 }
 
 TEST(DepthNoise, GrowsWithTheSquareOfTheRange) {
-  const DepthNoise noise = quadraticNoise(0.002);
-  EXPECT_DOUBLE_EQ(noise.sigma(1.0), 0.002);
-  EXPECT_DOUBLE_EQ(noise.sigma(9.0), 0.018);  // r = 3 m
+  const NoiseModel noise = quadraticNoise(0.002);
+  EXPECT_DOUBLE_EQ(depthSigma(noise, 1.0), 0.002);
+  EXPECT_DOUBLE_EQ(depthSigma(noise, 9.0), 0.018);  // r = 3 m
+  EXPECT_DOUBLE_EQ(depthSigma(noise, 9.0), noise.sigma(3.0));
 }
 
-TEST(DepthNoise, ToleranceIsTheFixedValueUntilThreeSigmaExceedsIt) {
-  const DepthNoise noise = quadraticNoise(0.002);
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 1.0), 0.01);   // 3 sigma = 0.006 < 0.01
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 4.0), 0.024);  // 3 sigma = 0.024 > 0.01
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 25.0), 0.15);  // r = 5 m
+TEST(DepthNoise, NamesThreeDeviationsForAPointAndThreeRootTwoForADifferenceOfTwo) {
+  EXPECT_EQ(kPointDeviations, 3.0);
+  EXPECT_EQ(kDifferenceDeviations, 3.0 * std::sqrt(2.0));
+}
+
+TEST(DepthNoise, DeviationsAreThatManySigmasAtTheRange) {
+  const NoiseModel noise = quadraticNoise(0.002);
+  EXPECT_DOUBLE_EQ(noiseDeviations(noise, kPointDeviations, 1.0), 0.006);
+  EXPECT_DOUBLE_EQ(noiseDeviations(noise, kPointDeviations, 4.0), 0.024);
+  EXPECT_DOUBLE_EQ(noiseDeviations(noise, kPointDeviations, 25.0), 0.15);  // r = 5 m
+  EXPECT_DOUBLE_EQ(noiseDeviations(noise, kDifferenceDeviations, 4.0), 3.0 * std::sqrt(2.0) * 0.008);
+  // In float for float ranges, as the hot paths take it.
+  EXPECT_FLOAT_EQ(noiseDeviations(noise, kPointDeviations, 4.0f), 0.024f);
 }
 
 TEST(DepthNoise, AddsSigmaZeroAtEveryRange) {
-  DepthNoise noise = quadraticNoise(0.002);
-  noise.constant = 0.001;
-  EXPECT_DOUBLE_EQ(noise.sigma(0.0), 0.001);
-  EXPECT_DOUBLE_EQ(noise.sigma(4.0), 0.009);
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.001, 1.0), 0.009);
+  NoiseModel noise = quadraticNoise(0.002);
+  noise.sigma_constant = 0.001;
+  EXPECT_DOUBLE_EQ(depthSigma(noise, 0.0), 0.001);
+  EXPECT_DOUBLE_EQ(depthSigma(noise, 4.0), 0.009);
+  EXPECT_DOUBLE_EQ(noiseDeviations(noise, kPointDeviations, 1.0), 0.009);
 }
 
-TEST(DepthNoise, TakesBothTermsFromANoiseModel) {
-  NoiseModel model;
-  model.sigma_constant = 0.0004;
-  model.sigma_quadratic = 0.0031;
-  EXPECT_DOUBLE_EQ(DepthNoise::of(model).quadratic, 0.0031);
-  EXPECT_DOUBLE_EQ(DepthNoise::of(model).constant, 0.0004);
-}
-
-TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
-  DepthNoise noise;  // default: no range-dependent noise
-  EXPECT_DOUBLE_EQ(noise.sigma(100.0), 0.0);
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 0.25), 0.01);
-  EXPECT_DOUBLE_EQ(noise.tolerance(0.01, 100.0), 0.01);
+TEST(DepthNoise, ZeroCoefficientsGiveNoNoiseAtAnyRange) {
+  const NoiseModel noise;  // default: no noise
+  EXPECT_DOUBLE_EQ(depthSigma(noise, 100.0), 0.0);
+  EXPECT_DOUBLE_EQ(noiseDeviations(noise, kDifferenceDeviations, 100.0), 0.0);
 }
 
 // Exact data, and exact data rounded to a 0.2 mm depth lattice (a TUM depth PNG: the noise
@@ -112,22 +112,18 @@ TEST(DepthNoise, ZeroCoefficientGivesTheFixedToleranceAtAnyRange) {
 // noise (1 mm at 1 m, pixels of 1/1600 rad) do not.
 TEST(DepthNoise, IsNegligibleAgainstPixelsBelowATenthOfTheirFootprint) {
   const double kinect_pitch = 1.0 / 525.0;
-  DepthNoise exact;
-  EXPECT_TRUE(exact.negligible());
-  EXPECT_TRUE(exact.negligibleAgainstPixels(kinect_pitch));
-  DepthNoise lattice;
-  lattice.constant = 6.7e-5;
-  EXPECT_FALSE(lattice.negligible());
-  EXPECT_TRUE(lattice.negligibleAgainstPixels(kinect_pitch));
-  DepthNoise millimetres;  // a depth PNG in millimetres: 0.29 mm against 0.1 mm at 0.5 m
-  millimetres.constant = 2.9e-4;
-  EXPECT_FALSE(millimetres.negligibleAgainstPixels(kinect_pitch));
-  DepthNoise kinect;
-  kinect.quadratic = 0.0015;
-  EXPECT_FALSE(kinect.negligibleAgainstPixels(kinect_pitch));
-  DepthNoise scanner;
-  scanner.quadratic = 0.001;
-  EXPECT_FALSE(scanner.negligibleAgainstPixels(1.0 / 1600.0));
+  NoiseModel exact;
+  EXPECT_TRUE(negligibleNoise(exact));
+  EXPECT_TRUE(negligibleAgainstPixels(exact, kinect_pitch));
+  NoiseModel lattice;
+  lattice.sigma_constant = 6.7e-5;
+  EXPECT_FALSE(negligibleNoise(lattice));
+  EXPECT_TRUE(negligibleAgainstPixels(lattice, kinect_pitch));
+  NoiseModel millimetres;  // a depth PNG in millimetres: 0.29 mm against 0.1 mm at 0.5 m
+  millimetres.sigma_constant = 2.9e-4;
+  EXPECT_FALSE(negligibleAgainstPixels(millimetres, kinect_pitch));
+  EXPECT_FALSE(negligibleAgainstPixels(quadraticNoise(0.0015), kinect_pitch));  // a Kinect
+  EXPECT_FALSE(negligibleAgainstPixels(quadraticNoise(0.001), 1.0 / 1600.0));   // a scanner
 }
 
 // --- FloodCriterion ------------------------------------------------------------------------
@@ -137,8 +133,8 @@ TEST(DepthNoise, IsNegligibleAgainstPixelsBelowATenthOfTheirFootprint) {
 FloodCriterion criterion(double noise_coefficient) {
   static Params params;
   params.distance_threshold = 0.01;
-  DepthNoise noise;
-  noise.quadratic = noise_coefficient;
+  NoiseModel noise;
+  noise.sigma_quadratic = noise_coefficient;
   const Tolerances tolerances(params, noise, 1.0 / 525.0, 640 * 480);
   return FloodCriterion::make({0, 0, -1}, 2.f, 2.0, /*spacing_per_range_sq=*/0.01 / 4.0, tolerances);
 }
@@ -184,9 +180,9 @@ TEST(FloodCriterion, EuclideanToleranceAddsTheDepthNoiseOfBothPoints) {
 TEST(FloodCriterion, GrowsBothTolerancesBySigmaZeroToo) {
   Params params;
   params.distance_threshold = 0.001;
-  DepthNoise noise;
-  noise.constant = 0.002;  // 3 sigma_0 = 6 mm
-  noise.quadratic = 0.001;
+  NoiseModel noise;
+  noise.sigma_constant = 0.002;  // 3 sigma_0 = 6 mm
+  noise.sigma_quadratic = 0.001;
   const Tolerances tolerances(params, noise, 1.0 / 525.0, 640 * 480);
   const FloodCriterion c = FloodCriterion::make({0, 0, -1}, 2.f, 2.0, 0.0025, tolerances);
   EXPECT_FLOAT_EQ(c.planeTolerance(1.f), 0.009f);  // 3 (0.002 + 0.001)
@@ -197,7 +193,7 @@ TEST(FloodCriterion, GrowsBothTolerancesBySigmaZeroToo) {
 
 TEST(FloodCriterion, DerivesSigmaPlaneFromThePixelFootprintWhenItIsNotSet) {
   const Params automatic;
-  const Tolerances tolerances(automatic, DepthNoise(), 0.002, 640 * 480);
+  const Tolerances tolerances(automatic, NoiseModel(), 0.002, 640 * 480);
   // Half a footprint of 2 mrad at the seed's range: 2 mm at 2 m, 4 mm at 4 m.
   EXPECT_FLOAT_EQ(FloodCriterion::make({0, 0, -1}, 2.f, 2.0, 0.001, tolerances).planeTolerance(4.f), 0.002f);
   EXPECT_FLOAT_EQ(FloodCriterion::make({0, 0, -1}, 4.f, 4.0, 0.001, tolerances).planeTolerance(16.f), 0.004f);

@@ -23,7 +23,7 @@ Pinhole camera() { return test::kinectView(160, 120); }
 
 Tolerances exactTolerances(std::size_t pixels) {
   static const Params params;
-  return Tolerances(params, DepthNoise(), 1.0 / camera().focal, pixels);
+  return Tolerances(params, NoiseModel(), 1.0 / camera().focal, pixels);
 }
 
 // Removes each point with probability `share` (seeded).

@@ -22,8 +22,8 @@ constexpr double kPitch = 1.0 / 525.0;  // a Kinect's angle between neighbouring
 // Kinect-like noise along the rays: sigma(r) = c r^2.
 Tolerances tolerancesFor(double quadratic) {
   static const Params params;
-  DepthNoise noise;
-  noise.quadratic = quadratic;
+  NoiseModel noise;
+  noise.sigma_quadratic = quadratic;
   return Tolerances(params, noise, kPitch, 640 * 480);
 }
 

@@ -62,7 +62,7 @@ struct Flood {
   std::vector<SegmentEdge> edges;
   PlaneFlood flood;
   Params params;
-  DepthNoise noise;  // none: the paper's fixed thresholds
+  NoiseModel noise;  // none: the paper's fixed thresholds
 
   explicit Flood(const Grid& g) {
     params.distance_threshold = 0.01;  // the paper's sigma_plane
@@ -267,7 +267,7 @@ TEST(PlaneFlood, WidensTheToleranceWithTheDepthNoiseAtRange) {
   // The right half is 3 cm behind: beyond 1 cm, within 3 sigma = 3 * 0.003 * 2^2 = 3.6 cm.
   const Grid g(40, 30, [](int u, int) { return u < 20 ? 2.0 : 2.03; });
   Flood f(g);
-  f.noise.quadratic = 0.003;
+  f.noise.sigma_quadratic = 0.003;
   f.grow(g, f.seedAt(g, 5, 15, kFacing, 10.0f));
   EXPECT_EQ(f.count(1), 1200u);
 }

@@ -53,8 +53,8 @@ Params exactParams() {
 }
 
 MergeCriterion criterionFor(const Params& params) {
-  DepthNoise noise;
-  noise.quadratic = params.depth_noise_coefficient.value_or(0.0);
+  NoiseModel noise;
+  noise.sigma_quadratic = params.depth_noise_coefficient.value_or(0.0);
   return MergeCriterion(params, Tolerances(params, noise, 1.0 / 525.0, 640 * 480));
 }
 

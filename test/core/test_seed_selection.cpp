@@ -36,8 +36,8 @@ struct Selector {
   Selector(const Params& p, int width, int height, float angular_pitch, double noise_coefficient = 0.0,
            double scale = 1.0)
       : params(p) {
-    DepthNoise noise;
-    noise.quadratic = noise_coefficient;
+    NoiseModel noise;
+    noise.sigma_quadratic = noise_coefficient;
     tolerances = Tolerances(params, noise, angular_pitch, static_cast<std::size_t>(width * height));
     selector.configure(params, tolerances, scale, angular_pitch, width, height);
   }
