@@ -20,7 +20,7 @@ struct Params {
   // --- Sec. III-B, the distance function of the flood (Eqs. 1-4) ---
   /// sigma_plane [m]: largest point-to-plane distance of a pixel joining a flood (Eq. 2).
   /// Unset: three standard deviations of the depth noise at the pixel's range, and at least
-  /// a quarter of the pixel footprint. The paper's value is 0.01.
+  /// half the pixel footprint. The paper's value is 0.01.
   std::optional<double> distance_threshold;
 
   // --- Sec. III-C, seed selection (Eqs. 5-8) ---
