@@ -15,6 +15,7 @@
 #include <pcl/segmentation/planar_region.h>
 
 #include "floodplane/params.h"
+#include "floodplane/plane_tracker.h"
 #include "floodplane/segmenter.h"
 
 namespace floodplane {
@@ -48,6 +49,9 @@ namespace detail {
 /// pose (sensor_origin_, sensor_orientation_) is honoured: results do not change when cloud
 /// and pose move together. setIndices() is ignored, as by OMPS: the whole grid is segmented.
 /// An unorganized or missing cloud gives a PCL_ERROR and empty outputs.
+///
+/// Over a stream of clouds, setTracking(true) gives the planes ids that persist from cloud to
+/// cloud (floodplane::PlaneTracker); the labels then carry those ids instead of size ranks.
 ///
 /// Bad parameter values throw std::invalid_argument from the setter, naming it.
 /// Not thread-safe; use one instance per thread. Buffers are reused between calls.
@@ -133,6 +137,38 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   /// Record the time of each phase (Fig. 5) in getLastPhases().
   void setMeasurePhases(bool measure) { measure_phases_ = measure; }
 
+  // ---- planes over a stream of clouds (floodplane::PlaneTracker) ---------------------------
+  /// Follow the planes over the clouds segmented one after another: each keeps an id (1, 2,
+  /// ...) while its surface stays in view, and gets it back when it returns within
+  /// PlaneTracker::Options::max_lost_frames clouds. On, the label cloud of segment() and
+  /// segmentAndRefine() holds track ids instead of size ranks (0 still means "no plane"), and
+  /// `label_indices[id]` the points of track `id` (empty for ids not in this cloud); planes,
+  /// coefficients, regions and inlier indices stay largest first, plane k + 1 being track
+  /// getTrackIds()[k]. Every call that segments is a frame, whichever overload; a call that
+  /// fails (no cloud, an unorganized one) is none. Switching it on or off starts a new
+  /// sequence (the tracks are forgotten). Default off: labels are size ranks.
+  void setTracking(bool tracking);
+  bool getTracking() const { return tracking_; }
+  /// The tracker's matching limits and smoothing; throws std::invalid_argument naming the
+  /// option. Keeps the tracks.
+  void setTrackerOptions(const PlaneTracker::Options& options);
+  const PlaneTracker::Options& getTrackerOptions() const { return tracker_.options(); }
+  /// The camera's motion since the previous cloud, for the next cloud segmented (once; then
+  /// none until set again): the pose of the next cloud's sensor in the previous one's frame
+  /// (T_previous_current, as odometry gives it), 4 x 4 rigid, in metres. The frame meant is
+  /// the one the planes are measured in, the cloud's axes at its sensor_origin_: for clouds
+  /// in their camera's frame (the usual), the camera's own motion. Optional; it lets a plane
+  /// keep its id across a fast move. Throws std::invalid_argument when not finite and rigid.
+  /// Used only while tracking.
+  void setCameraMotion(const Eigen::Matrix4d& motion);
+  /// The tracks after the last cloud: ids, first and last frame (0 = the first cloud since
+  /// tracking started), frames seen, current and smoothed plane parameters (relative to the
+  /// sensor origin, axes as the cloud's).
+  const PlaneTracker& getTracker() const { return tracker_; }
+  /// The track id of each plane of the last call, largest plane first; empty when tracking is
+  /// off or the call segmented nothing.
+  const std::vector<std::uint32_t>& getTrackIds() const { return track_ids_; }
+
   // ---- segmentation, with OrganizedMultiPlaneSegmentation's signatures -------------------
   /// Planes without the refinement step.
   void segment(std::vector<pcl::ModelCoefficients>& model_coefficients, std::vector<pcl::PointIndices>& inlier_indices);
@@ -188,12 +224,22 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   void fillCoefficients(std::vector<pcl::ModelCoefficients>& model_coefficients) const;
   void fillIndices(std::vector<pcl::PointIndices>& inlier_indices, std::vector<pcl::PointIndices>* label_indices) const;
   void fillLabels(pcl::PointCloud<PointLT>& labels) const;
+  // The label plane k (0-based) carries in the outputs: its track id, or its rank k + 1.
+  std::uint32_t outputLabel(std::size_t k) const {
+    return tracking_ ? track_ids_[k] : static_cast<std::uint32_t>(k + 1);
+  }
   void fillRegions(Regions& regions, std::vector<pcl::PointIndices>* boundary_indices);
   // Adds the time since run() handed over to the conversion phase (when measuring).
   void finishPhases();
 
   Params params_;
   bool measure_phases_ = false;
+  bool tracking_ = false;
+  PlaneTracker tracker_;
+  std::vector<std::uint32_t> track_ids_;  // of the last call's planes, when tracking
+  bool has_camera_motion_ = false;        // camera_motion_ is for the next frame
+  // Unaligned: storage only, so that the class needs no aligned allocation.
+  Eigen::Matrix<double, 4, 4, Eigen::DontAlign> camera_motion_ = Eigen::Matrix4d::Identity();
   Segmenter segmenter_;
   std::vector<float> sensor_frame_points_;  // the cloud shifted to its sensor origin, when not at 0
   std::vector<CloudPlane, Eigen::aligned_allocator<CloudPlane>> planes_;

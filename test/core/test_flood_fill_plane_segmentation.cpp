@@ -13,6 +13,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
+#include <set>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "test_scenes.h"
@@ -385,6 +387,185 @@ TEST(FloodFillPlaneSegmentation, SegmentsTheRealFrames) {
     ++frames;
   }
   EXPECT_EQ(frames, 7u);
+}
+
+// ---- planes over a stream of clouds ---------------------------------------------------------
+
+// The label each ground-truth plane of `scene` carries: the most common one on its pixels.
+std::map<int, std::uint32_t> labelOfEachTruePlane(const test::RenderedGrid& scene,
+                                                  const pcl::PointCloud<pcl::Label>& labels) {
+  std::map<int, std::map<std::uint32_t, std::size_t>> votes;
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (scene.truth[i] != 0 && labels[i].label != 0) ++votes[scene.truth[i]][labels[i].label];
+  std::map<int, std::uint32_t> label_of;
+  for (const auto& [truth, counts] : votes) {
+    const auto best = std::max_element(counts.begin(), counts.end(),
+                                       [](const auto& a, const auto& b) { return a.second < b.second; });
+    label_of[truth] = best->first;
+  }
+  return label_of;
+}
+
+// The cloud of `scene` with the points of ground-truth plane `truth` gone (no return).
+pcl::PointCloud<pcl::PointXYZ>::Ptr withoutPlane(const test::RenderedGrid& scene, int truth) {
+  auto cloud = toCloud<pcl::PointXYZ>(scene);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t i = 0; i < cloud->size(); ++i)
+    if (scene.truth[i] == truth) (*cloud)[i].x = (*cloud)[i].y = (*cloud)[i].z = nan;
+  return cloud;
+}
+
+TEST(FloodFillPlaneSegmentation, GivesTheSameTrackIdsWhenTheSameCloudIsSegmentedTwice) {
+  const auto cloud = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 3));
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  EXPECT_FALSE(seg.getTracking());
+  seg.setInputCloud(cloud);
+  segmentAndRefine(seg);
+  EXPECT_TRUE(seg.getTrackIds().empty()) << "no track ids while tracking is off";
+  EXPECT_EQ(seg.getTracker().frameCount(), 0u);
+
+  seg.setTracking(true);
+  const AllOutputs<pcl::PointXYZ> first = segmentAndRefine(seg);
+  const std::vector<std::uint32_t> first_ids = seg.getTrackIds();
+  EXPECT_EQ(first_ids, (std::vector<std::uint32_t>{1, 2, 3}));  // the first frame's, in order of size
+  const AllOutputs<pcl::PointXYZ> second = segmentAndRefine(seg);
+  EXPECT_EQ(seg.getTrackIds(), first_ids);
+  ASSERT_EQ(second.labels->size(), first.labels->size());
+  for (std::size_t i = 0; i < cloud->size(); ++i) ASSERT_EQ((*second.labels)[i].label, (*first.labels)[i].label);
+
+  const PlaneTracker& tracker = seg.getTracker();
+  EXPECT_EQ(tracker.frameCount(), 2u);
+  ASSERT_EQ(tracker.tracks().size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::uint32_t id = seg.getTrackIds()[k];
+    const PlaneTrack* track = tracker.track(id);
+    ASSERT_NE(track, nullptr);
+    EXPECT_EQ(track->first_frame, 0u);
+    EXPECT_EQ(track->last_frame, 1u);
+    EXPECT_EQ(track->frames_seen, 2u);
+    EXPECT_EQ(track->plane, static_cast<int>(k));
+    // The label outputs follow the ids, the plane outputs stay by size.
+    EXPECT_EQ(second.label_indices[id].indices, second.inliers[k].indices);
+    for (int i : second.inliers[k].indices) ASSERT_EQ((*second.labels)[i].label, id);
+    const Eigen::Vector3f normal(second.coefficients[k].values[0], second.coefficients[k].values[1],
+                                 second.coefficients[k].values[2]);
+    EXPECT_GT(normal.cast<double>().dot(track->normal), 0.99999);
+  }
+}
+
+TEST(FloodFillPlaneSegmentation, KeepsTrackIdsWhenAPlaneLeavesTheViewAndReturns) {
+  const test::RenderedGrid scene = test::render(kinect(), test::roomCorner(), 0.004, 4);
+  const auto full = toCloud<pcl::PointXYZ>(scene);
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setTracking(true);
+  seg.setInputCloud(full);
+  const std::map<int, std::uint32_t> first = labelOfEachTruePlane(scene, *segmentAndRefine(seg).labels);
+  ASSERT_EQ(first.size(), 3u);
+
+  // The largest plane gone: the others move up in size rank but keep their ids (here through
+  // segment(), whose label cloud carries them as segmentAndRefine's does).
+  const auto largest = std::find_if(first.begin(), first.end(), [](const auto& entry) { return entry.second == 1; });
+  ASSERT_NE(largest, first.end());
+  seg.setInputCloud(withoutPlane(scene, largest->first));
+  std::vector<pcl::ModelCoefficients> coefficients;
+  std::vector<pcl::PointIndices> inliers, label_indices;
+  FloodFillPlaneSegmentation<pcl::PointXYZ>::Centroids centroids;
+  FloodFillPlaneSegmentation<pcl::PointXYZ>::Covariances covariances;
+  pcl::PointCloud<pcl::Label> labels;
+  seg.segment(coefficients, inliers, centroids, covariances, labels, label_indices);
+  ASSERT_EQ(coefficients.size(), 2u);
+  EXPECT_NE(seg.getTrackIds()[0], 1u) << "the largest plane now is another one";
+  std::map<int, std::uint32_t> expected = first;
+  expected.erase(largest->first);
+  EXPECT_EQ(labelOfEachTruePlane(scene, labels), expected);
+  ASSERT_EQ(label_indices.size(), 4u);  // 0 and ids 1 .. 3, of which 1 has no points here
+  EXPECT_TRUE(label_indices[1].indices.empty());
+
+  // Back in view: every plane has its first id, and no track was started.
+  seg.setInputCloud(full);
+  EXPECT_EQ(labelOfEachTruePlane(scene, *segmentAndRefine(seg).labels), first);
+  EXPECT_EQ(seg.getTracker().tracks().size(), 3u);
+  EXPECT_EQ(seg.getTracker().track(1)->frames_seen, 2u);
+  EXPECT_EQ(seg.getTracker().track(1)->last_frame, 2u);
+}
+
+TEST(FloodFillPlaneSegmentation, FollowsPlanesAcrossALargeCameraMoveWhenGivenTheMotion) {
+  const auto before = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 5));
+  // The camera 0.4 m forward and turned 0.1 rad to the left: far more than the tracker's limits
+  // for a frame without a motion (0.08 m of plane offset).
+  Eigen::Affine3d motion = Eigen::Affine3d::Identity();
+  motion.translate(Eigen::Vector3d(0.1, 0.0, 0.4));
+  motion.rotate(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY()));
+  pcl::PointCloud<pcl::PointXYZ>::Ptr after(new pcl::PointCloud<pcl::PointXYZ>);
+  pcl::transformPointCloud(*before, *after, motion.inverse().cast<float>());  // P_current = motion^-1 P_previous
+
+  FloodFillPlaneSegmentation<pcl::PointXYZ> blind, told;
+  for (auto* seg : {&blind, &told}) {
+    seg->setTracking(true);
+    seg->setInputCloud(before);
+    segmentAndRefine(*seg);
+    seg->setInputCloud(after);
+  }
+  told.setCameraMotion(motion.matrix());
+  segmentAndRefine(blind);
+  segmentAndRefine(told);
+  ASSERT_EQ(told.getTrackIds().size(), 3u);
+  EXPECT_EQ(std::set<std::uint32_t>(told.getTrackIds().begin(), told.getTrackIds().end()),
+            (std::set<std::uint32_t>{1, 2, 3}));
+  EXPECT_GT(*std::max_element(blind.getTrackIds().begin(), blind.getTrackIds().end()), 3u)
+      << "without the motion, the moved back wall is a new surface";
+  // The motion is for one frame only: the same cloud again, without one, keeps the ids.
+  const std::vector<std::uint32_t> ids = told.getTrackIds();
+  segmentAndRefine(told);
+  EXPECT_EQ(told.getTrackIds(), ids);
+}
+
+TEST(FloodFillPlaneSegmentation, RejectsABadCameraMotionOrTrackerOptionsInTheirSetters) {
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  const auto message = [](auto&& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  const Eigen::Matrix4d scaled = 2.0 * Eigen::Matrix4d::Identity();
+  EXPECT_NE(message([&] { seg.setCameraMotion(scaled); }).find("setCameraMotion"), std::string::npos);
+  Eigen::Matrix4d not_finite = Eigen::Matrix4d::Identity();
+  not_finite(0, 3) = std::nan("");
+  EXPECT_NE(message([&] { seg.setCameraMotion(not_finite); }).find("rigid"), std::string::npos);
+  PlaneTracker::Options options;
+  options.max_lost_frames = -1;
+  const std::string bad_options = message([&] { seg.setTrackerOptions(options); });
+  EXPECT_NE(bad_options.find("setTrackerOptions"), std::string::npos) << bad_options;
+  EXPECT_NE(bad_options.find("max_lost_frames"), std::string::npos) << bad_options;
+  EXPECT_EQ(seg.getTrackerOptions().max_lost_frames, PlaneTracker::Options().max_lost_frames);
+  EXPECT_EQ(message([&] { seg.setCameraMotion(Eigen::Matrix4d::Identity()); }), "no exception");
+}
+
+TEST(FloodFillPlaneSegmentation, StartsANewSequenceWhenTrackingIsSwitchedOffAndOn) {
+  const auto cloud = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 7));
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud(cloud);
+  seg.setTracking(true);
+  segmentAndRefine(seg);
+  seg.setTracking(true);  // no change: the sequence goes on
+  segmentAndRefine(seg);
+  EXPECT_EQ(seg.getTracker().frameCount(), 2u);
+  seg.setTracking(false);
+  const AllOutputs<pcl::PointXYZ> ranks = segmentAndRefine(seg);
+  EXPECT_EQ(seg.getTracker().frameCount(), 0u);
+  EXPECT_EQ(ranks.label_indices.size(), 4u);
+  seg.setTracking(true);
+  segmentAndRefine(seg);
+  EXPECT_EQ(seg.getTracker().frameCount(), 1u);
+  EXPECT_EQ(seg.getTrackIds(), (std::vector<std::uint32_t>{1, 2, 3}));
+  // A call that segments nothing is no frame.
+  seg.setInputCloud(pcl::PointCloud<pcl::PointXYZ>::Ptr(new pcl::PointCloud<pcl::PointXYZ>));
+  segmentAndRefine(seg);
+  EXPECT_TRUE(seg.getTrackIds().empty());
+  EXPECT_EQ(seg.getTracker().frameCount(), 1u);
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <vector>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
@@ -21,6 +23,38 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::setParams(const Params& params
   params_ = params;
 }
 
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setTracking(bool tracking) {
+  if (tracking != tracking_) {
+    tracker_.reset();
+    has_camera_motion_ = false;
+  }
+  tracking_ = tracking;
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setTrackerOptions(const PlaneTracker::Options& options) {
+  try {
+    tracker_.setOptions(options);
+  } catch (const std::invalid_argument& error) {
+    detail::throwBadParameter("setTrackerOptions", error.what());
+  }
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::setCameraMotion(const Eigen::Matrix4d& motion) {
+  // The tracker's own check, on an empty frame of a tracker of its own: one rule, one place.
+  try {
+    PlaneTracker().update(Segmentation(), motion);
+  } catch (const std::invalid_argument&) {
+    detail::throwBadParameter("setCameraMotion",
+                              "the motion must be a finite rigid transform (orthonormal rotation with determinant "
+                              "1, last row 0 0 0 1)");
+  }
+  camera_motion_ = motion;
+  has_camera_motion_ = true;
+}
+
 // ---- running the core --------------------------------------------------------------------
 
 template <typename PointT, typename PointLT>
@@ -29,6 +63,7 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
   const Clock::time_point start = measure_phases_ ? Clock::now() : Clock::time_point();
   last_ = &empty_;
   planes_.clear();
+  track_ids_.clear();
   phases_ = PhaseTimes();
   const std::string name = getClassName();
   if (!input_) {
@@ -77,6 +112,12 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
     phases_.pcl_conversion = std::chrono::duration<double, std::milli>(core_start - start).count();
     conversion_start_ = Clock::now();
   }
+  if (tracking_) {
+    // Timed as part of the conversion: the tracker works on the core's result.
+    track_ids_ =
+        has_camera_motion_ ? tracker_.update(*last_, Eigen::Matrix4d(camera_motion_)) : tracker_.update(*last_);
+    has_camera_motion_ = false;
+  }
 
   // The planes in the cloud's frame: only the shift to the sensor's origin is undone.
   planes_.resize(last_->planes.size());
@@ -114,10 +155,16 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
   }
   pcl::PointIndices* unlabelled = nullptr;
   if (label_indices) {
-    label_indices->resize(planes_.size() + 1);
+    // One entry per label up to the largest output label (with tracking, ids not in this
+    // cloud have empty entries).
+    std::uint32_t largest = 0;
+    for (std::size_t k = 0; k < planes_.size(); ++k) largest = std::max(largest, outputLabel(k));
+    label_indices->resize(std::size_t{largest} + 1);
+    for (pcl::PointIndices& entry : *label_indices) {
+      entry.header = input_->header;
+      entry.indices.clear();
+    }
     unlabelled = &(*label_indices)[0];
-    unlabelled->header = input_->header;
-    unlabelled->indices.clear();
   }
   // One pass over the labels, a run of one label at a time (a label image is mostly long
   // runs); `add_inliers(k, i, n)` files pixels i .. i + n - 1 under plane k + 1.
@@ -165,7 +212,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
     });
   }
   if (label_indices) {
-    for (std::size_t k = 0; k < planes_.size(); ++k) (*label_indices)[k + 1] = inlier_indices[k];
+    for (std::size_t k = 0; k < planes_.size(); ++k) (*label_indices)[outputLabel(k)] = inlier_indices[k];
   }
 }
 
@@ -176,7 +223,13 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillLabels(pcl::PointCloud<Poi
   labels.is_dense = true;
   labels.sensor_origin_ = input_->sensor_origin_;
   labels.sensor_orientation_ = input_->sensor_orientation_;
-  for (std::size_t i = 0; i < last_->labels.size(); ++i) labels[i].label = last_->labels[i];
+  if (!tracking_) {
+    for (std::size_t i = 0; i < last_->labels.size(); ++i) labels[i].label = last_->labels[i];
+    return;
+  }
+  std::vector<std::uint32_t> label_of_rank(planes_.size() + 1, 0);  // [core label]; 0 stays 0
+  for (std::size_t k = 0; k < planes_.size(); ++k) label_of_rank[k + 1] = outputLabel(k);
+  for (std::size_t i = 0; i < last_->labels.size(); ++i) labels[i].label = label_of_rank[last_->labels[i]];
 }
 
 template <typename PointT, typename PointLT>
