@@ -10,7 +10,8 @@
 The keyword parameters are the fields of the C++ floodplane::Params (PARAMETER_NAMES); the
 lengths default to None, which derives them from each frame's measured noise. Depth images:
 segment_depth(), depth_to_points(), read_depth_png(). Many files on a cluster:
-floodplane.distributed.segment_files().
+floodplane.distributed.segment_files(). A stream of frames: Tracker().update(result) gives
+each plane an id that persists from frame to frame.
 """
 
 from ._floodplane import (
@@ -21,6 +22,8 @@ from ._floodplane import (
     Segmentation,
     SegmentationStats,
     Segmenter,
+    Track,
+    Tracker,
     __version__,
     depth_to_points,
     read_depth_png,
@@ -38,6 +41,8 @@ __all__ = [
     "Segmentation",
     "SegmentationStats",
     "Segmenter",
+    "Track",
+    "Tracker",
     "__version__",
     "depth_to_points",
     "read_depth_png",

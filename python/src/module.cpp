@@ -9,6 +9,7 @@
 #include "params_kwargs.h"
 #include "segmentation_result.h"
 #include "segmenter_binding.h"
+#include "tracker_binding.h"
 
 PYBIND11_MODULE(_floodplane, m) {
   m.doc() = "Plane segmentation of organized point clouds by seeded flood fill (compiled core).";
@@ -16,5 +17,6 @@ PYBIND11_MODULE(_floodplane, m) {
   m.attr("PARAMETER_NAMES") = pybind11::tuple(pybind11::cast(floodplane::python::parameterNames()));
   floodplane::python::bindSegmentationResult(m);
   floodplane::python::bindSegmenter(m);
+  floodplane::python::bindTracker(m);
   floodplane::python::bindFileFunctions(m);
 }

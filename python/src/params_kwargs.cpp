@@ -8,7 +8,6 @@
 #include "errors.h"
 
 namespace floodplane::python {
-namespace {
 
 namespace py = pybind11;
 
@@ -36,6 +35,8 @@ long long toInteger(py::handle value, const std::string& where, long long low, l
   }
   return number;
 }
+
+namespace {
 
 bool toBool(py::handle value, const std::string& where) {
   const py::module_ numpy = py::module_::import("numpy");

@@ -12,6 +12,14 @@
 
 namespace floodplane::python {
 
+/// A number (int or float, numpy's too; not bool, not a string), for a length or an angle.
+/// Raises TypeError otherwise; `where` names the argument in the message.
+double toDouble(pybind11::handle value, const std::string& where);
+
+/// An integer (anything with __index__, not bool) in [low, high]. Raises TypeError for
+/// another type, ValueError for a value outside the range.
+long long toInteger(pybind11::handle value, const std::string& where, long long low, long long high);
+
 /// The keyword names, in the order of floodplane::Params.
 std::vector<std::string> parameterNames();
 

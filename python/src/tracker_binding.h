@@ -1,0 +1,11 @@
+#pragma once
+// floodplane.Tracker: the core's PlaneTracker over Segmentation results, giving planes ids that
+// persist from frame to frame; floodplane.Track: one of its tracks.
+
+#include <pybind11/pybind11.h>
+
+namespace floodplane::python {
+
+void bindTracker(pybind11::module_& module);
+
+}  // namespace floodplane::python
