@@ -30,4 +30,9 @@ OutputPaths outputPaths(const std::string& input_path, const std::string& output
   return {base + ".labels.pcd", base + ".labels.png", base + ".planes.json", base + ".snapshot.png"};
 }
 
+std::string tracksPath(const std::string& output, bool single_file) {
+  if (single_file) return output.substr(0, output.size() - 4) + ".tracks.json";
+  return (fs::path(output) / "tracks.json").string();
+}
+
 }  // namespace pcd_segment

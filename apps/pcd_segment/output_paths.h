@@ -26,4 +26,8 @@ bool namesPcdFile(const std::string& output);
 /// receiving <name>.labels.pcd, <name>.labels.png, <name>.planes.json, <name>.snapshot.png.
 OutputPaths outputPaths(const std::string& input_path, const std::string& output, bool single_file);
 
+/// Where --track --json writes its summary of the tracks: OUT/tracks.json, or <stem>.tracks.json
+/// next to a single output file.
+std::string tracksPath(const std::string& output, bool single_file);
+
 }  // namespace pcd_segment

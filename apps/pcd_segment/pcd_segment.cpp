@@ -34,6 +34,7 @@
 #include "output_paths.h"
 #include "planes_json.h"
 #include "progress.h"
+#include "track_summary.h"
 #include "view_output.h"
 
 namespace {
@@ -47,7 +48,8 @@ constexpr const char* kDescription =
     "INPUT is a PCD file with x y z fields, a 16-bit depth image (.png, 0 = no return; needs "
     "--intrinsics), or a directory of them. Writes per input a labelled cloud (x y z [rgb] "
     "label: 0 no plane, 1..K planes by size, largest first; a depth image's back-projected "
-    "points): OUT itself for one input and OUT ending in .pcd, otherwise OUT/<name>.labels.pcd.";
+    "points): OUT itself for one input and OUT ending in .pcd, otherwise OUT/<name>.labels.pcd. "
+    "With --track the inputs are one sequence of frames and the labels are track ids.";
 
 struct Options {
   std::vector<std::string> inputs;
@@ -60,6 +62,7 @@ struct Options {
   bool png = false;
   bool json = false;
   bool quiet = false;
+  bool track = false;                          ///< the inputs are one sequence; labels are track ids
   unsigned jobs = pcd_segment::defaultJobs();  ///< inputs segmented at once
   bool view = false;
   std::optional<std::string> snapshot;  ///< given: the file, or empty for <name>.snapshot.png
@@ -145,6 +148,12 @@ void addOutputFlags(CLI::App& app, Options& options) {
   app.add_flag("--png", options.png, "Also write <name>.labels.png (a colour per plane)");
   app.add_flag("--json", options.json, "Also write <name>.planes.json (planes, parameters, time)");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
+  app.add_flag("--track", options.track,
+               "The inputs are one sequence of frames, in the order given (a directory's files sorted by name): "
+               "each plane keeps an id while its surface stays in view, and the label field holds these track "
+               "ids (0 no plane) instead of size ranks; with --json, each plane's \"track\" in <name>.planes.json "
+               "and a summary of the tracks in OUT/tracks.json. Segments the frames in order on one thread (-j "
+               "above 1 is refused); a frame that cannot be read is reported and skipped");
   app.add_option("-j,--jobs", options.jobs,
                  "Inputs segmented at once, each on a thread of its own (default: one per core); "
                  "outputs and messages are those of -j 1, in input order")
@@ -236,8 +245,10 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   return out;
 }
 
+// `track_ids`: each plane's track id with --track, empty without.
 void writeReport(const std::string& path, const std::string& input, const Cloud& points,
-                 const floodplane::Params& params, const Segmented& segmented) {
+                 const floodplane::Params& params, const Segmented& segmented,
+                 const std::vector<std::uint32_t>& track_ids) {
   pcd_segment::Report report;
   report.input = input;
   report.width = points.width;
@@ -247,6 +258,7 @@ void writeReport(const std::string& path, const std::string& input, const Cloud&
   report.segmentation_ms = segmented.segmentation_ms;
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);
+  for (std::size_t k = 0; k < track_ids.size() && k < report.planes.size(); ++k) report.planes[k].track = track_ids[k];
   floodplane::io::writeBytesAtomically(path, pcd_segment::reportJson(report).dump(2) + "\n");
 }
 
@@ -259,13 +271,21 @@ struct FileResult {
 };
 
 // Reads, segments and writes one input; throws std::runtime_error saying what went wrong.
+// With --track, `summary` takes the frame once it is segmented (the tracker has then seen it,
+// whatever happens to the outputs).
 FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths& paths, Segmentation& segmentation,
-                       const Options& options) {
+                       const Options& options, pcd_segment::TrackSummary* summary) {
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(input, options.camera);
   const auto points = std::make_shared<Cloud>(std::move(frame.xyz));
   const Segmented segmented = segment(segmentation, points);
+  std::vector<std::uint32_t> track_labels;
+  if (segmentation.getTracking()) {
+    segmentation.getTracker().relabel(segmentation.getLastSegmentation().labels, track_labels);
+    if (summary) summary->addFrame(input, segmentation.getTracker());
+  }
   // The label cloud in the input's grid and pose (x y z [rgb] label), as the Python module writes it.
-  const std::vector<std::uint32_t>& labels = segmentation.getLastSegmentation().labels;
+  const std::vector<std::uint32_t>& labels =
+      segmentation.getTracking() ? track_labels : segmentation.getLastSegmentation().labels;
   if (frame.xyzrgb) {
     pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, labels),
                                options.ascii);
@@ -276,10 +296,13 @@ FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths&
   if (options.png) {
     floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, points->width, points->height));
   }
-  if (options.json) writeReport(paths.json, input, *points, segmentation.getParams(), segmented);
+  if (options.json) {
+    writeReport(paths.json, input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds());
+  }
   FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}};
   if (options.snapshot || options.view) {
-    result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients);
+    result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients,
+                                           segmentation.getTrackIds());
   }
   return result;
 }
@@ -345,16 +368,18 @@ struct Outcome {
 };
 
 // Segments every input, options.jobs at a time, going on past failures; prints results and
-// errors in input order and returns the number of inputs that failed.
+// errors in input order and returns the number of inputs that failed. With --track, one
+// segmentation takes the inputs in order on this thread and `summary` follows its tracks.
 std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, const Options& options, bool single_file,
-                       const floodplane::Params& params) {
+                       const floodplane::Params& params, pcd_segment::TrackSummary* summary) {
   const std::vector<BatchItem> items = batchItems(files, options, single_file);
   pcd_segment::ProgressBar progress(items.size(), !options.quiet && items.size() > 3 && ::isatty(2));
   progress.show(0);
   std::size_t failed = 0;
-  const auto make_segmentation = [&params]() {
+  const auto make_segmentation = [&params, &options]() {
     auto segmentation = std::make_unique<Segmentation>();
     segmentation->setParams(params);
+    segmentation->setTracking(options.track);
     return segmentation;
   };
   const auto segment_item = [&](std::unique_ptr<Segmentation>& segmentation, std::size_t i) {
@@ -365,7 +390,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       return outcome;
     }
     try {
-      outcome.result = segmentFile(item.file->path, item.paths, *segmentation, options);
+      outcome.result = segmentFile(item.file->path, item.paths, *segmentation, options, summary);
     } catch (const std::exception& error) {
       outcome.error = error.what();
     } catch (...) {
@@ -393,10 +418,29 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
     }
     progress.show(i + 1);
   };
-  // --view opens a window per input on the main thread: one at a time.
-  pcd_segment::runInOrder(items.size(), options.view ? 1u : options.jobs, make_segmentation, segment_item, report);
+  // --view opens a window per input on the main thread: one at a time. --track: a tracker
+  // takes the frames in order, so one segmentation does them all, here.
+  const unsigned jobs = options.view || options.track ? 1u : options.jobs;
+  pcd_segment::runInOrder(items.size(), jobs, make_segmentation, segment_item, report);
   progress.clear();
   return failed;
+}
+
+// tracks.json, written once the sequence is done (atomically: a reader never sees half of it).
+// False after saying why when it cannot be written.
+bool writeTrackSummary(const pcd_segment::TrackSummary& summary, const Options& options, bool single_file) {
+  const std::string path = pcd_segment::tracksPath(options.output, single_file);
+  try {
+    floodplane::io::writeBytesAtomically(path, summary.json().dump(2) + "\n");
+  } catch (const std::exception& error) {
+    std::cerr << "pcd_segment: error: " << path << ": " << error.what() << "\n";
+    return false;
+  }
+  if (!options.quiet) {
+    std::cout << summary.tracks().size() << " tracks over " << summary.frames().size() << " frames -> " << path
+              << std::endl;
+  }
+  return true;
 }
 
 // --view and --snapshot FILE are about one input, and both need a display: checked before any
@@ -456,12 +500,19 @@ int main(int argc, char** argv) {
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
+  if (options.track && options.jobs > 1 && app.get_option("--jobs")->count() > 0) {
+    return floodplane::apps::usageError(app, "--track segments the frames in order on one thread; -j " +
+                                                 std::to_string(options.jobs) + " cannot apply (leave -j out)");
+  }
   if (!createOutputDirectory(single_file ? fs::path(options.output).parent_path() : fs::path(options.output))) {
     return 1;
   }
-  const std::size_t failed = segmentAll(files, options, single_file, segmentation.getParams());
+  pcd_segment::TrackSummary summary;
+  const std::size_t failed =
+      segmentAll(files, options, single_file, segmentation.getParams(), options.track ? &summary : nullptr);
   if (failed > 0 && files.size() > 1) {
     std::cerr << "pcd_segment: " << failed << " of " << files.size() << " inputs failed\n";
   }
-  return failed > 0 ? 1 : 0;
+  const bool summary_written = !(options.track && options.json) || writeTrackSummary(summary, options, single_file);
+  return failed > 0 || !summary_written ? 1 : 0;
 }

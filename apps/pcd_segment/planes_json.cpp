@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "floodplane/version.h"
 
@@ -54,18 +55,17 @@ std::vector<PlaneRecord> planeRecords(
 nlohmann::ordered_json reportJson(const Report& report) {
   nlohmann::ordered_json planes = nlohmann::ordered_json::array();
   for (const PlaneRecord& plane : report.planes) {
-    planes.push_back({
-        {"id", plane.id},
-        {"normal", {plane.normal[0], plane.normal[1], plane.normal[2]}},
-        {"d", plane.d},
-        {"centroid", {plane.centroid[0], plane.centroid[1], plane.centroid[2]}},
-        {"inliers", plane.inliers},
-        {"boundary_box",
-         {{"min_column", plane.boundary_box.min_column},
-          {"max_column", plane.boundary_box.max_column},
-          {"min_row", plane.boundary_box.min_row},
-          {"max_row", plane.boundary_box.max_row}}},
-    });
+    nlohmann::ordered_json record = {{"id", plane.id}};
+    if (plane.track != 0) record["track"] = plane.track;  // only with --track
+    record["normal"] = {plane.normal[0], plane.normal[1], plane.normal[2]};
+    record["d"] = plane.d;
+    record["centroid"] = {plane.centroid[0], plane.centroid[1], plane.centroid[2]};
+    record["inliers"] = plane.inliers;
+    record["boundary_box"] = {{"min_column", plane.boundary_box.min_column},
+                              {"max_column", plane.boundary_box.max_column},
+                              {"min_row", plane.boundary_box.min_row},
+                              {"max_row", plane.boundary_box.max_row}};
+    planes.push_back(std::move(record));
   }
   const floodplane::Params& p = report.params;
   return {

@@ -31,7 +31,8 @@ PixelBox pixelBox(const std::vector<int>& indices, std::size_t width);
 
 /// What the report says about one plane.
 struct PlaneRecord {
-  std::uint32_t id = 0;         ///< its label: 1 for the largest plane
+  std::uint32_t id = 0;         ///< its size rank: 1 for the largest plane
+  std::uint32_t track = 0;      ///< its track id with --track (its label then); 0: not tracked
   float normal[3] = {0, 0, 0};  ///< unit, towards the sensor
   float d = 0;                  ///< n . p + d = 0
   float centroid[3] = {0, 0, 0};

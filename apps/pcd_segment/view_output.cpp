@@ -41,8 +41,10 @@ std::optional<std::pair<int, int>> parseImageSize(const std::string& text) {
 
 floodplane::view::PlaneScene planeScene(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points,
                                         const pcl::PointCloud<pcl::Label>& labels, const Regions& regions,
-                                        const std::vector<pcl::ModelCoefficients>& coefficients) {
-  if (labels.size() != points->size() || regions.size() != coefficients.size()) {
+                                        const std::vector<pcl::ModelCoefficients>& coefficients,
+                                        const std::vector<std::uint32_t>& plane_labels) {
+  if (labels.size() != points->size() || regions.size() != coefficients.size() ||
+      (!plane_labels.empty() && plane_labels.size() != regions.size())) {
     throw std::invalid_argument("planeScene: labels, regions and coefficients do not match the cloud");
   }
   floodplane::view::PlaneScene scene;
@@ -51,7 +53,8 @@ floodplane::view::PlaneScene planeScene(const pcl::PointCloud<pcl::PointXYZ>::Co
   for (const pcl::Label& label : labels) scene.colour_labels.push_back(label.label);
   for (std::size_t k = 0; k < regions.size(); ++k) {
     if (coefficients[k].values.size() < 3) throw std::invalid_argument("planeScene: a plane without coefficients");
-    scene.planes.push_back(planeMarker(static_cast<std::uint32_t>(k + 1), regions[k], coefficients[k]));
+    const std::uint32_t label = plane_labels.empty() ? static_cast<std::uint32_t>(k + 1) : plane_labels[k];
+    scene.planes.push_back(planeMarker(label, regions[k], coefficients[k]));
   }
   return scene;
 }

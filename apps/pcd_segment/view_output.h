@@ -6,6 +6,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -31,10 +32,12 @@ std::optional<std::pair<int, int>> parseImageSize(const std::string& text);
 
 /// The scene of one segmented cloud: points coloured by their label, and per plane k (label
 /// k) a marker from regions[k-1] (centroid, size from its covariance, inlier count, contour)
-/// and coefficients[k-1] (the normal, towards the sensor).
+/// and coefficients[k-1] (the normal, towards the sensor). `plane_labels`, when not empty, is
+/// the label of each plane instead (track ids, with --track).
 floodplane::view::PlaneScene planeScene(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& points,
                                         const pcl::PointCloud<pcl::Label>& labels, const Regions& regions,
-                                        const std::vector<pcl::ModelCoefficients>& coefficients);
+                                        const std::vector<pcl::ModelCoefficients>& coefficients,
+                                        const std::vector<std::uint32_t>& plane_labels = {});
 
 /// Renders `scene` and writes it to `path` as a PNG, atomically. Throws std::runtime_error
 /// with one line when it cannot (no display, VTK error, file not writable).

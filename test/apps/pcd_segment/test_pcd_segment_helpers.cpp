@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <chrono>
+#include <iterator>
+#include <stdexcept>
 #include <mutex>
 #include <set>
 #include <string>
@@ -13,6 +15,7 @@
 #include "ordered_batch.h"
 #include "output_paths.h"
 #include "planes_json.h"
+#include "track_summary.h"
 
 namespace {
 
@@ -64,6 +67,77 @@ TEST(ReportJson, HoldsTheParametersAndEveryPlane) {
   EXPECT_EQ(json["planes"][0]["inliers"], 7);
   EXPECT_EQ(json["planes"][0]["normal"][2], -1.0);
   EXPECT_EQ(json["planes"][0]["boundary_box"]["max_column"], 2);
+  EXPECT_FALSE(json["planes"][0].contains("track")) << "no track key without --track";
+  report.planes[0].track = 9;
+  const auto tracked = pcd_segment::reportJson(report);
+  EXPECT_EQ(tracked["planes"][0]["track"], 9);
+  EXPECT_EQ(tracked["planes"][0].begin().key(), "id");
+  EXPECT_EQ(std::next(tracked["planes"][0].begin()).key(), "track");
+}
+
+TEST(OutputPaths, PutsTheTrackSummaryInTheOutputDirectoryOrNextToTheOutputFile) {
+  EXPECT_EQ(pcd_segment::tracksPath("out", false), "out/tracks.json");
+  EXPECT_EQ(pcd_segment::tracksPath("res/scene.pcd", true), "res/scene.tracks.json");
+}
+
+// A 4 x 4 frame with plane k on row k, its normal along axis axes[k], 1 m from the camera.
+floodplane::Segmentation frameOf(const std::vector<int>& axes) {
+  floodplane::Segmentation frame;
+  frame.width = frame.height = 4;
+  frame.labels.assign(16, 0);
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    floodplane::SegmentedPlane plane;
+    plane.fit.normal = Eigen::Vector3d::Unit(axes[k]);
+    plane.fit.offset = 1.0;
+    plane.inlier_count = 4;
+    for (std::size_t x = 0; x < 4; ++x) frame.labels[k * 4 + x] = static_cast<std::uint32_t>(k + 1);
+    frame.planes.push_back(plane);
+  }
+  return frame;
+}
+
+TEST(TrackSummary, KeepsEveryTrackWithTheFilesItWasFirstAndLastSeenIn) {
+  floodplane::PlaneTracker::Options options;
+  options.max_lost_frames = 0;  // a track lost once is dropped by the tracker, not by the summary
+  floodplane::PlaneTracker tracker(options);
+  pcd_segment::TrackSummary summary;
+  tracker.update(frameOf({0, 1}));
+  summary.addFrame("a.pcd", tracker);
+  tracker.update(frameOf({0}));
+  summary.addFrame("b.pcd", tracker);
+  tracker.update(frameOf({0}));
+  summary.addFrame("c.pcd", tracker);
+  EXPECT_EQ(tracker.tracks().size(), 1u);
+
+  EXPECT_EQ(summary.frames(), (std::vector<std::string>{"a.pcd", "b.pcd", "c.pcd"}));
+  const std::vector<pcd_segment::TrackRecord> tracks = summary.tracks();
+  ASSERT_EQ(tracks.size(), 2u);
+  EXPECT_EQ(tracks[0].id, 1u);
+  EXPECT_EQ(tracks[0].first_frame, "a.pcd");
+  EXPECT_EQ(tracks[0].last_frame, "c.pcd");
+  EXPECT_EQ(tracks[0].frames_seen, 3u);
+  EXPECT_EQ(tracks[1].id, 2u);
+  EXPECT_EQ(tracks[1].last_frame, "a.pcd");
+  EXPECT_EQ(tracks[1].frames_seen, 1u);
+  EXPECT_TRUE(tracks[1].smoothed_normal.isApprox(Eigen::Vector3d::UnitY()));
+
+  const auto json = summary.json();
+  EXPECT_EQ(json["frame_count"], 3);
+  EXPECT_EQ(json["track_count"], 2);
+  EXPECT_EQ(json["tracks"][1]["id"], 2);
+  EXPECT_EQ(json["tracks"][1]["first_frame"], "a.pcd");
+  EXPECT_EQ(json["tracks"][1]["smoothed_normal"][1], 1.0);
+  EXPECT_EQ(json["tracks"][1]["smoothed_offset"], 1.0);
+  EXPECT_EQ(json["tracks"][0]["frames_seen"], 3);
+}
+
+TEST(TrackSummary, RefusesAFrameTheTrackerDidNotTake) {
+  floodplane::PlaneTracker tracker;
+  pcd_segment::TrackSummary summary;
+  EXPECT_THROW(summary.addFrame("a.pcd", tracker), std::logic_error);
+  tracker.update(frameOf({0}));
+  tracker.update(frameOf({0}));
+  EXPECT_THROW(summary.addFrame("b.pcd", tracker), std::logic_error);
 }
 
 // The items finish in reverse order (the first sleeps longest), yet are reported in order,
