@@ -4,8 +4,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <Eigen/Geometry>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iomanip>
@@ -22,11 +24,13 @@
 #include "io/label_palette.h"
 #include "io/pcd_file.h"
 #include "io/png_file.h"
+#include "synth/camera_path.h"
 #include "synth/ground_truth_json.h"
 #include "synth/point_cloud.h"
 #include "synth/renderer.h"
 #include "synth/scene_file.h"
 #include "synth/scene_generator.h"
+#include "synth/sequence_labels.h"
 
 namespace {
 
@@ -35,6 +39,12 @@ namespace synth = floodplane::synth;
 
 // Far more scenes than any test set needs, few enough that a typo is caught.
 constexpr int kMaxRandomScenes = 100000;
+// An hour at 30 Hz.
+constexpr int kMaxSequenceFrames = 108000;
+// A scene file may show a few objects and no walls: its camera walks on a short leash and
+// keeps looking roughly the scene's way.
+constexpr double kSceneFileLeash = 0.5;     // metres
+constexpr double kSceneFileMaxTurn = 25.0;  // degrees
 
 struct Options {
   std::vector<std::string> scene_files;
@@ -42,9 +52,11 @@ struct Options {
   std::optional<std::string> sensor;  // default: "both" for scene files, "all" for --random
   std::uint64_t seed = 1;
   std::optional<int> random_count;
+  std::optional<int> sequence_frames;
   std::optional<int> width;
   std::optional<int> height;
   bool png = false;
+  bool ascii = false;
   bool write_scene = false;
   bool quiet = false;
 };
@@ -75,11 +87,14 @@ double missingFraction(const synth::RenderedFrame& frame) {
   return static_cast<double>(missing) / static_cast<double>(frame.points.size());
 }
 
-// Writes <stem>.pcd, <stem>.planes.json and, with --png, <stem>.labels.png, each atomically.
-void writeFrame(const std::string& stem, const synth::RenderedFrame& frame, bool png) {
-  floodplane::io::savePcd(stem + ".pcd", synth::toPointCloud(frame));
+// Writes <stem>.pcd (text with --ascii), <stem>.planes.json and, with --png, <stem>.labels.png,
+// each atomically.
+void writeFrame(const std::string& stem, const synth::RenderedFrame& frame, const Options& options) {
+  floodplane::io::savePcd(
+      stem + ".pcd", synth::toPointCloud(frame),
+      options.ascii ? floodplane::io::PcdEncoding::ascii : floodplane::io::PcdEncoding::binary_compressed);
   floodplane::io::writeBytesAtomically(stem + ".planes.json", synth::groundTruthJson(frame));
-  if (png) {
+  if (options.png) {
     floodplane::io::writePng(stem + ".labels.png",
                              floodplane::io::labelImage(frame.labels, frame.intrinsics.width, frame.intrinsics.height));
   }
@@ -89,11 +104,96 @@ std::string outputStem(const Options& options, const std::string& scene_name, sy
   return (fs::path(options.output_dir) / (scene_name + "." + synth::sensorModelName(sensor))).string();
 }
 
+// "random_0007_f0012": frame 12 of a sequence; the sensor model still comes last in a file name.
+std::string frameName(const std::string& scene_name, int frame) {
+  char digits[32];
+  std::snprintf(digits, sizeof digits, "_f%04d", frame);
+  return scene_name + digits;
+}
+
+// Frame k's sensor noise: seed S for frame 0 (the frame a single render gives), then spread
+// (golden-ratio increments) so that no two frames share a noise pattern.
+std::uint64_t frameNoiseSeed(std::uint64_t seed, int frame) {
+  return seed + static_cast<std::uint64_t>(frame) * 0x9E3779B97F4A7C15ULL;
+}
+
+// Renders the sequence of `scene` along `poses` in every requested sensor model, with noise
+// seeds from `noise_seed` (frameNoiseSeed), and writes
+// <scene>_fNNNN.<sensor>.* and <scene>.poses.json. Ground-truth ids stay constant: faces merged
+// in any frame are one surface in all (SequenceSurfaces); frames written before a later merge
+// changed their labels are rendered and written again. Returns a summary for the progress line.
+std::string renderSequence(const synth::Scene& scene, const std::vector<Eigen::Isometry3d>& poses,
+                           const std::vector<synth::SensorModel>& sensors, std::uint64_t noise_seed,
+                           const Options& options) {
+  floodplane::io::writeBytesAtomically((fs::path(options.output_dir) / (scene.name + ".poses.json")).string(),
+                                       synth::cameraPathJson(scene.name, poses, synth::WalkSettings().frame_rate));
+  synth::SequenceSurfaces surfaces;
+  const auto frames = static_cast<int>(poses.size());
+  const auto render = [&](synth::SensorModel sensor, int k) {
+    synth::Scene view = scene;
+    view.world_from_camera = poses[static_cast<std::size_t>(k)];
+    synth::RenderSettings settings;
+    settings.sensor = sensor;
+    settings.seed = frameNoiseSeed(noise_seed, k);
+    return synth::renderScene(view, settings);
+  };
+  // The planes as written, per sensor and frame, to find the frames a later merge changes.
+  std::vector<std::vector<synth::RenderedFrame>> written(sensors.size());
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    for (int k = 0; k < frames; ++k) {
+      synth::RenderedFrame frame = render(sensors[s], k);
+      surfaces.add(frame);
+      surfaces.relabel(frame);
+      writeFrame(outputStem(options, frameName(scene.name, k), sensors[s]), frame, options);
+      synth::RenderedFrame listing;
+      listing.planes = std::move(frame.planes);
+      written[s].push_back(std::move(listing));
+    }
+  }
+  int rendered_again = 0;
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    for (int k = 0; k < frames; ++k) {
+      if (!surfaces.changes(written[s][static_cast<std::size_t>(k)])) continue;
+      synth::RenderedFrame frame = render(sensors[s], k);
+      surfaces.relabel(frame);
+      writeFrame(outputStem(options, frameName(scene.name, k), sensors[s]), frame, options);
+      ++rendered_again;
+    }
+  }
+  double walked = 0.0;
+  double turned = 0.0;
+  for (std::size_t k = 1; k < poses.size(); ++k) {
+    walked += (poses[k].translation() - poses[k - 1].translation()).norm();
+    turned += Eigen::AngleAxisd(poses[k - 1].linear().transpose() * poses[k].linear()).angle();
+  }
+  std::ostringstream summary;
+  summary << "; " << frames << " frames";
+  for (const synth::SensorModel sensor : sensors) summary << " " << synth::sensorModelName(sensor);
+  summary << ", walked " << std::fixed << std::setprecision(1) << walked << " m, turned " << std::setprecision(0)
+          << turned * 180.0 / 3.14159265358979323846 << " deg";
+  if (rendered_again > 0) summary << ", " << rendered_again << " frames rendered again for merged faces";
+  return summary.str();
+}
+
 // Renders one scene file in every requested sensor model and writes its outputs.
 void renderSceneFile(const std::string& scene_file, const Options& options) {
   synth::Scene scene = synth::loadScene(scene_file);
   if (options.width) {
     scene.intrinsics = scene.intrinsics.scaledTo(*options.width, *options.height);
+  }
+  if (options.sequence_frames) {
+    synth::WalkSettings walk;
+    walk.max_distance_from_start = kSceneFileLeash;
+    walk.max_turn = kSceneFileMaxTurn;
+    const auto start = std::chrono::steady_clock::now();
+    const std::string summary =
+        renderSequence(scene, synth::walkingCameraPath(scene, *options.sequence_frames, options.seed, walk),
+                       sensorModels(*options.sensor), options.seed, options);
+    const std::chrono::duration<double> time = std::chrono::steady_clock::now() - start;
+    if (!options.quiet) {
+      std::cout << scene.name << summary << "; " << std::fixed << std::setprecision(2) << time.count() << " s\n";
+    }
+    return;
   }
   for (const synth::SensorModel sensor : sensorModels(*options.sensor)) {
     synth::RenderSettings settings;
@@ -104,7 +204,7 @@ void renderSceneFile(const std::string& scene_file, const Options& options) {
     const std::chrono::duration<double> render_time = std::chrono::steady_clock::now() - start;
 
     const std::string stem = outputStem(options, scene.name, sensor);
-    writeFrame(stem, frame, options.png);
+    writeFrame(stem, frame, options);
     if (!options.quiet) {
       std::cout << scene.name << " (" << synth::sensorModelName(sensor) << "): " << frame.intrinsics.width << "x"
                 << frame.intrinsics.height << ", " << frame.planes.size() << " planes (" << visiblePlanes(frame)
@@ -119,6 +219,15 @@ void renderSceneFile(const std::string& scene_file, const Options& options) {
 // for the progress line.
 std::string renderRandomSeed(std::uint64_t seed, const Options& options) {
   const std::string name = synth::randomSceneName(seed);
+  if (options.sequence_frames) {
+    const synth::Scene scene = synth::generateRoomScene(seed);
+    if (options.write_scene) {
+      floodplane::io::writeBytesAtomically((fs::path(options.output_dir) / (name + ".room.json")).string(),
+                                           synth::sceneJson(scene));
+    }
+    return renderSequence(scene, synth::walkingCameraPath(scene, *options.sequence_frames, seed),
+                          sensorModels(*options.sensor), seed, options);
+  }
   std::optional<synth::Scene> room;
   std::optional<synth::Scene> blocks;
   std::ostringstream summary;
@@ -137,7 +246,7 @@ std::string renderRandomSeed(std::uint64_t seed, const Options& options) {
     settings.sensor = sensor;
     settings.seed = seed;
     const synth::RenderedFrame frame = synth::renderScene(*scene, settings);
-    writeFrame(outputStem(options, name, sensor), frame, options.png);
+    writeFrame(outputStem(options, name, sensor), frame, options);
     summary << "; " << synth::sensorModelName(sensor) << " " << frame.intrinsics.width << "x" << frame.intrinsics.height
             << ", " << visiblePlanes(frame) << " of " << frame.planes.size() << " planes visible";
     if (sensor != synth::SensorModel::none) {
@@ -203,6 +312,9 @@ std::string inconsistency(const Options& options) {
   if (options.random_count && options.width) {
     return "--width and --height apply to scene files; random scenes have their sensor's resolution";
   }
+  if (options.sequence_frames && options.sensor && (*options.sensor == "scanner" || *options.sensor == "all")) {
+    return "--sequence walks through rooms seen by the sensor models none and kinect, not the scanner's";
+  }
   if (!options.random_count && options.write_scene) {
     return "--write-scene saves generated scenes and needs --random N";
   }
@@ -223,7 +335,10 @@ int main(int argc, char** argv) {
       "into organized pcl::PointXYZL clouds: the measured point in x y z (NaN for no return) and the "
       "ground-truth plane id in label. Writes <scene>.<sensor>.pcd and <scene>.<sensor>.planes.json per scene "
       "and sensor model into OUTDIR. Random scene i (from 0) has seed S + i and is named random_<seed, 4 "
-      "digits>; the kinect and none frames show a room, the scanner frame blocks on a table.",
+      "digits>; the kinect and none frames show a room, the scanner frame blocks on a table. With --sequence N, "
+      "writes N frames of a camera walking through each scene instead: <scene>_f0000.<sensor>.pcd to "
+      "<scene>_f<N-1>.<sensor>.pcd (and .planes.json), with one ground-truth id per surface over the whole "
+      "sequence, and <scene>.poses.json with each frame's camera pose.",
       "pcd_synth"};
   floodplane::apps::addVersionFlag(app);
   // No existence check here: a missing file is reported with the others at the end.
@@ -232,10 +347,17 @@ int main(int argc, char** argv) {
   app.add_option("--random", options.random_count,
                  "Render N generated scenes, seeds S to S + N - 1, instead of scene files")
       ->check(CLI::Range(1, kMaxRandomScenes));
+  app.add_option("--sequence", options.sequence_frames,
+                 "Render N frames of a camera walking through each scene: 1.0-1.4 m/s at 30 Hz, turning about "
+                 "the vertical at up to 30 deg/s, nodding up to 4 degrees, never nearer than 0.5 m to a surface "
+                 "(in a scene file also within 0.5 m and 25 degrees of its camera); frame 0 is the scene's own "
+                 "view. The walk and frame 0's noise depend on the scene's seed (--seed for scene files), frame k's "
+                 "noise on that seed + k * 0x9E3779B97F4A7C15. Sensor models none and kinect (default both)")
+      ->check(CLI::Range(1, kMaxSequenceFrames));
   app.add_option("--sensor", options.sensor,
                  "Sensor model: none (exact), kinect, scanner (close-range structured light; random scanner "
-                 "scenes are 512x512), both (none and kinect) or all; default both for scene files, all for "
-                 "--random")
+                 "scenes are 512x512), both (none and kinect) or all; default both for scene files and --sequence, "
+                 "all for --random")
       ->check(CLI::IsMember({"none", "kinect", "scanner", "both", "all"}));
   app.add_option("--seed", options.seed, "Seed of the sensor noise; with --random also of the first scene (S)")
       ->capture_default_str();
@@ -247,6 +369,7 @@ int main(int argc, char** argv) {
                      ->check(CLI::Range(1, 32768));
   width->needs(height);
   height->needs(width);
+  app.add_flag("--ascii", options.ascii, "Write the PCDs as text, as pcd_segment --ascii (default: binary compressed)");
   app.add_flag("--png", options.png, "Also write <scene>.<sensor>.labels.png (ground truth)");
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
@@ -256,7 +379,7 @@ int main(int argc, char** argv) {
   if (const std::string problem = inconsistency(options); !problem.empty())
     return floodplane::apps::usageError(app, problem);
   if (!options.sensor) {
-    options.sensor = options.random_count ? "all" : "both";
+    options.sensor = options.random_count && !options.sequence_frames ? "all" : "both";
   }
 
   try {

@@ -1,11 +1,16 @@
 // Runs the pcd_synth binary with --random and checks what it writes and says: the outputs of
 // every seed and sensor, scenes made again one at a time byte for byte, saved scene files that
-// render the same frames, and a clear error and exit code 2 for every bad combination of
-// arguments.
+// render the same frames, sequences of a walking camera (--sequence: every frame's files, the
+// poses a walking step apart, frame 0 the single render, determinism, saved rooms walked as
+// scene files), and a clear error and exit code 2 for every bad combination of arguments.
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -97,6 +102,94 @@ TEST_F(PcdSynth, OneSensorWritesOnlyItsOwnFrames) {
   EXPECT_TRUE(contains(result.out, "% no return")) << result.out;
 }
 
+// "random_0009_f0002.kinect.pcd".
+std::string frameFile(const std::string& scene, int frame, const std::string& sensor, const std::string& suffix) {
+  char digits[16];
+  std::snprintf(digits, sizeof digits, "_f%04d.", frame);
+  return scene + digits + sensor + suffix;
+}
+
+// The x y z of every point of a text PCD of x y z label, without the labels.
+std::string pointsOf(const std::string& pcd) {
+  std::istringstream lines(pcd);
+  std::string line;
+  while (std::getline(lines, line) && line.rfind("DATA", 0) != 0) {
+  }
+  std::string points;
+  while (std::getline(lines, line)) points += line.substr(0, line.rfind(' ')) + "\n";
+  return points;
+}
+
+std::vector<Eigen::Matrix4d> posesOf(const std::string& json) {
+  std::vector<Eigen::Matrix4d> poses;
+  const nlohmann::json document = nlohmann::json::parse(json);
+  for (const auto& pose : document.at("poses")) {
+    Eigen::Matrix4d matrix;
+    for (int row = 0; row < 4; ++row) {
+      for (int column = 0; column < 4; ++column)
+        matrix(row, column) = pose.at("world_from_camera").at(row).at(column).get<double>();
+    }
+    poses.push_back(matrix);
+  }
+  return poses;
+}
+
+TEST_F(PcdSynth, ASequenceWritesEveryFrameOfBothSensorsAndThePosesAWalkingStepApart) {
+  const Result result = run({"--random", "1", "--seed", "9", "--sequence", "6", "--ascii", "-o", path("out").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(lineCount(result.out), 1U) << result.out;
+  EXPECT_TRUE(contains(result.out, "random_0009 (1 of 1); 6 frames none kinect, walked")) << result.out;
+  for (int frame = 0; frame < 6; ++frame) {
+    for (const std::string sensor : {"none", "kinect"}) {
+      for (const std::string suffix : {".pcd", ".planes.json"}) {
+        EXPECT_TRUE(fs::exists(path("out") / frameFile("random_0009", frame, sensor, suffix))) << frame << sensor;
+      }
+    }
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(path("out")), fs::directory_iterator()), 6 * 4 + 1);
+  const std::vector<Eigen::Matrix4d> poses = posesOf(readFile(path("out/random_0009.poses.json")));
+  ASSERT_EQ(poses.size(), 6U);
+  for (std::size_t k = 1; k < poses.size(); ++k) {
+    const Eigen::Vector3d step = poses[k].block<3, 1>(0, 3) - poses[k - 1].block<3, 1>(0, 3);
+    EXPECT_LE(step.norm(), 1.4 / 30 + 1e-9) << "frame " << k;
+    const Eigen::Matrix3d turn = poses[k - 1].block<3, 3>(0, 0).transpose() * poses[k].block<3, 3>(0, 0);
+    EXPECT_LE(Eigen::AngleAxisd(turn).angle(), 1.2 * 3.14159265358979323846 / 180) << "frame " << k;
+  }
+  EXPECT_FALSE(poses.front().isApprox(poses.back(), 1e-9));
+  // Frame 0 is the scene's own view with its own noise: the points a single render writes (its
+  // labels may differ where faces that first touch in later frames are one surface).
+  ASSERT_EQ(run({"--random", "1", "--seed", "9", "--sensor", "kinect", "--ascii", "-q", "-o", path("single").string()})
+                .exit_code,
+            0);
+  const std::string single = pointsOf(readFile(path("single/random_0009.kinect.pcd")));
+  EXPECT_GT(single.size(), 640U * 480U * 4U);
+  EXPECT_TRUE(single == pointsOf(readFile(path("out") / frameFile("random_0009", 0, "kinect", ".pcd"))));
+  // Every frame its own noise.
+  EXPECT_FALSE(readFile(path("out") / frameFile("random_0009", 1, "kinect", ".pcd")) ==
+               readFile(path("out") / frameFile("random_0009", 2, "kinect", ".pcd")));
+}
+
+TEST_F(PcdSynth, ASequenceIsTheSameEveryTimeAndASavedRoomCanBeWalkedAsASceneFile) {
+  const std::vector<std::string> arguments = {"--random", "1",      "--seed",        "4",  "--sequence", "3",
+                                              "--sensor", "kinect", "--write-scene", "-q", "-o"};
+  std::vector<std::string> first = arguments;
+  first.push_back(path("first").string());
+  std::vector<std::string> second = arguments;
+  second.push_back(path("second").string());
+  ASSERT_EQ(run(first).exit_code, 0);
+  ASSERT_EQ(run(second).exit_code, 0);
+  for (const auto& entry : fs::directory_iterator(path("first"))) {
+    const fs::path name = entry.path().filename();
+    EXPECT_TRUE(readFile(entry.path()) == readFile(path("second") / name)) << name;
+  }
+  const Result scene_file = run({path("first/random_0004.room.json").string(), "--sequence", "3", "--sensor", "none",
+                                 "-o", path("file").string()});
+  ASSERT_EQ(scene_file.exit_code, 0) << scene_file.err;
+  EXPECT_TRUE(contains(scene_file.out, "random_0004.room; 3 frames none")) << scene_file.out;
+  EXPECT_TRUE(fs::exists(path("file/random_0004.room_f0002.none.pcd")));
+  EXPECT_TRUE(fs::exists(path("file/random_0004.room.poses.json")));
+}
+
 TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "0"}, "--random");
   expectRejected({"--random", "2", "scene.json"}, "not both");
@@ -105,6 +198,10 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "2", "--seed", "18446744073709551615"}, "runs past the largest seed");
   expectRejected({"--random", "1", "--width", "320", "--height", "240"}, "--width and --height apply to scene files");
   expectRejected({"--random", "1", "--sensor", "lidar"}, "--sensor");
+  expectRejected({"--random", "1", "--sequence", "0"}, "--sequence");
+  expectRejected({"--random", "1", "--sequence", "x"}, "--sequence");
+  expectRejected({"--random", "1", "--sequence", "3", "--sensor", "scanner"}, "--sequence walks through rooms");
+  expectRejected({"--random", "1", "--sequence", "3", "--sensor", "all"}, "--sequence walks through rooms");
 }
 
 }  // namespace
