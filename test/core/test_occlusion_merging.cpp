@@ -13,41 +13,16 @@
 #include <vector>
 
 #include "occlusion_merging.h"
+#include "support/pinhole_grid.h"
 
 namespace floodplane {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kFocal = 100.0;  // pixels
+constexpr double kFocal = test::kPinholeFocal;
 constexpr float kPitch = static_cast<float>(1.0 / kFocal);
 
-// A width x height pinhole grid whose pixel (u, v) sees depth(u, v) along its ray; NaN is a hole.
-struct Grid {
-  int width = 0;
-  int height = 0;
-  std::vector<float> data;
-
-  Grid(int w, int h, const std::function<double(int, int)>& depth)
-      : width(w), height(h), data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3, 0.f) {
-    for (int v = 0; v < h; ++v) {
-      for (int u = 0; u < w; ++u) {
-        const double z = depth(u, v);
-        float* p = &data[(static_cast<std::size_t>(v) * static_cast<std::size_t>(w) + static_cast<std::size_t>(u)) * 3];
-        p[0] = static_cast<float>((u - (w - 1) / 2.0) / kFocal * z);
-        p[1] = static_cast<float>((v - (h - 1) / 2.0) / kFocal * z);
-        p[2] = static_cast<float>(z);
-      }
-    }
-  }
-  PointGrid grid() const {
-    PointGrid g;
-    g.data = data.data();
-    g.stride = 3;
-    g.width = width;
-    g.height = height;
-    return g;
-  }
-};
+using Grid = test::PinholeGrid;
 
 // The paper's fixed thresholds (sigma_plane 1 cm, sigma_plane-merge 3 cm), exact data.
 Params exactParams() {

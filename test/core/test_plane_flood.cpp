@@ -13,47 +13,15 @@
 #include "distance_buffer.h"
 #include "plane_flood.h"
 #include "simd.h"
+#include "support/pinhole_grid.h"
 
 namespace floodplane {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr double kFocal = 100.0;  // pixels
+constexpr double kFocal = test::kPinholeFocal;
 
-// A width x height pinhole grid (stride 3 or 4) whose pixel (u, v) sees depth(u, v) along its
-// ray; NaN depth is a hole.
-struct Grid {
-  int width = 0;
-  int height = 0;
-  std::size_t stride = 3;
-  std::vector<float> data;
-
-  Grid(int w, int h, const std::function<double(int, int)>& depth, std::size_t point_stride = 3)
-      : width(w), height(h), stride(point_stride), data(static_cast<std::size_t>(w * h) * point_stride, 0.f) {
-    for (int v = 0; v < h; ++v) {
-      for (int u = 0; u < w; ++u) {
-        const double z = depth(u, v);
-        float* p =
-            &data[(static_cast<std::size_t>(v) * static_cast<std::size_t>(w) + static_cast<std::size_t>(u)) * stride];
-        p[0] = static_cast<float>((u - (w - 1) / 2.0) / kFocal * z);
-        p[1] = static_cast<float>((v - (h - 1) / 2.0) / kFocal * z);
-        p[2] = static_cast<float>(z);
-      }
-    }
-  }
-  PointGrid grid() const {
-    PointGrid g;
-    g.data = data.data();
-    g.stride = stride;
-    g.width = width;
-    g.height = height;
-    return g;
-  }
-  std::size_t index(int u, int v) const {
-    return static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
-  }
-  Vec3 point(int u, int v) const { return Vec3::load(&data[index(u, v) * stride]); }
-};
+using Grid = test::PinholeGrid;
 
 // One flood's world: buffer, segments (0 is "none"), edges.
 struct Flood {

@@ -13,49 +13,16 @@
 #include <vector>
 
 #include "region_output.h"
+#include "support/pinhole_grid.h"
 
 namespace floodplane {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kFocal = 100.0;  // pixels
+constexpr double kFocal = test::kPinholeFocal;
 constexpr float kPitch = static_cast<float>(1.0 / kFocal);
 
-// A width x height pinhole grid (three or four floats a point) whose pixel (u, v) sees
-// depth(u, v) along its ray; NaN is a hole.
-struct Grid {
-  int width = 0;
-  int height = 0;
-  std::size_t stride = 3;
-  std::vector<float> data;
-
-  Grid(int w, int h, const std::function<double(int, int)>& depth, std::size_t point_stride = 3)
-      : width(w),
-        height(h),
-        stride(point_stride),
-        data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * point_stride, 0.f) {
-    for (int v = 0; v < h; ++v) {
-      for (int u = 0; u < w; ++u) {
-        const double z = depth(u, v);
-        float* p = &data[index(u, v) * stride];
-        p[0] = static_cast<float>((u - (w - 1) / 2.0) / kFocal * z);
-        p[1] = static_cast<float>((v - (h - 1) / 2.0) / kFocal * z);
-        p[2] = static_cast<float>(z);
-      }
-    }
-  }
-  PointGrid grid() const {
-    PointGrid g;
-    g.data = data.data();
-    g.stride = stride;
-    g.width = width;
-    g.height = height;
-    return g;
-  }
-  std::size_t index(int u, int v) const {
-    return static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
-  }
-};
+using Grid = test::PinholeGrid;
 
 // What the merging hands over: a frame, the grid that was segmented (every s-th pixel of every
 // s-th row, four floats a point, as the segmenter samples it), a segment per sample

@@ -13,44 +13,15 @@
 
 #include "plane_candidates.h"
 #include "relabelling.h"
+#include "support/pinhole_grid.h"
 
 namespace floodplane {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr double kFocal = 100.0;  // pixels: 2 cm between neighbours at 2 m
+constexpr double kFocal = test::kPinholeFocal;
 
-// A width x height pinhole grid whose pixel (u, v) sees depth(u, v) along its ray; NaN is a hole.
-struct Grid {
-  int width = 0;
-  int height = 0;
-  std::vector<float> data;
-
-  Grid(int w, int h, const std::function<double(int, int)>& depth)
-      : width(w), height(h), data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3, 0.f) {
-    for (int v = 0; v < h; ++v) {
-      for (int u = 0; u < w; ++u) {
-        const double z = depth(u, v);
-        float* p = &data[index(u, v) * 3];
-        p[0] = static_cast<float>((u - (w - 1) / 2.0) / kFocal * z);
-        p[1] = static_cast<float>((v - (h - 1) / 2.0) / kFocal * z);
-        p[2] = static_cast<float>(z);
-      }
-    }
-  }
-  PointGrid grid() const {
-    PointGrid g;
-    g.data = data.data();
-    g.stride = 3;
-    g.width = width;
-    g.height = height;
-    return g;
-  }
-  std::size_t index(int u, int v) const {
-    return static_cast<std::size_t>(v) * static_cast<std::size_t>(width) + static_cast<std::size_t>(u);
-  }
-  Vec3 point(std::size_t i) const { return Vec3::load(&data[i * 3]); }
-};
+using Grid = test::PinholeGrid;
 
 // A label image from string art: '.' is 0, digits are labels.
 std::vector<std::int32_t> labelsFrom(const std::vector<std::string>& rows) {
