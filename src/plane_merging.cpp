@@ -7,6 +7,9 @@ namespace floodplane {
 
 namespace {
 
+// A border of fewer pixel pairs is a corner where two segments touch, not a shared edge.
+constexpr double kMinBorderPairs = 8.0;
+
 double normalVariance(const PlaneSums& sums, const PlaneFit& fit) {
   const double sigma = normalUncertainty(fit, sums.count);
   return sigma * sigma;
@@ -49,6 +52,21 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
   return true;
 }
 
+bool MergeCriterion::continuous(const PlaneFit& fit_a, const PlaneFit& fit_b, const SegmentBorder& border,
+                                double& cost) const {
+  if (!fit_a.valid || !fit_b.valid || border.count < kMinBorderPairs) return false;
+  if (!(fit_a.normal.dot(fit_b.normal) >= std::cos(0.5 * angle_))) return false;
+  const Eigen::Vector3d normal = (fit_a.normal + fit_b.normal).normalized();
+  const double range = border.meanPoint().norm();
+  const double tolerance =
+      noiseDeviations(tolerances_.noise(), kDifferenceDeviations, range * range) / std::sqrt(border.count) +
+      tolerances_.planeFloor(range);
+  const double step = std::abs(normal.dot(border.meanStep()));
+  if (!(step < tolerance)) return false;
+  cost = 1.0 + step / tolerance;
+  return true;
+}
+
 void PlaneMerger::reset(std::size_t segment_count) {
   edges_.clear();
   neighbours_.resize(segment_count);
@@ -64,10 +82,14 @@ void PlaneMerger::addEdge(std::int32_t a, std::int32_t b) {
 }
 
 void PlaneMerger::consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums,
-                           const MergeCriterion& criterion) {
+                           const MergeCriterion& criterion, const SegmentBorderMap& borders) {
   double cost = 0.0;
-  if (criterion.mergeable(sums[a], fits_[a], sums[b], fits_[b], cost))
-    queue_.push({cost, std::min(a, b), std::max(a, b), versions_[std::min(a, b)], versions_[std::max(a, b)]});
+  bool merges = criterion.mergeable(sums[a], fits_[a], sums[b], fits_[b], cost);
+  if (!merges) {
+    const auto border = borders.find(borderKey(a, b));
+    merges = border != borders.end() && criterion.continuous(fits_[a], fits_[b], border->second, cost);
+  }
+  if (merges) queue_.push({cost, std::min(a, b), std::max(a, b), versions_[std::min(a, b)], versions_[std::max(a, b)]});
 }
 
 void PlaneMerger::sortEdges() {
@@ -88,7 +110,7 @@ void PlaneMerger::sortEdges() {
   edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
 }
 
-void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& criterion) {
+void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& criterion, SegmentBorderMap& borders) {
   const std::size_t n = parent_.size();
   fits_.resize(n);
   for (std::size_t i = 1; i < n; ++i) fits_[i] = sums[i].fit();
@@ -99,7 +121,7 @@ void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& crit
   for (const auto& [a, b] : edges_) {
     neighbours_[a].push_back(b);
     neighbours_[b].push_back(a);
-    consider(a, b, sums, criterion);
+    consider(a, b, sums, criterion, borders);
   }
 
   while (!queue_.empty()) {
@@ -117,11 +139,19 @@ void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& crit
     parent_[gone] = keep;
     ++merges_;
 
-    // The survivor inherits the other's neighbours; they now point at the survivor.
+    // The survivor inherits the other's neighbours and its borders with them; they now point
+    // at the survivor.
+    borders.erase(borderKey(keep, gone));
     std::vector<std::int32_t>& kept = neighbours_[keep];
     for (const std::int32_t other : neighbours_[gone]) {
       if (other == keep) continue;
       kept.push_back(other);
+      if (const auto inherited = borders.find(borderKey(gone, other)); inherited != borders.end()) {
+        const SegmentBorder moved = inherited->second;  // copied: the insertion below may rehash
+        borders.erase(inherited);
+        // gone's side of the moved border is keep's side of this one.
+        borders[borderKey(keep, other)].merge(moved, (gone < other) != (keep < other));
+      }
       std::vector<std::int32_t>& theirs = neighbours_[other];
       std::replace(theirs.begin(), theirs.end(), gone, keep);
       std::sort(theirs.begin(), theirs.end());
@@ -131,7 +161,7 @@ void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& crit
     kept.erase(std::remove(kept.begin(), kept.end(), gone), kept.end());
     std::sort(kept.begin(), kept.end());
     kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
-    for (const std::int32_t other : kept) consider(keep, other, sums, criterion);
+    for (const std::int32_t other : kept) consider(keep, other, sums, criterion, borders);
   }
 
   // Point every segment at its final root.

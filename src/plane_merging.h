@@ -8,6 +8,7 @@
 #include "tolerances.h"
 #include "floodplane/params.h"
 #include "plane_sums.h"
+#include "segment_borders.h"
 
 namespace floodplane {
 
@@ -28,6 +29,17 @@ class MergeCriterion {
   /// tightly they fit one plane (lower merges first).
   bool mergeable(const PlaneSums& a, const PlaneFit& fit_a, const PlaneSums& b, const PlaneFit& fit_b,
                  double& cost) const;
+
+  /// Whether segments a and b, which fail Eq. 9, are one real surface that bends: they meet
+  /// at `border` without a step, and their normals agree within half the angular threshold.
+  /// The step is the mean difference across the border's pixel pairs along the normal; a
+  /// bend puts none there, a board on a wall or a door in its frame its thickness. It must
+  /// lie within what the depth noise explains of a mean over the border's pairs (3 standard
+  /// errors of a difference, kDifferenceDeviations sigma / sqrt(pairs)) plus sigma_plane's
+  /// fixed part. Eq. 9's centroid test and the fit of the union refuse a bend, whose halves'
+  /// centroids leave each other's planes and whose union fits one plane loosely; a crease
+  /// shows in the normals. `cost` is above every Eq. 9 cost, so tight merges come first.
+  bool continuous(const PlaneFit& fit_a, const PlaneFit& fit_b, const SegmentBorder& border, double& cost) const;
 
  private:
   double angle_;
@@ -50,7 +62,9 @@ class PlaneMerger {
   /// Merges; afterwards root(s) gives the surviving segment of each segment.
   /// `sums` holds each segment's sums (index = segment label), and is updated: a root's
   /// sums become those of its whole cluster.
-  void merge(std::vector<PlaneSums>& sums, const MergeCriterion& criterion);
+  /// `borders` holds where segments touch (SegmentBorders); merging adds a gone segment's
+  /// borders to its survivor's.
+  void merge(std::vector<PlaneSums>& sums, const MergeCriterion& criterion, SegmentBorderMap& borders);
   std::int32_t root(std::int32_t segment) const { return parent_[segment]; }
   std::size_t mergeCount() const { return merges_; }
   /// root() of every segment, indexed by segment.
@@ -66,7 +80,8 @@ class PlaneMerger {
       return a != o.a ? a > o.a : b > o.b;  // deterministic ties
     }
   };
-  void consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums, const MergeCriterion& criterion);
+  void consider(std::int32_t a, std::int32_t b, const std::vector<PlaneSums>& sums, const MergeCriterion& criterion,
+                const SegmentBorderMap& borders);
   // Sorts edges_ by (a, b), as std::sort does, and drops repeats.
   void sortEdges();
 

@@ -12,6 +12,7 @@
 #include "relabelling.h"
 #include "region_output.h"
 #include "seed_selection.h"
+#include "segment_borders.h"
 
 namespace floodplane {
 
@@ -82,6 +83,7 @@ struct Segmenter::Workspace {
   std::vector<Segment> segments;
   std::vector<SegmentEdge> edges;
   Relabelling relabelling;
+  SegmentBorders borders;
   PlaneMerger merger;
   std::vector<PlaneSums> cluster_sums;
   RegionBuilder regions;
@@ -152,12 +154,13 @@ struct Segmenter::Workspace {
   }
 
   // Sec. III-D over the segment graph; cluster_sums[root] become each cluster's sums.
-  void merge(const MergeCriterion& criterion) {
+  void merge(const Frame& frame, const MergeCriterion& criterion) {
+    borders.collect(frame.grid, buffer.labels(), segments);
     merger.reset(segments.size());
     for (const SegmentEdge& edge : edges) merger.addEdge(edge.first, edge.second);
     cluster_sums.resize(segments.size());
     for (std::size_t i = 0; i < segments.size(); ++i) cluster_sums[i] = segments[i].sums;
-    merger.merge(cluster_sums, criterion);
+    merger.merge(cluster_sums, criterion, borders.mutableBorders());
   }
 
   // The noise model: measured on the full-resolution grid unless the parameters fix it.
@@ -220,7 +223,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   }
   {
     PhaseTimer timer(timed, result_.phases.merging);
-    ws.merge(MergeCriterion(params_, frame.tolerances));
+    ws.merge(frame, MergeCriterion(params_, frame.tolerances));
     result_.stats.merges = ws.merger.mergeCount();
   }
   {

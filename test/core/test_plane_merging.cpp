@@ -153,6 +153,12 @@ TEST(MergeCriterion, CostsMoreTheWorseThePartsFitOnePlane) {
 
 // --- PlaneMerger ----------------------------------------------------------------------------
 
+// Merges with no border known between any two segments: Eq. 9 and the fit test alone.
+void mergeWithoutBorders(PlaneMerger& merger, std::vector<PlaneSums>& sums, const MergeCriterion& criterion) {
+  SegmentBorderMap borders;
+  merger.merge(sums, criterion, borders);
+}
+
 // Segments 1..4: strips of the plane z = 2, 10 cm wide, side by side; 5 and 6: two more
 // strips of the same plane far to the right, touching each other but nothing else.
 std::vector<PlaneSums> coplanarStrips() {
@@ -172,7 +178,7 @@ TEST(PlaneMerger, MergesAChainOfCoplanarSegmentsIntoOneCluster) {
   merger.addEdge(1, 2);
   merger.addEdge(3, 2);  // either order
   merger.addEdge(3, 4);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 3u);
   const std::int32_t root = merger.root(1);
   for (std::int32_t s = 1; s <= 4; ++s) EXPECT_EQ(merger.root(s), root) << "segment " << s;
@@ -187,7 +193,7 @@ TEST(PlaneMerger, KeepsCoplanarSegmentsWithoutAnEdgeApart) {
   merger.reset(sums.size());
   merger.addEdge(1, 2);
   merger.addEdge(5, 6);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 2u);
   EXPECT_EQ(merger.root(1), merger.root(2));
   EXPECT_EQ(merger.root(5), merger.root(6));
@@ -203,7 +209,7 @@ TEST(PlaneMerger, RootDataMapsEverySegmentToItsFinalRoot) {
   merger.addEdge(1, 2);
   merger.addEdge(2, 3);
   merger.addEdge(5, 6);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   const std::int32_t* roots = merger.rootData();
   EXPECT_EQ(roots[0], 0);  // "no segment" stays itself
   for (std::int32_t s = 0; s < 7; ++s) {
@@ -222,7 +228,7 @@ TEST(PlaneMerger, KeepsTheLargerSegmentAsRoot) {
   PlaneMerger merger;
   merger.reset(3);
   merger.addEdge(1, 2);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.root(1), 2);
   EXPECT_EQ(merger.root(2), 2);
   EXPECT_DOUBLE_EQ(sums[2].count, 3.0 * 441);
@@ -235,7 +241,7 @@ TEST(PlaneMerger, KeepsTheSmallerLabelAsRootBetweenEqualSizes) {
   PlaneMerger merger;
   merger.reset(3);
   merger.addEdge(2, 1);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.root(2), 1);
 }
 
@@ -246,7 +252,7 @@ TEST(PlaneMerger, IgnoresSelfEdgesAndEdgesToNoSegment) {
   merger.addEdge(1, 1);
   merger.addEdge(0, 2);
   merger.addEdge(3, 0);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 0u);
   for (std::int32_t s = 0; s < 7; ++s) EXPECT_EQ(merger.root(s), s);
 }
@@ -258,7 +264,7 @@ TEST(PlaneMerger, DoesNotMergeNeighboursThatFailTheCriterion) {
   PlaneMerger merger;
   merger.reset(3);
   merger.addEdge(1, 2);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 0u);
   EXPECT_NE(merger.root(1), merger.root(2));
 }
@@ -294,7 +300,7 @@ TEST(PlaneMerger, MergesTheMostSimilarPairFirst) {
   merger.reset(4);
   merger.addEdge(1, 2);
   merger.addEdge(2, 3);
-  merger.merge(sums, criterion);
+  mergeWithoutBorders(merger, sums, criterion);
   EXPECT_EQ(merger.mergeCount(), 1u);
   EXPECT_EQ(merger.root(1), 1);
   EXPECT_EQ(merger.root(2), 2);
@@ -313,7 +319,7 @@ TEST(PlaneMerger, MergesTheCheaperPairFirstWhateverTheLabels) {
   merger.reset(4);
   merger.addEdge(2, 3);
   merger.addEdge(1, 2);
-  merger.merge(sums, criterion);
+  mergeWithoutBorders(merger, sums, criterion);
   EXPECT_EQ(merger.root(2), 1);
 }
 
@@ -322,15 +328,132 @@ TEST(PlaneMerger, CanBeResetAndRunAgain) {
   std::vector<PlaneSums> sums = coplanarStrips();
   merger.reset(sums.size());
   merger.addEdge(1, 2);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   ASSERT_EQ(merger.mergeCount(), 1u);
   sums = coplanarStrips();
   merger.reset(sums.size());
   merger.addEdge(3, 4);
-  merger.merge(sums, criterionFor(exactParams()));
+  mergeWithoutBorders(merger, sums, criterionFor(exactParams()));
   EXPECT_EQ(merger.mergeCount(), 1u);
   EXPECT_EQ(merger.root(2), 2) << "the edge 1-2 of the last run is forgotten";
   EXPECT_EQ(merger.root(4), merger.root(3));
+}
+
+// --- One surface that bends: the continuity test at the border ------------------------------
+
+// Tight fixed tolerances (sigma_plane 2 mm, sigma_plane-merge 3 mm, no noise): a surface that
+// bends by a few millimetres over a metre fails Eq. 9 and the fit test.
+Params tightParams() {
+  Params params;
+  params.distance_threshold = 0.002;
+  params.merge_distance = 0.003;
+  params.depth_noise_coefficient = 0.0;
+  return params;
+}
+
+// The bent surface z = z0 + kBend x^2 (plus `step` where x > 0: a board's edge), sampled
+// every centimetre over x in [x0, x1), y in [-0.2, 0.2].
+constexpr float kBend = 0.04f;  // 1 cm over the 50 cm from the middle to either end
+float bentDepth(float x, float step) { return 2.f + kBend * x * x + (x > 0.f ? step : 0.f); }
+PlaneSums bentPart(float x0, float x1, float step = 0.f) {
+  PlaneSums sums;
+  for (float x = x0; x < x1 - 1e-4f; x += 0.01f)
+    for (int j = 0; j <= 40; ++j) sums.add({x, -0.2f + 0.01f * static_cast<float>(j), bentDepth(x, step)});
+  return sums;
+}
+// The border at x = `at` between the part left of it (low label) and the one right of it:
+// the pixel pairs (at - 5 mm, at + 5 mm) along y.
+SegmentBorder bentBorder(float at, float step = 0.f) {
+  SegmentBorder border;
+  for (int j = 0; j <= 40; ++j) {
+    const float y = -0.2f + 0.01f * static_cast<float>(j);
+    border.add({at - 0.005f, y, bentDepth(at - 0.005f, step)}, {at + 0.005f, y, bentDepth(at + 0.005f, step)});
+  }
+  return border;
+}
+
+bool continuous(const MergeCriterion& criterion, const PlaneSums& a, const PlaneSums& b, const SegmentBorder& border) {
+  double cost = -1.0;
+  const bool result = criterion.continuous(a.fit(), b.fit(), border, cost);
+  if (result) {
+    EXPECT_GT(cost, 1.0) << "a continuity merge costs more than any Eq. 9 merge";
+  }
+  return result;
+}
+
+TEST(MergeCriterion, JoinsTheHalvesOfABentSurfaceThatEquationNineRefuses) {
+  const MergeCriterion criterion = criterionFor(tightParams());
+  const PlaneSums left = bentPart(-0.5f, 0.f), right = bentPart(0.f, 0.5f);
+  ASSERT_FALSE(mergeable(criterion, left, right)) << "the scene must be one Eq. 9 refuses";
+  EXPECT_TRUE(continuous(criterion, left, right, bentBorder(0.f)));
+}
+
+TEST(MergeCriterion, KeepsASurfaceApartFromOneAStepBehindIt) {
+  // The same halves, the right one 1 cm further away: a board's edge on a wall.
+  const MergeCriterion criterion = criterionFor(tightParams());
+  EXPECT_FALSE(continuous(criterion, bentPart(-0.5f, 0.f), bentPart(0.f, 0.5f, 0.01f), bentBorder(0.f, 0.01f)));
+  // 1.5 mm is within sigma_plane (2 mm): one surface.
+  EXPECT_TRUE(continuous(criterion, bentPart(-0.5f, 0.f), bentPart(0.f, 0.5f, 0.0015f), bentBorder(0.f, 0.0015f)));
+}
+
+TEST(MergeCriterion, KeepsACreaseApartWhereverItsBorderMeets) {
+  // Two planes meeting without a step at an angle of 0.06 rad, above half the angular
+  // threshold (0.05 rad): a crease, not a bend.
+  const MergeCriterion criterion = criterionFor(tightParams());
+  const PlaneSums flat = patch(-0.5f, 0.f, 2.f), tilted = patch(0.f, 0.5f, 2.f, 0.06f);
+  SegmentBorder border;
+  for (int j = 0; j <= 20; ++j) border.add({-0.005f, 0.f, 2.f}, {0.005f, 0.f, 2.f + 0.0003f});
+  EXPECT_FALSE(continuous(criterion, flat, tilted, border));
+  // At 0.04 rad the same border is a bend.
+  EXPECT_TRUE(continuous(criterion, flat, patch(0.f, 0.5f, 2.f, 0.04f), border));
+}
+
+TEST(MergeCriterion, NeedsABorderOfSeveralPixelPairs) {
+  const MergeCriterion criterion = criterionFor(tightParams());
+  SegmentBorder corner;
+  for (int j = 0; j < 7; ++j) corner.add({-0.005f, 0.f, 2.f}, {0.005f, 0.f, 2.f});
+  EXPECT_FALSE(continuous(criterion, bentPart(-0.5f, 0.f), bentPart(0.f, 0.5f), corner));
+  corner.add({-0.005f, 0.f, 2.f}, {0.005f, 0.f, 2.f});
+  EXPECT_TRUE(continuous(criterion, bentPart(-0.5f, 0.f), bentPart(0.f, 0.5f), corner));
+}
+
+TEST(PlaneMerger, JoinsABentSurfaceAcrossItsBordersAndInheritsThemOnMerging) {
+  // Three parts of the bent surface, left to right 1, 2, 3, borders 1-2 and 2-3 only. Whichever
+  // pair merges first, the survivor must inherit the other border for the third part to join.
+  const MergeCriterion criterion = criterionFor(tightParams());
+  std::vector<PlaneSums> sums = {PlaneSums(), bentPart(-0.5f, -0.15f), bentPart(-0.15f, 0.15f), bentPart(0.15f, 0.5f)};
+  const std::vector<PlaneSums> original = sums;
+  PlaneMerger merger;
+  merger.reset(4);
+  merger.addEdge(1, 2);
+  merger.addEdge(2, 3);
+  mergeWithoutBorders(merger, sums, criterion);
+  ASSERT_LT(merger.mergeCount(), 2u) << "the scene must be one Eq. 9 does not join whole";
+
+  sums = original;
+  SegmentBorderMap borders;
+  borders[borderKey(1, 2)] = bentBorder(-0.15f);
+  borders[borderKey(2, 3)] = bentBorder(0.15f);
+  merger.reset(4);
+  merger.addEdge(1, 2);
+  merger.addEdge(2, 3);
+  merger.merge(sums, criterion, borders);
+  EXPECT_EQ(merger.mergeCount(), 2u);
+  EXPECT_EQ(merger.root(1), merger.root(3));
+  EXPECT_EQ(merger.root(2), merger.root(3));
+  EXPECT_TRUE(borders.empty()) << "the borders inside the merged surface are gone";
+}
+
+TEST(PlaneMerger, KeepsABoardOnABentWallApartThroughItsBorder) {
+  const MergeCriterion criterion = criterionFor(tightParams());
+  std::vector<PlaneSums> sums = {PlaneSums(), bentPart(-0.5f, 0.f), bentPart(0.f, 0.5f, -0.02f)};
+  SegmentBorderMap borders;
+  borders[borderKey(1, 2)] = bentBorder(0.f, -0.02f);
+  PlaneMerger merger;
+  merger.reset(3);
+  merger.addEdge(1, 2);
+  merger.merge(sums, criterion, borders);
+  EXPECT_EQ(merger.mergeCount(), 0u);
 }
 
 }  // namespace
