@@ -142,6 +142,15 @@ bool anyLabelDiffers(const Label* labels, Label value) {
   return _mm_movemask_epi8(_mm_cmpeq_epi32(block, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0xffff;
 }
 
+/// Whether each of the four labels from `row` on equals its right neighbour (row[1 .. 4]) and
+/// the label below it (`below`, the same columns of the next row): none starts a border.
+inline bool sameAsRightAndBelow(const std::int32_t* row, const std::int32_t* below) {
+  const auto load = [](const std::int32_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+  const __m128i here = load(row);
+  const __m128i same = _mm_and_si128(_mm_cmpeq_epi32(here, load(row + 1)), _mm_cmpeq_epi32(here, load(below)));
+  return _mm_movemask_epi8(same) == 0xffff;
+}
+
 /// Which of the four labels from `row` on are 0 with a label other than 0 among their four
 /// neighbours: row[-1 .. 4], `above` and `below` (the same columns of the rows around; pass
 /// `row` itself for a row that is not there). Bit j for label j.
