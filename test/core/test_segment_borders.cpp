@@ -38,8 +38,7 @@ struct Frame {
     for (std::size_t i = 0; i < labels.size(); ++i)
       if (labels[i] != 0) segments[static_cast<std::size_t>(labels[i])].sums.add(grid.point(i));
     for (std::size_t s = 1; s < segments.size(); ++s)
-      segments[s].criterion =
-          planeCriterion(segments[s].sums.fit(), tolerances, static_cast<float>(1.0 / kFocal));
+      segments[s].criterion = planeCriterion(segments[s].sums.fit(), tolerances, static_cast<float>(1.0 / kFocal));
   }
   const SegmentBorderMap& collect() {
     borders.collect(grid.grid(), labels, segments);
