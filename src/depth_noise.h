@@ -51,6 +51,24 @@ inline bool negligibleAgainstPixels(const NoiseModel& noise, double angular_pitc
                                     depthSigma(noise, kFar * kFar) <= kShare * kFar * angular_pitch);
 }
 
+/// Whether the measured noise is the rounding of a depth lattice and nothing more: exact depths
+/// stored in steps q(r) (a simulator's depth image in millimetres), whose error is uniform over
+/// a step, q(r) / sqrt(12), at most kRoundingShare times that over the ranges of rooms. Such a
+/// frame is exact geometry on a staircase: the smoothing, which averages Gaussian noise away,
+/// cannot average away treads wider than its kernel (an oblique plane), and the noise
+/// measured after it sees the flat treads, not the risers. A sensor's own noise dithers its
+/// lattice (a Kinect's spread is half a disparity step or more before rounding: 0.5-0.7 steps
+/// measured, a scanner's 0.8) and keeps the smoothing.
+inline bool roundingOnly(const NoiseModel& noise) {
+  constexpr double kRoundingShare = 1.5;
+  constexpr double kUniformDeviation = 0.28867513459481287;  // 1 / sqrt(12)
+  for (const double range : {0.5, 2.0, 8.0}) {
+    const double step = noise.step(range);
+    if (!(step > 0.0) || depthSigma(noise, range * range) > kRoundingShare * kUniformDeviation * step) return false;
+  }
+  return true;
+}
+
 /// The squared range at which to take the depth noise when pixel q is tested from its
 /// neighbour p: the nearer of the two. On one surface the two ranges are nearly equal, so
 /// this changes nothing there; but an outlier far along its ray (a multipath return 100 km

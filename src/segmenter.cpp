@@ -99,10 +99,11 @@ struct Segmenter::Workspace {
     const PointGrid& filled = holes.fill(full, Tolerances(params, noise, frame.full_pitch, full.size()));
     // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
     // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
-    // Kinect). A noise model the user gives describes the raw data: no smoothing then.
+    // Kinect). A noise model the user gives describes the raw data: no smoothing then; nor on
+    // exact depths rounded to a lattice (roundingOnly).
     NoiseModel segment_noise = noise;
     frame.source = &filled;
-    if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch)) {
+    if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch) && !roundingOnly(noise)) {
       frame.source = &smoothing.smooth(filled, noise);
       segment_noise = noise_estimator.estimate(*frame.source);
     }

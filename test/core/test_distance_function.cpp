@@ -126,6 +126,27 @@ TEST(DepthNoise, IsNegligibleAgainstPixelsBelowATenthOfTheirFootprint) {
   EXPECT_FALSE(negligibleAgainstPixels(quadraticNoise(0.001), 1.0 / 1600.0));   // a scanner
 }
 
+// Exact depths rounded to millimetres (the noise estimator measures 0.35 mm on a 1 mm lattice
+// where the rounding alone gives 0.29 mm) are rounding only; a Kinect's noise (0.5-0.7 of its
+// disparity step), a scanner's (0.8 of its 1.3 mm step at 1 m) and noise without a lattice
+// are not.
+TEST(DepthNoise, IsRoundingOnlyWhereTheLatticeExplainsAllOfIt) {
+  NoiseModel millimetres;
+  millimetres.sigma_constant = 3.5e-4;
+  millimetres.step_constant = 1e-3;
+  EXPECT_TRUE(roundingOnly(millimetres));
+  millimetres.sigma_constant = 5e-4;  // more than the rounding explains: real noise on top
+  EXPECT_FALSE(roundingOnly(millimetres));
+  NoiseModel kinect = quadraticNoise(0.0015);
+  kinect.step_quadratic = 0.0022;
+  EXPECT_FALSE(roundingOnly(kinect));
+  NoiseModel scanner = quadraticNoise(0.001);
+  scanner.step_quadratic = 0.0013;
+  EXPECT_FALSE(roundingOnly(scanner));
+  EXPECT_FALSE(roundingOnly(quadraticNoise(0.0015)));  // no lattice
+  EXPECT_FALSE(roundingOnly(NoiseModel()));            // exact: negligibleNoise's case
+}
+
 // --- FloodCriterion ------------------------------------------------------------------------
 
 // The plane z = 2 facing the camera, sigma_plane = 1 cm, neighbouring pixels 1 cm apart at the
