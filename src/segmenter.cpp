@@ -68,6 +68,15 @@ struct Frame {
   const PointGrid* source = nullptr;  // the full-resolution grid segmented: filled and smoothed
 };
 
+// What the floods leave, relabelled: a segment per pixel of the segmented grid (0 none), each
+// segment's sums and plane, and the pairs of segments that touch. Views of the workspace's
+// buffers.
+struct SegmentImage {
+  std::vector<std::int32_t>& labels;
+  std::vector<Segment>& segments;
+  std::vector<SegmentEdge>& edges;
+};
+
 }  // namespace
 
 struct Segmenter::Workspace {
@@ -124,7 +133,7 @@ struct Segmenter::Workspace {
   // Seed selection (Sec. III-C) interleaved with flooding (Sec. III-A, III-B), in scan order:
   // every candidate still unclaimed when the scan reaches it is tested, and a seed floods at
   // once.
-  void seedAndFlood(const Frame& frame, const Params& params, bool timed, Segmentation& result) {
+  SegmentImage seedAndFlood(const Frame& frame, const Params& params, bool timed, Segmentation& result) {
     const Clock::time_point scan_start = timed ? Clock::now() : Clock::time_point();
     double flooding = 0.0;
     const PointGrid& grid = frame.grid;
@@ -152,16 +161,29 @@ struct Segmenter::Workspace {
       result.phases.flood_fill += flooding;
       result.phases.seed_selection += millisecondsSince(scan_start) - flooding;
     }
+    return {buffer.labels(), segments, edges};
   }
 
-  // Sec. III-D over the segment graph; cluster_sums[root] become each cluster's sums.
-  void merge(const Frame& frame, const MergeCriterion& criterion) {
-    borders.collect(frame.grid, buffer.labels(), segments);
-    merger.reset(segments.size());
-    for (const SegmentEdge& edge : edges) merger.addEdge(edge.first, edge.second);
-    cluster_sums.resize(segments.size());
-    for (std::size_t i = 0; i < segments.size(); ++i) cluster_sums[i] = segments[i].sums;
+  // Sec. III-B, after the floods: segments that takeovers cut apart become one per piece.
+  void relabel(const Frame& frame, int subsampling, SegmentImage& image) {
+    relabelling.run(frame.grid, subsampling, image.labels, image.segments, image.edges);
+  }
+
+  // Sec. III-D over the segment graph, and across the borders where a bent surface was cut:
+  // the clusters of segments, each with its whole sums.
+  MergedSegments merge(const Frame& frame, const MergeCriterion& criterion, const SegmentImage& image) {
+    borders.collect(frame.grid, image.labels, image.segments);
+    merger.reset(image.segments.size());
+    for (const SegmentEdge& edge : image.edges) merger.addEdge(edge.first, edge.second);
+    cluster_sums.resize(image.segments.size());
+    for (std::size_t i = 0; i < image.segments.size(); ++i) cluster_sums[i] = image.segments[i].sums;
     merger.merge(cluster_sums, criterion, borders.mutableBorders());
+    MergedSegments clusters;
+    clusters.labels = image.labels.data();
+    clusters.root = merger.rootData();
+    clusters.sums = cluster_sums.data();
+    clusters.segment_count = image.segments.size();
+    return clusters;
   }
 
   // The noise model: measured on the full-resolution grid unless the parameters fix it.
@@ -211,31 +233,29 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   result_.phases = PhaseTimes();
   result_.stats = SegmentationStats();
   const bool timed = options.measure_phases;
+  // The pipeline: prepared frame -> segment image (seeds and floods, relabelled) -> clusters
+  // (merged) -> planes (labels at full resolution, refined, checked).
   Frame frame;
   {
     PhaseTimer timer(timed, result_.phases.preparation);
     frame = ws.prepare(full, params_, result_.noise);
   }
-  ws.seedAndFlood(frame, params_, timed, result_);
+  SegmentImage image = ws.seedAndFlood(frame, params_, timed, result_);
   {
     PhaseTimer timer(timed, result_.phases.relabelling);
-    ws.relabelling.run(frame.grid, params_.subsampling, ws.buffer.labels(), ws.segments, ws.edges);
-    result_.stats.segments = ws.segments.size() - 1;
+    ws.relabel(frame, params_.subsampling, image);
+    result_.stats.segments = image.segments.size() - 1;
   }
+  MergedSegments clusters;
   {
     PhaseTimer timer(timed, result_.phases.merging);
-    ws.merge(frame, MergeCriterion(params_, frame.tolerances));
+    clusters = ws.merge(frame, MergeCriterion(params_, frame.tolerances), image);
     result_.stats.merges = ws.merger.mergeCount();
   }
   {
     PhaseTimer timer(timed, result_.phases.region_output);
-    MergedSegments merged;
-    merged.labels = ws.buffer.labels().data();
-    merged.root = ws.merger.rootData();
-    merged.sums = ws.cluster_sums.data();
-    merged.segment_count = ws.segments.size();
-    ws.regions.build(full, *frame.source, frame.grid, ws.holes, params_.subsampling, merged, params_, frame.tolerances,
-                     frame.full_pitch, options.refine, result_);
+    ws.regions.build(full, *frame.source, frame.grid, ws.holes, params_.subsampling, clusters, params_,
+                     frame.tolerances, frame.full_pitch, options.refine, result_);
   }
   return result_;
 }
