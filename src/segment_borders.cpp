@@ -1,5 +1,7 @@
 #include "segment_borders.h"
 
+#include <array>
+
 #include "distance_function.h"
 #include "simd.h"
 
@@ -10,22 +12,26 @@ void SegmentBorders::collect(const PointGrid& grid, const std::vector<std::int32
   borders_.clear();
   const std::size_t width = static_cast<std::size_t>(grid.width);
   const std::size_t height = static_cast<std::size_t>(grid.height);
-  // Along a border the pair repeats pixel after pixel: one lookup per change of pair.
-  std::uint64_t last_key = 0;
-  SegmentBorder* last = nullptr;
+  // A pair recurs pixel after pixel along its border, and a few pairs alternate where
+  // borders cross a row: a small direct-mapped cache of the map's entries (which stay where
+  // they are as the map grows) saves most lookups.
+  constexpr std::size_t kCacheSlots = 64;
+  struct Slot {
+    std::uint64_t key = 0;  // 0: empty (label 0 is never part of a pair)
+    SegmentBorder* border = nullptr;
+  };
+  std::array<Slot, kCacheSlots> cache{};
   const auto touch = [&](std::int32_t a, std::size_t i, std::int32_t b, std::size_t j) {
     const Vec3 p = Vec3::load(grid.point(i));
     const Vec3 q = Vec3::load(grid.point(j));
     if (!(squaredEuclideanDistance(p, q) < segments[a].criterion.euclideanToleranceSq(noiseRangeSq(p, q)))) return;
     const std::uint64_t key = borderKey(a, b);
-    if (last == nullptr || key != last_key) {
-      last = &borders_[key];
-      last_key = key;
-    }
+    Slot& slot = cache[(static_cast<std::size_t>(a) * 31u + static_cast<std::size_t>(b)) % kCacheSlots];
+    if (slot.key != key) slot = {key, &borders_[key]};
     if (a < b)
-      last->add(p, q);
+      slot.border->add(p, q);
     else
-      last->add(q, p);
+      slot.border->add(q, p);
   };
   const auto pixel = [&](std::size_t i, bool has_right, bool has_below) {
     const std::int32_t a = labels[i];
@@ -39,18 +45,26 @@ void SegmentBorders::collect(const PointGrid& grid, const std::vector<std::int32
   for (std::size_t y = 0; y < height; ++y) {
     const std::size_t row = y * width;
     const bool has_below = y + 1 < height;
-    // The points of the row after next, requested now: borders are everywhere in a noisy
-    // frame (some 40,000 pixel pairs on a real Kinect frame), and loading their points on
-    // demand waits on memory at every one; the whole frame in order costs a tenth of that.
-    if (y + 2 < height) prefetchRange(grid.point(row + 2 * width), grid.point(row + 3 * width - 1) + 3);
     std::size_t x = 0;
 #if FLOODPLANE_SIMD
-    // Four pixels at a time where none starts a border (the right neighbour of the fourth
-    // must lie in this row).
+    // Four pixels at a time: the lanes where a border starts to the right or below, then only
+    // those (the right neighbour of the fourth must lie in this row).
     if (has_below) {
+      const std::int32_t* row_labels = labels.data() + row;
+      // The points two rows ahead are requested as the scan passes above them: a noisy frame
+      // has borders everywhere (some 40,000 pixel pairs on a real Kinect frame).
+      const bool ahead = y + 2 < height;
       for (; x + 4 < width; x += 4) {
-        if (sameAsRightAndBelow(labels.data() + row + x, labels.data() + row + x + width)) continue;
-        for (std::size_t k = 0; k < 4; ++k) pixel(row + x + k, true, true);
+        if (ahead) prefetchRange(grid.point(row + 2 * width + x), grid.point(row + 2 * width + x + 3) + 3);
+        const int right = segmentBorderLanes(row_labels + x, row_labels + x + 1);
+        const int below = segmentBorderLanes(row_labels + x, row_labels + x + width);
+        // Pixel by pixel, right before below, as the scalar loop: the sums come out the same.
+        for (int lanes = right | below; lanes != 0; lanes &= lanes - 1) {
+          const int k = __builtin_ctz(static_cast<unsigned>(lanes));
+          const std::size_t i = row + x + static_cast<std::size_t>(k);
+          if (right & (1 << k)) touch(labels[i], i, labels[i + 1], i + 1);
+          if (below & (1 << k)) touch(labels[i], i, labels[i + width], i + width);
+        }
       }
     }
 #endif

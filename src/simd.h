@@ -142,13 +142,16 @@ bool anyLabelDiffers(const Label* labels, Label value) {
   return _mm_movemask_epi8(_mm_cmpeq_epi32(block, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0xffff;
 }
 
-/// Whether each of the four labels from `row` on equals its right neighbour (row[1 .. 4]) and
-/// the label below it (`below`, the same columns of the next row): none starts a border.
-inline bool sameAsRightAndBelow(const std::int32_t* row, const std::int32_t* below) {
+/// Which of the four labels from `labels` on differ from the four from `other` on, neither of
+/// the two being 0: bit j for label j. With `other` the next label (labels + 1) or the one
+/// below (labels + width), the pixels where a border between two segments starts.
+inline int segmentBorderLanes(const std::int32_t* labels, const std::int32_t* other) {
   const auto load = [](const std::int32_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
-  const __m128i here = load(row);
-  const __m128i same = _mm_and_si128(_mm_cmpeq_epi32(here, load(row + 1)), _mm_cmpeq_epi32(here, load(below)));
-  return _mm_movemask_epi8(same) == 0xffff;
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i a = load(labels), b = load(other);
+  const __m128i unlabelled = _mm_or_si128(_mm_cmpeq_epi32(a, zero), _mm_cmpeq_epi32(b, zero));
+  const __m128i same_or_unlabelled = _mm_or_si128(_mm_cmpeq_epi32(a, b), unlabelled);
+  return ~_mm_movemask_ps(_mm_castsi128_ps(same_or_unlabelled)) & 0xf;
 }
 
 /// Which of the four labels from `row` on are 0 with a label other than 0 among their four
