@@ -1,6 +1,6 @@
 #pragma once
 // Sec. III-B: the distance function of the flood (Eqs. 1-3), as one test that every stage
-// which lets a pixel join a plane calls (the flood, the segment borders,
+// which lets a pixel join a plane calls (the flood, the relabelling's neighbour edges,
 // sub-sampled labelling, the refinement).
 
 #include <cmath>

@@ -19,8 +19,9 @@ constexpr int kBlock = 4;
 class FloodVisitor {
  public:
   FloodVisitor(const PointGrid& grid, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
-               std::vector<std::pair<std::size_t, std::size_t>>& frontier, std::size_t first_refit,
-               double seed_uncertainty, double angular_threshold)
+               std::vector<std::pair<std::size_t, std::size_t>>& frontier, std::vector<std::int32_t>& neighbour_mark,
+               std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty,
+               double angular_threshold)
       : grid_(grid),
         blocks_(fourPixelsAtATime(grid)),
         label_(label),
@@ -29,6 +30,8 @@ class FloodVisitor {
         distances_(buffer.distances().data()),
         segments_(segments),
         frontier_(frontier),
+        neighbour_mark_(neighbour_mark),
+        edges_(edges),
         self_(segments[label]),
         criterion_(segments[label].criterion),
         next_refit_(static_cast<double>(first_refit)),
@@ -48,11 +51,13 @@ class FloodVisitor {
     if (!(squaredEuclideanDistance(p, q) < c.euclideanToleranceSq(range_sq))) return false;
     float distance = 0.f;                       // along q's ray
     if (!c.fitsPlane(q, range_sq, distance)) {  // Eq. 2
+      if (owner != 0) noteNeighbour(owner);
       frontier_.emplace_back(from, to);
       return false;
     }
     if (owner != 0) {
       if (!buffer_.fitsBetter(to, distance, takeoverMargin(owner, c.planeTolerance(range_sq)))) {  // Eq. 4
+        noteNeighbour(owner);
         return false;
       }
       Segment& loser = segments_[owner];
@@ -215,6 +220,12 @@ class FloodVisitor {
 
 #endif
 
+  void noteNeighbour(std::int32_t owner) {
+    if (neighbour_mark_[owner] == label_) return;
+    neighbour_mark_[owner] = label_;
+    edges_.emplace_back(label_, owner);
+  }
+
   const PointGrid& grid_;
   const bool blocks_;  // fourPixelsAtATime(grid_)
   const std::int32_t label_;
@@ -223,6 +234,8 @@ class FloodVisitor {
   const float* distances_;      // buffer_'s
   std::vector<Segment>& segments_;
   std::vector<std::pair<std::size_t, std::size_t>>& frontier_;
+  std::vector<std::int32_t>& neighbour_mark_;
+  std::vector<SegmentEdge>& edges_;
   Segment& self_;             // segments_[label_]; the vector does not grow during a flood
   FloodCriterion criterion_;  // self_.criterion, read on every join; refit() keeps both in step
   double next_refit_;
@@ -234,7 +247,10 @@ class FloodVisitor {
 }  // namespace
 
 std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                             const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments) {
+                             const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
+                             std::vector<SegmentEdge>& edges) {
+  if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
+
   Segment& segment = segments[label];
   // Eq. 8's spacing at the seed, as metres per r^2 (see FloodCriterion).
   const double spacing_per_range_sq =
@@ -255,7 +271,7 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
 
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
-  FloodVisitor visitor(grid, label, buffer, segments, frontier_, first_refit,
+  FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
                        std::max(static_cast<double>(seed.normal_uncertainty), 1e-4), params.angular_threshold);
   spanFloodFill(width, grid.height, seed_x, seed_y, visitor, shadows_);
 

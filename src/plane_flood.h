@@ -23,10 +23,13 @@ struct Segment {
   bool lost_pixels = false;  ///< a later flood took pixels from it: it may be split
 };
 
+/// A pair of segments that touch: pixel neighbours whose points are 3-D neighbours.
+using SegmentEdge = std::pair<std::int32_t, std::int32_t>;
+
 /// Grows one segment from a seed (Sec. III-A, III-B): the span flood fill with the distance
-/// function of Eqs. 1-3 and the distance buffer of Eq. 4. The paper's flood also records the
-/// neighbour graph of Sec. III-D where it stops at another segment; here the graph comes from
-/// the segment image after the floods (SegmentBorders), where takeovers have settled.
+/// function of Eqs. 1-3 and the distance buffer of Eq. 4, collecting the neighbour graph on
+/// the way (Sec. III-D: a flood that stops at a pixel of another segment whose point is a
+/// Euclidean neighbour records the pair).
 ///
 /// Beyond the paper, the flood's plane is refit to the pixels it has collected (least
 /// squares from running sums) when their count doubles, starting at rho^2 pixels, i.e. once
@@ -39,15 +42,21 @@ class PlaneFlood {
  public:
   static constexpr int kFrontierRounds = 4;
 
+  /// Forgets the neighbour marks of the previous frame.
+  void beginFrame() { neighbour_mark_.clear(); }
+
   /// Floods segment `label` (already present in `segments`) from `seed`.
-  /// Returns the pixels it took from other segments under Eq. 4.
+  /// Appends the segment's neighbour pairs to `edges`; returns the pixels it took from other
+  /// segments under Eq. 4.
   std::size_t grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                   const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments);
+                   const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
+                   std::vector<SegmentEdge>& edges);
 
  private:
   std::vector<Shadow> shadows_;
   std::vector<std::pair<std::size_t, std::size_t>> frontier_;  // (from, to) rejected by Eq. 2
   std::vector<std::pair<std::size_t, std::size_t>> retest_;
+  std::vector<std::int32_t> neighbour_mark_;  // per segment: the last flood that recorded it
 };
 
 }  // namespace floodplane

@@ -7,7 +7,7 @@
 namespace floodplane {
 
 void Relabelling::run(const PointGrid& grid, int subsampling, std::vector<std::int32_t>& labels,
-                      std::vector<Segment>& segments) {
+                      std::vector<Segment>& segments, std::vector<SegmentEdge>& edges) {
   // Crumbs below 16 full-resolution pixels' worth of samples are released (see
   // ComponentSplitter); at least one sample, so nothing is released at s >= 4.
   const std::size_t smallest_piece = static_cast<std::size_t>(std::max(1, 16 / (subsampling * subsampling)));
@@ -39,7 +39,37 @@ void Relabelling::run(const PointGrid& grid, int subsampling, std::vector<std::i
                    static_cast<std::size_t>(run.x_end - run.x_begin + 1));
       segments[s].sums.subtract(moved);
       if (run.set == 0) continue;  // released
-      segments[run.set].sums.merge(moved);
+      Segment& piece = segments[run.set];
+      piece.sums.merge(moved);
+      addPieceEdges(grid, labels, piece.criterion, run, edges);
+    }
+  }
+}
+
+void Relabelling::addPieceEdges(const PointGrid& grid, const std::vector<std::int32_t>& labels,
+                                const FloodCriterion& criterion, const ComponentSplitter::Run& run,
+                                std::vector<SegmentEdge>& edges) const {
+  std::int32_t last_other = 0;
+  const auto consider = [&](std::size_t i, std::size_t j) {
+    const std::int32_t other = labels[j];
+    // Along a run the neighbour is mostly the same segment pixel after pixel: one edge.
+    if (other == 0 || other == run.set || other == last_other) return;
+    const Vec3 p = Vec3::load(grid.point(i));
+    if (squaredEuclideanDistance(p, Vec3::load(grid.point(j))) < criterion.euclideanToleranceSq(p.squaredNorm())) {
+      edges.emplace_back(run.set, other);
+      last_other = other;
+    }
+  };
+  const std::size_t row = static_cast<std::size_t>(run.y) * static_cast<std::size_t>(grid.width);
+  // Inside the run the left and right neighbours are the run itself: only its ends count.
+  if (run.x_begin > 0) consider(row + run.x_begin, row + run.x_begin - 1);
+  if (run.x_end + 1 < grid.width) consider(row + run.x_end, row + run.x_end + 1);
+  for (const int dy : {-1, 1}) {
+    if (run.y + dy < 0 || run.y + dy >= grid.height) continue;
+    const std::ptrdiff_t offset = dy * static_cast<std::ptrdiff_t>(grid.width);
+    for (int x = run.x_begin; x <= run.x_end; ++x) {
+      const std::size_t i = row + static_cast<std::size_t>(x);
+      consider(i, static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + offset));
     }
   }
 }

@@ -59,10 +59,6 @@ inline std::uint64_t borderKey(std::int32_t a, std::int32_t b) {
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
-/// The smaller and the larger label of a key.
-inline std::int32_t borderLow(std::uint64_t key) { return static_cast<std::int32_t>(key >> 32); }
-inline std::int32_t borderHigh(std::uint64_t key) { return static_cast<std::int32_t>(key & 0xffffffffu); }
-
 using SegmentBorderMap = std::unordered_map<std::uint64_t, SegmentBorder>;
 
 /// The borders between segments after the floods and the relabelling, in one pass over the

@@ -68,11 +68,13 @@ struct Frame {
   const PointGrid* source = nullptr;  // the full-resolution grid segmented: filled and smoothed
 };
 
-// What the floods leave, relabelled: a segment per pixel of the segmented grid (0 none), and
-// each segment's sums and plane. Views of the workspace's buffers.
+// What the floods leave, relabelled: a segment per pixel of the segmented grid (0 none), each
+// segment's sums and plane, and the pairs of segments that touch. Views of the workspace's
+// buffers.
 struct SegmentImage {
   std::vector<std::int32_t>& labels;
   std::vector<Segment>& segments;
+  std::vector<SegmentEdge>& edges;
 };
 
 }  // namespace
@@ -88,6 +90,7 @@ struct Segmenter::Workspace {
   SeedSelector fine_selector;  // the second pass's smaller seed cube
   PlaneFlood flood;
   std::vector<Segment> segments;
+  std::vector<SegmentEdge> edges;
   Relabelling relabelling;
   SegmentBorders borders;
   PlaneMerger merger;
@@ -122,6 +125,8 @@ struct Segmenter::Workspace {
         frame.pitch, frame.grid.width, frame.grid.height);
     buffer.reset(frame.grid.size());
     segments.assign(1, Segment());  // label 0: no segment
+    edges.clear();
+    flood.beginFrame();
     return frame;
   }
 
@@ -147,7 +152,8 @@ struct Segmenter::Workspace {
           const std::int32_t label = static_cast<std::int32_t>(segments.size());
           segments.emplace_back();
           PhaseTimer timer(timed, flooding);
-          result.stats.pixels_taken_over += flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments);
+          result.stats.pixels_taken_over +=
+              flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
         }
       }
     }
@@ -155,21 +161,20 @@ struct Segmenter::Workspace {
       result.phases.flood_fill += flooding;
       result.phases.seed_selection += millisecondsSince(scan_start) - flooding;
     }
-    return {buffer.labels(), segments};
+    return {buffer.labels(), segments, edges};
   }
 
   // Sec. III-B, after the floods: segments that takeovers cut apart become one per piece.
   void relabel(const Frame& frame, int subsampling, SegmentImage& image) {
-    relabelling.run(frame.grid, subsampling, image.labels, image.segments);
+    relabelling.run(frame.grid, subsampling, image.labels, image.segments, image.edges);
   }
 
-  // Sec. III-D over the segment graph, the pairs of segments whose pixels touch as 3-D
-  // neighbours (SegmentBorders), also across the borders where a bent surface was cut: the
-  // clusters of segments, each with its whole sums.
+  // Sec. III-D over the segment graph, and across the borders where a bent surface was cut:
+  // the clusters of segments, each with its whole sums.
   MergedSegments merge(const Frame& frame, const MergeCriterion& criterion, const SegmentImage& image) {
     borders.collect(frame.grid, image.labels, image.segments);
     merger.reset(image.segments.size());
-    for (const auto& [key, border] : borders.borders()) merger.addEdge(borderLow(key), borderHigh(key));
+    for (const SegmentEdge& edge : image.edges) merger.addEdge(edge.first, edge.second);
     cluster_sums.resize(image.segments.size());
     for (std::size_t i = 0; i < image.segments.size(); ++i) cluster_sums[i] = image.segments[i].sums;
     merger.merge(cluster_sums, criterion, borders.mutableBorders());

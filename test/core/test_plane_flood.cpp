@@ -23,10 +23,11 @@ constexpr double kFocal = test::kPinholeFocal;
 
 using Grid = test::PinholeGrid;
 
-// One flood's world: buffer and segments (0 is "none").
+// One flood's world: buffer, segments (0 is "none"), edges.
 struct Flood {
   DistanceBuffer buffer;
   std::vector<Segment> segments;
+  std::vector<SegmentEdge> edges;
   PlaneFlood flood;
   Params params;
   NoiseModel noise;  // none: the paper's fixed thresholds
@@ -35,6 +36,7 @@ struct Flood {
     params.distance_threshold = 0.01;  // the paper's sigma_plane
     buffer.reset(static_cast<std::size_t>(g.width * g.height));
     segments.assign(1, Segment());
+    flood.beginFrame();
   }
   // A seed at (u, v) with the given normal and Eq. 8's spacing (metres between neighbouring
   // pixels at the seed).
@@ -52,7 +54,7 @@ struct Flood {
     const std::int32_t label = static_cast<std::int32_t>(segments.size());
     segments.emplace_back();
     const Tolerances tolerances(params, noise, 1.0 / kFocal, static_cast<std::size_t>(g.width * g.height));
-    return flood.grow(g.grid(), seed, label, params, tolerances, buffer, segments);
+    return flood.grow(g.grid(), seed, label, params, tolerances, buffer, segments, edges);
   }
   std::size_t count(std::int32_t label) const {
     std::size_t n = 0;
@@ -72,6 +74,7 @@ TEST(PlaneFlood, ClaimsEveryPixelOfAPlaneAndSumsThem) {
   EXPECT_EQ(f.count(1), 40u * 30u);
   EXPECT_DOUBLE_EQ(f.segments[1].sums.count, 1200.0);
   EXPECT_NEAR(f.segments[1].sums.centroid().z(), 2.0, 1e-6);
+  EXPECT_TRUE(f.edges.empty());
 }
 
 TEST(PlaneFlood, Equation2StopsItWherePointsLeaveThePlane) {
@@ -151,11 +154,25 @@ TEST(PlaneFlood, Equation4KeepsPixelsOfAnEstimateOfTheSamePlaneWithinTheMargin) 
   EXPECT_EQ(close.grow(g, close.seedAt(g, 5, 15, kFacing, kSpacingAt2m)), 0u);
   EXPECT_EQ(close.count(2), 600u);
   EXPECT_FALSE(close.segments[1].lost_pixels);
+  // It stopped at the owner: the two touch.
+  ASSERT_EQ(close.edges.size(), 1u);
+  EXPECT_EQ(close.edges[0], SegmentEdge(2, 1));
 
   Flood worse(g);
   claimRightHalf(worse, g, 0.004f, kFacing);  // 0 + 2.5 mm < 4 mm: taken
   EXPECT_EQ(worse.grow(g, worse.seedAt(g, 5, 15, kFacing, kSpacingAt2m)), 600u);
   EXPECT_EQ(worse.count(2), 1200u);
+}
+
+TEST(PlaneFlood, RecordsTheSegmentItStopsAtOnlyOnce) {
+  // The right half belongs to a plane 3 cm behind; the flood stops along the whole border.
+  const Grid g(40, 30, [](int u, int) { return u < 20 ? 2.0 : 2.03; });
+  Flood f(g);
+  claimRightHalf(f, g, 0.0f, kFacing);
+  f.grow(g, f.seedAt(g, 5, 15, kFacing, kSpacingAt2m));
+  EXPECT_EQ(f.count(2), 600u);
+  ASSERT_EQ(f.edges.size(), 1u);
+  EXPECT_EQ(f.edges[0], SegmentEdge(2, 1));
 }
 
 // A plane z = 2 + 0.2 x (tilted about the vertical axis), seen from a seed whose normal is

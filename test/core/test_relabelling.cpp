@@ -1,7 +1,7 @@
 // Sec. III-B, after the floods: the relabelling of segments that Eq. 4 takeovers cut apart.
 // Hand-made label images (string art) over a pinhole grid: a segment cut in two becomes two
 // segments with the sums of their own pixels, one still connected stays whole, crumbs are
-// released, and the relabelled image shows which pieces touch (SegmentBorders, Eq. 3).
+// released, and new pieces get the neighbour edges they have in the image (Eq. 3).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +13,6 @@
 
 #include "plane_candidates.h"
 #include "relabelling.h"
-#include "segment_borders.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {
@@ -38,6 +37,7 @@ struct Frame {
   Grid grid;
   std::vector<std::int32_t> labels;
   std::vector<Segment> segments;
+  std::vector<SegmentEdge> edges;
   Tolerances tolerances;
 
   Frame(
@@ -58,7 +58,7 @@ struct Frame {
     for (const std::int32_t s : lost) segments[s].lost_pixels = true;
   }
 
-  void relabel(int subsampling = 1) { Relabelling().run(grid.grid(), subsampling, labels, segments); }
+  void relabel(int subsampling = 1) { Relabelling().run(grid.grid(), subsampling, labels, segments, edges); }
 
   // The sums of the pixels labelled `label` now, from the points.
   PlaneSums sumsOf(std::int32_t label) const {
@@ -79,13 +79,11 @@ struct Frame {
     }
     return rows;
   }
-  // The pairs of segments whose pixels touch as 3-D neighbours in the image as it is now.
-  SegmentBorderMap borders() const {
-    SegmentBorders collected;
-    collected.collect(grid.grid(), labels, segments);
-    return collected.borders();
+  bool hasEdge(std::int32_t a, std::int32_t b) const {
+    return std::any_of(edges.begin(), edges.end(), [&](const SegmentEdge& e) {
+      return (e.first == a && e.second == b) || (e.first == b && e.second == a);
+    });
   }
-  bool touch(std::int32_t a, std::int32_t b) const { return borders().count(borderKey(a, b)) != 0; }
 };
 
 void expectSameSums(const PlaneSums& actual, const PlaneSums& expected) {
@@ -132,21 +130,26 @@ TEST(Relabelling, GivesTheNewPieceTheCriterionOfTheSegmentItCameFrom) {
   EXPECT_FALSE(piece.lost_pixels);
 }
 
-TEST(Relabelling, LeavesANewPieceTouchingWhatItTouchesInTheImage) {
+TEST(Relabelling, GivesTheNewPieceAnEdgeToTheSegmentItTouches) {
   Frame f(kCutInTwo, {1});
+  f.edges.emplace_back(1, 2);  // the flood of 2 recorded its edge to 1
   f.relabel();
-  EXPECT_TRUE(f.touch(3, 2));
-  EXPECT_TRUE(f.touch(1, 2));
-  EXPECT_FALSE(f.touch(3, 1));  // the two pieces do not touch
+  EXPECT_TRUE(f.hasEdge(3, 2));
+  EXPECT_FALSE(f.hasEdge(3, 1));  // the two pieces do not touch
+  // Edges are only added: the one the flood recorded stays.
+  EXPECT_EQ(f.edges.front(), SegmentEdge(1, 2));
+  // Along a run the neighbour is one segment: one edge per run, not one per pixel.
+  EXPECT_LE(f.edges.size(), 1u + 5u);
 }
 
-TEST(Relabelling, LeavesNoTouchWhereTheNeighbourIsNoThreeDimensionalNeighbour) {
+TEST(Relabelling, GivesNoEdgeWhereTheNeighbourIsNoThreeDimensionalNeighbour) {
   // Segment 2 is a column half a metre in front: pixel neighbours, but not 3-D neighbours
   // (Eq. 3).
   Frame f(kCutInTwo, {1}, [](int u, int) { return u == 4 ? 1.5 : 2.0; });
   f.relabel();
   ASSERT_EQ(f.segments.size(), 4u);
-  EXPECT_TRUE(f.borders().empty());
+  EXPECT_FALSE(f.hasEdge(3, 2));
+  EXPECT_TRUE(f.edges.empty());
 }
 
 TEST(Relabelling, LeavesASegmentThatLostPixelsButIsStillConnectedWhole) {
@@ -162,7 +165,7 @@ TEST(Relabelling, LeavesASegmentThatLostPixelsButIsStillConnectedWhole) {
   EXPECT_EQ(f.art(), art);
   EXPECT_EQ(f.segments.size(), 3u);
   expectSameSums(f.segments[1].sums, before);
-  EXPECT_TRUE(f.touch(1, 2));
+  EXPECT_TRUE(f.edges.empty());
 }
 
 TEST(Relabelling, DoesNotSplitASegmentThatLostNoPixels) {
@@ -224,9 +227,9 @@ TEST(Relabelling, SplitsEverySegmentThatFellApartAndNumbersThePiecesInSegmentOrd
     SCOPED_TRACE(s);
     expectSameSums(f.segments[static_cast<std::size_t>(s)].sums, f.sumsOf(s));
   }
-  EXPECT_TRUE(f.touch(4, 3));
-  EXPECT_TRUE(f.touch(5, 3));
-  EXPECT_FALSE(f.touch(4, 5));
+  EXPECT_TRUE(f.hasEdge(4, 3));
+  EXPECT_TRUE(f.hasEdge(5, 3));
+  EXPECT_FALSE(f.hasEdge(4, 5));
 }
 
 // A 2 x 2 crumb chipped off segment 1: 4 pixels.
@@ -276,6 +279,7 @@ TEST(Relabelling, DoesNothingWithoutSegments) {
   EXPECT_EQ(empty.grid.width, 0);
   empty.relabel();
   EXPECT_EQ(empty.segments.size(), 1u);
+  EXPECT_TRUE(empty.edges.empty());
 
   Frame holes({"....", "...."}, {}, [](int, int) { return static_cast<double>(kNaN); });
   holes.relabel();
@@ -291,21 +295,21 @@ TEST(Relabelling, LeavesAOnePixelSegmentAlone) {
   EXPECT_DOUBLE_EQ(f.segments[1].sums.count, 1.0);
 }
 
-TEST(Relabelling, LeavesNoTouchAcrossHoles) {
+TEST(Relabelling, GivesNoEdgesAcrossHoles) {
   // The frame has no returns: pieces still split by the labels, but no hole is a 3-D
   // neighbour of anything.
   Frame f(kCutInTwo, {1}, [](int, int) { return static_cast<double>(kNaN); });
   f.relabel();
   ASSERT_EQ(f.segments.size(), 4u);
   EXPECT_DOUBLE_EQ(f.segments[3].sums.count, 25.0);
-  EXPECT_TRUE(f.borders().empty());
+  EXPECT_TRUE(f.edges.empty());
 }
 
 TEST(Relabelling, CanBeRunAgainOnTheNextFrame) {
   Relabelling relabelling;
   for (int frame = 0; frame < 2; ++frame) {
     Frame f(kCutInTwo, {1});
-    relabelling.run(f.grid.grid(), 1, f.labels, f.segments);
+    relabelling.run(f.grid.grid(), 1, f.labels, f.segments, f.edges);
     EXPECT_EQ(f.segments.size(), 4u) << "frame " << frame;
     EXPECT_EQ(f.labels[f.grid.index(9, 4)], 3) << "frame " << frame;
   }
