@@ -5,7 +5,9 @@
 #include <CLI/CLI.hpp>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -45,6 +47,11 @@ constexpr int kMaxSequenceFrames = 108000;
 // keeps looking roughly the scene's way.
 constexpr double kSceneFileLeash = 0.5;     // metres
 constexpr double kSceneFileMaxTurn = 25.0;  // degrees
+// Quirk limits: far beyond a real sensor's, near enough to catch a unit mix-up (--warp in metres
+// instead of millimetres, --bend of a whole wall at 1 /m: see synth/sensor_model.h).
+constexpr int kMaxQuantizeBits = 16;
+constexpr double kMaxWarpMillimetres = 50.0;
+constexpr double kMaxBendPerMetre = 1.0;
 
 struct Options {
   std::vector<std::string> scene_files;
@@ -59,6 +66,11 @@ struct Options {
   bool ascii = false;
   bool write_scene = false;
   bool quiet = false;
+  // A real sensor's quirks, all off by default (synth/scanner_model.h, synth/sensor_model.h).
+  std::optional<int> quantize_bits;  // scanner
+  std::optional<double> warp_mm;     // scanner, kinect
+  bool speckle = false;              // scanner
+  std::optional<double> bend_per_m;  // kinect
 };
 
 std::vector<synth::SensorModel> sensorModels(const std::string& choice) {
@@ -69,6 +81,24 @@ std::vector<synth::SensorModel> sensorModels(const std::string& choice) {
     return {synth::SensorModel::none, synth::SensorModel::kinect, synth::SensorModel::scanner};
   }
   return {*synth::sensorModelFromName(choice)};
+}
+
+// The render settings of one frame: `sensor` with noise seed `noise_seed` and the quirks the
+// options turn on; the warp's shape from `warp_seed` (the scene's seed, one calibration for
+// every frame of a sequence).
+synth::RenderSettings renderSettings(synth::SensorModel sensor, std::uint64_t noise_seed, std::uint64_t warp_seed,
+                                     const Options& options) {
+  synth::RenderSettings settings;
+  settings.sensor = sensor;
+  settings.seed = noise_seed;
+  if (options.quantize_bits) settings.scanner.range_bits = *options.quantize_bits;
+  settings.scanner.speckle = options.speckle;
+  if (options.warp_mm) {
+    settings.warp.amplitude = *options.warp_mm / 1000.0;
+    settings.warp.seed = warp_seed;
+  }
+  if (options.bend_per_m) settings.kinect.bend_curvature = *options.bend_per_m;
+  return settings;
 }
 
 std::size_t visiblePlanes(const synth::RenderedFrame& frame) {
@@ -132,10 +162,7 @@ std::string renderSequence(const synth::Scene& scene, const std::vector<Eigen::I
   const auto render = [&](synth::SensorModel sensor, int k) {
     synth::Scene view = scene;
     view.world_from_camera = poses[static_cast<std::size_t>(k)];
-    synth::RenderSettings settings;
-    settings.sensor = sensor;
-    settings.seed = frameNoiseSeed(noise_seed, k);
-    return synth::renderScene(view, settings);
+    return synth::renderScene(view, renderSettings(sensor, frameNoiseSeed(noise_seed, k), noise_seed, options));
   };
   // The planes as written, per sensor and frame, to find the frames a later merge changes.
   std::vector<std::vector<synth::RenderedFrame>> written(sensors.size());
@@ -196,11 +223,9 @@ void renderSceneFile(const std::string& scene_file, const Options& options) {
     return;
   }
   for (const synth::SensorModel sensor : sensorModels(*options.sensor)) {
-    synth::RenderSettings settings;
-    settings.sensor = sensor;
-    settings.seed = options.seed;
     const auto start = std::chrono::steady_clock::now();
-    const synth::RenderedFrame frame = synth::renderScene(scene, settings);
+    const synth::RenderedFrame frame =
+        synth::renderScene(scene, renderSettings(sensor, options.seed, options.seed, options));
     const std::chrono::duration<double> render_time = std::chrono::steady_clock::now() - start;
 
     const std::string stem = outputStem(options, scene.name, sensor);
@@ -242,10 +267,7 @@ std::string renderRandomSeed(std::uint64_t seed, const Options& options) {
             synth::sceneJson(*scene));
       }
     }
-    synth::RenderSettings settings;
-    settings.sensor = sensor;
-    settings.seed = seed;
-    const synth::RenderedFrame frame = synth::renderScene(*scene, settings);
+    const synth::RenderedFrame frame = synth::renderScene(*scene, renderSettings(sensor, seed, seed, options));
     writeFrame(outputStem(options, name, sensor), frame, options);
     summary << "; " << synth::sensorModelName(sensor) << " " << frame.intrinsics.width << "x" << frame.intrinsics.height
             << ", " << visiblePlanes(frame) << " of " << frame.planes.size() << " planes visible";
@@ -326,6 +348,38 @@ std::string inconsistency(const Options& options) {
   return "";
 }
 
+// Quirks that no requested sensor model has, and values out of range (CLI11's ranges let NaN
+// through); an empty string when the quirks make sense. Needs options.sensor set.
+std::string quirkInconsistency(const Options& options) {
+  const std::vector<synth::SensorModel> sensors = sensorModels(*options.sensor);
+  const auto renders = [&](synth::SensorModel model) {
+    return std::find(sensors.begin(), sensors.end(), model) != sensors.end();
+  };
+  const bool scanner = renders(synth::SensorModel::scanner);
+  const bool kinect = renders(synth::SensorModel::kinect);
+  const std::string not_rendered = ", not rendered here (--sensor " + *options.sensor + ")";
+  if (options.quantize_bits && !scanner) {
+    return "--quantize-bits applies to the scanner model" + not_rendered;
+  }
+  if (options.speckle && !scanner) {
+    return "--speckle applies to the scanner model" + not_rendered;
+  }
+  if (options.warp_mm && !scanner && !kinect) {
+    return "--warp applies to the scanner and kinect models" + not_rendered;
+  }
+  if (options.bend_per_m && !kinect) {
+    return "--bend applies to the kinect model" + not_rendered;
+  }
+  if (options.warp_mm && !(*options.warp_mm > 0.0 && *options.warp_mm <= kMaxWarpMillimetres)) {
+    return "--warp: the peak warp must be a number of millimetres above 0 and at most " +
+           std::to_string(static_cast<int>(kMaxWarpMillimetres));
+  }
+  if (options.bend_per_m && !(std::abs(*options.bend_per_m) <= kMaxBendPerMetre && *options.bend_per_m != 0.0)) {
+    return "--bend: the curvature must be a number per metre, not 0, between -1 and 1";
+  }
+  return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -375,12 +429,36 @@ int main(int argc, char** argv) {
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
+  // A real sensor's quirks (synth/scanner_model.h, synth/sensor_model.h, synth/depth_warp.h).
+  app.add_option("--quantize-bits", options.quantize_bits,
+                 "Scanner: report the range as an N-bit code over the working window 0.7-1.5 m, uniform in "
+                 "depth, in place of the scanner's inverse-depth lattice (8 bits: 3.1 mm steps, a staircase on "
+                 "oblique planes); depths outside the window return nothing. 1-16; default off")
+      ->check(CLI::Range(1, kMaxQuantizeBits))
+      ->type_name("N");
+  app.add_option("--warp", options.warp_mm,
+                 "Scanner and kinect: a calibration warp, a smooth depth error over the field of view (a bowl, a "
+                 "weaker saddle and a tilt, its shape fixed by the seed, the same in every frame of a sequence) "
+                 "with a peak of MM millimetres, moving each point along its ray. Above 0, at most 50; default off")
+      ->type_name("MM");
+  app.add_flag("--speckle", options.speckle,
+               "Scanner: near depth discontinuities and shadow edges (within 2 pixels), isolated spurious returns "
+               "(label 0) and short stripes of lost returns down the image's columns; default off");
+  app.add_option("--bend", options.bend_per_m,
+                 "Kinect: a radial depth distortion that bends a flat wall facing the camera at 3.5 m to a "
+                 "curvature of PER_M per metre (PER_M * z / 3.5 m at depth z; the depth error is "
+                 "PER_M / 2 * rho^2 * z^3 / 3.5 m, rho the ray's tangent from the image centre; positive: the "
+                 "corners read far). Between -1 and 1, not 0; 0.02 moves the corners of a wall at 3.5 m by 7 "
+                 "cm; default off")
+      ->type_name("PER_M");
   if (const std::optional<int> done = floodplane::apps::parseCommandLine(app, argc, argv)) return *done;
   if (const std::string problem = inconsistency(options); !problem.empty())
     return floodplane::apps::usageError(app, problem);
   if (!options.sensor) {
     options.sensor = options.random_count && !options.sequence_frames ? "all" : "both";
   }
+  if (const std::string problem = quirkInconsistency(options); !problem.empty())
+    return floodplane::apps::usageError(app, problem);
 
   try {
     fs::create_directories(options.output_dir);

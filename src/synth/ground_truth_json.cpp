@@ -13,6 +13,25 @@ std::string groundTruthJson(const RenderedFrame& frame) {
   if (frame.sensor != SensorModel::none) {
     document["seed"] = frame.seed;
   }
+  // Only when some quirk is on, so that the files of plain renders stay as they were.
+  if (frame.quirks.any()) {
+    const SensorQuirks& quirks = frame.quirks;
+    ordered_json section = ordered_json::object();
+    if (quirks.range_bits > 0) {
+      section["quantize_bits"] = quirks.range_bits;
+      section["range_code_window"] = {quirks.range_code_near, quirks.range_code_far};
+    }
+    if (quirks.warp_amplitude > 0.0) {
+      section["warp_mm"] = quirks.warp_amplitude * 1000.0;
+      section["warp_seed"] = quirks.warp_seed;
+    }
+    if (quirks.speckle) section["speckle"] = true;
+    if (quirks.bend_curvature != 0.0) {
+      section["bend_per_m"] = quirks.bend_curvature;
+      section["bend_reference_depth"] = quirks.bend_reference_depth;
+    }
+    document["sensor_quirks"] = std::move(section);
+  }
   document["camera"] = {{"width", frame.intrinsics.width}, {"height", frame.intrinsics.height},
                         {"fx", frame.intrinsics.fx},       {"fy", frame.intrinsics.fy},
                         {"cx", frame.intrinsics.cx},       {"cy", frame.intrinsics.cy}};

@@ -35,11 +35,12 @@ Illumination ProjectorView::illuminate(const Eigen::Vector3d& point, const Eigen
   // projector to the point has the direction point - position and reaches it at t = 1.
   const Eigen::Vector3d to_point = point - position_;
   const double cosine = -normal.dot(to_point) / to_point.norm();
-  if (cosine <= 0.0 || !inField(to_point)) {
-    return {false, cosine};  // the projector sees the surface's back, or does not reach it
+  const bool in_field = inField(to_point);
+  if (cosine <= 0.0 || !in_field) {
+    return {false, cosine, in_field};  // the projector sees the surface's back, or does not reach it
   }
   const SurfaceHit first = caster_.cast(to_point);
-  return {first.t >= 1.0 - kOccluderMargin, cosine};
+  return {first.t >= 1.0 - kOccluderMargin, cosine, true};
 }
 
 }  // namespace floodplane::synth

@@ -17,6 +17,9 @@ struct Illumination {
   /// Cosine of the angle between the surface normal and the direction to the projector
   /// (positive when the surface faces the projector).
   double cosine = 0.0;
+  /// Whether the point lies inside the projector's field: unlit points inside it are in its
+  /// shadow (the surface turned away, or something in between).
+  bool in_field = false;
 };
 
 class ProjectorView {

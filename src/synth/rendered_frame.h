@@ -33,12 +33,29 @@ struct GroundTruthPlane {
   std::uint32_t merged_into = 0;
 };
 
+/// The imperfections of a real sensor a frame was rendered with (pcd_synth --quantize-bits,
+/// --warp, --speckle, --bend), each off (0, false) unless the frame's sensor model has it on:
+/// so the ground truth says what data it describes.
+struct SensorQuirks {
+  int range_bits = 0;                 ///< scanner: N of the range code (ScannerParams::range_bits)
+  double range_code_near = 0.0;       ///< metres, with range_bits
+  double range_code_far = 0.0;        ///< metres, with range_bits
+  double warp_amplitude = 0.0;        ///< scanner, kinect: peak of the calibration warp, metres
+  std::uint64_t warp_seed = 0;        ///< with warp_amplitude
+  bool speckle = false;               ///< scanner
+  double bend_curvature = 0.0;        ///< kinect: kappa, 1/m (KinectParams::bend_curvature)
+  double bend_reference_depth = 0.0;  ///< metres, with bend_curvature
+
+  bool any() const { return range_bits > 0 || warp_amplitude > 0.0 || speckle || bend_curvature != 0.0; }
+};
+
 /// An organized frame, row-major, width * height entries in `points` and `labels`.
 struct RenderedFrame {
   std::string scene_name;
   std::string scene_description;
   SensorModel sensor = SensorModel::none;
   std::uint64_t seed = 0;
+  SensorQuirks quirks;
   CameraIntrinsics intrinsics;
   /// The measured point in the camera frame (metres); NaN where the ray hits nothing or the
   /// sensor returns nothing.

@@ -8,6 +8,7 @@
 
 #include "projector_view.h"
 #include "ray_caster.h"
+#include "synth/scanner_speckle.h"
 
 namespace floodplane::synth {
 namespace {
@@ -27,28 +28,58 @@ void checkIntrinsics(const Scene& scene) {
 }
 
 // What the sensor reports for the exact hit `hit` on the ray through pixel `index` in
-// `direction` (z = 1): a depth, or nothing.
+// `direction` (z = 1): a depth, or nothing. The sensor measures `sensed_depth`, the hit's depth
+// moved along the ray by the calibration's errors (warp, bend; hit.t without them); the
+// projector lights the surface where it is. Sets `light` for the scanner.
 std::optional<double> measuredDepth(const Scene& scene, const RenderSettings& settings, const ProjectorView* projector,
-                                    const Eigen::Vector3d& direction, const SurfaceHit& hit, std::size_t index) {
+                                    const Eigen::Vector3d& direction, const SurfaceHit& hit, double sensed_depth,
+                                    std::size_t index, ProjectorLight& light) {
   switch (settings.sensor) {
     case SensorModel::none:
       return hit.t;  // direction.z() == 1, so the hit's depth is t
     case SensorModel::kinect: {
       PixelRandom random(settings.seed, index);
-      return measureKinectDepth(hit.t, settings.kinect, random);
+      return measureKinectDepth(sensed_depth, settings.kinect, random);
     }
     case SensorModel::scanner: {
       const Eigen::Vector3d point = hit.t * direction;
       const Eigen::Vector3d normal = hit.normal.dot(direction) > 0.0 ? Eigen::Vector3d(-hit.normal) : hit.normal;
       const double camera_cosine = -normal.dot(direction) / direction.norm();
-      const Illumination light = projector->illuminate(point, normal);
+      const Illumination illumination = projector->illuminate(point, normal);
+      light = !illumination.in_field ? ProjectorLight::outside_field
+              : illumination.lit     ? ProjectorLight::lit
+                                     : ProjectorLight::shadowed;
       PixelRandom random(settings.seed, index);
-      const double signal = scannerReturnSignal(scene.primitives[hit.primitive].albedo, camera_cosine, light.cosine);
-      const auto measured = measureScannerDepth(hit.t, signal, settings.scanner, random);
-      return light.lit ? measured : std::nullopt;
+      const double signal =
+          scannerReturnSignal(scene.primitives[hit.primitive].albedo, camera_cosine, illumination.cosine);
+      const auto measured = measureScannerDepth(sensed_depth, signal, settings.scanner, random);
+      return illumination.lit ? measured : std::nullopt;
     }
   }
   return std::nullopt;
+}
+
+// The quirks `settings` turn on for its sensor model, as the ground truth records them.
+SensorQuirks quirksInEffect(const RenderSettings& settings) {
+  SensorQuirks quirks;
+  if (settings.sensor == SensorModel::none) return quirks;
+  if (settings.warp.amplitude != 0.0) {  // a negative or NaN amplitude goes on to DepthWarp, which rejects it
+    quirks.warp_amplitude = settings.warp.amplitude;
+    quirks.warp_seed = settings.warp.seed;
+  }
+  if (settings.sensor == SensorModel::kinect && settings.kinect.bend_curvature != 0.0) {
+    quirks.bend_curvature = settings.kinect.bend_curvature;
+    quirks.bend_reference_depth = settings.kinect.bend_reference_depth;
+  }
+  if (settings.sensor == SensorModel::scanner) {
+    if (settings.scanner.range_bits > 0) {
+      quirks.range_bits = settings.scanner.range_bits;
+      quirks.range_code_near = settings.scanner.range_code_near;
+      quirks.range_code_far = settings.scanner.range_code_far;
+    }
+    quirks.speckle = settings.scanner.speckle;
+  }
+  return quirks;
 }
 
 // Faces of one plane (normals and offsets equal up to round-off).
@@ -109,6 +140,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
   frame.scene_description = scene.description;
   frame.sensor = settings.sensor;
   frame.seed = settings.seed;
+  frame.quirks = quirksInEffect(settings);
   frame.intrinsics = intrinsics;
   frame.planes = caster.planes();
   const auto pixel_count = static_cast<std::size_t>(intrinsics.width) * static_cast<std::size_t>(intrinsics.height);
@@ -116,6 +148,16 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
   frame.points.assign(pixel_count, no_point);
   frame.labels.assign(pixel_count, 0);
   std::vector<std::uint32_t> surface(pixel_count, 0);  // the exact hit's plane, measured or not
+
+  // The calibration's errors, when on: the depth the sensor believes it sees.
+  const std::optional<DepthWarp> warp = frame.quirks.warp_amplitude != 0.0
+                                            ? std::optional<DepthWarp>(std::in_place, settings.warp, intrinsics)
+                                            : std::nullopt;
+  const bool bend = frame.quirks.bend_curvature != 0.0;
+  // The speckle needs every pixel's exact depth and light, measured or not.
+  const bool speckle = frame.quirks.speckle;
+  std::vector<double> exact_depth(speckle ? pixel_count : 0, std::numeric_limits<double>::infinity());
+  std::vector<ProjectorLight> light(speckle ? pixel_count : 0, ProjectorLight::no_surface);
 
   for (int v = 0; v < intrinsics.height; ++v) {
     for (int u = 0; u < intrinsics.width; ++u) {
@@ -126,8 +168,16 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
         continue;
       }
       surface[index] = hit.plane_id;
-      const std::optional<double> depth =
-          measuredDepth(scene, settings, projector ? &*projector : nullptr, direction, hit, index);
+      double sensed_depth = hit.t;
+      if (warp) sensed_depth += warp->at(u, v);
+      if (bend) sensed_depth += kinectBendOffset(hit.t, direction.head<2>().squaredNorm(), settings.kinect);
+      ProjectorLight pixel_light = ProjectorLight::no_surface;
+      const std::optional<double> depth = measuredDepth(scene, settings, projector ? &*projector : nullptr, direction,
+                                                        hit, sensed_depth, index, pixel_light);
+      if (speckle) {
+        exact_depth[index] = hit.t;
+        light[index] = pixel_light;
+      }
       if (!depth) {
         continue;
       }
@@ -138,6 +188,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
       }
     }
   }
+  if (speckle) addScannerSpeckle(exact_depth, light, settings.scanner, settings.seed, frame);
   mergeTouchingCoplanarFaces(frame, surface);
   return frame;
 }

@@ -12,7 +12,23 @@ double scannerNoiseSigma(double z, const ScannerParams& params) { return params.
 
 double scannerDepthStep(double z, const ScannerParams& params) { return params.depth_step_at_1m * z * z; }
 
+double scannerRangeCodeStep(const ScannerParams& params) {
+  if (params.range_bits <= 0) {
+    return 0.0;
+  }
+  const double largest_code = std::ldexp(1.0, params.range_bits) - 1.0;
+  return (params.range_code_far - params.range_code_near) / largest_code;
+}
+
 double quantizeScannerDepth(double z, const ScannerParams& params) {
+  if (params.range_bits > 0) {
+    const double step = scannerRangeCodeStep(params);
+    const double code = std::round((z - params.range_code_near) / step);
+    const double largest_code = std::ldexp(1.0, params.range_bits) - 1.0;
+    // Beyond the window no code is left to write: the scanner reports nothing.
+    return code >= 0.0 && code <= largest_code ? params.range_code_near + code * step
+                                               : std::numeric_limits<double>::quiet_NaN();
+  }
   if (params.depth_step_at_1m <= 0.0) {
     return z;
   }
@@ -38,11 +54,19 @@ std::optional<double> measureScannerDepth(double z, double return_signal, const 
   const double gaussian_variance = std::max(0.0, sigma * sigma - step * step / 12.0);
   const double noisy = z + std::sqrt(gaussian_variance) * random.gaussian();
   const bool lost = random.uniform() < scannerLossProbability(return_signal, params);
-  const double measured = quantizeScannerDepth(noisy, params);
-  if (lost || !(measured >= params.min_range && measured <= params.max_range)) {
+  if (lost) {
     return std::nullopt;
   }
-  return measured;
+  return reportScannerDepth(noisy, params);
+}
+
+std::optional<double> reportScannerDepth(double z, const ScannerParams& params) {
+  const double reported = quantizeScannerDepth(z, params);
+  // NaN (no code) fails both comparisons.
+  if (!(reported >= params.min_range && reported <= params.max_range)) {
+    return std::nullopt;
+  }
+  return reported;
 }
 
 }  // namespace floodplane::synth

@@ -46,6 +46,10 @@ double quantizeDepth(double z, const KinectParams& params) {
   return steps > 0.0 ? focal_baseline / (steps * params.disparity_step) : std::numeric_limits<double>::infinity();
 }
 
+double kinectBendOffset(double z, double tangent_squared, const KinectParams& params) {
+  return 0.5 * params.bend_curvature * tangent_squared * z * z * z / params.bend_reference_depth;
+}
+
 std::optional<double> measureKinectDepth(double z, const KinectParams& params, PixelRandom& random) {
   // The Gaussian's variance leaves room for the variance quantization adds (see the header).
   const double sigma_z = axialNoiseSigma(z, params);

@@ -1,12 +1,13 @@
 // The scene renderer against geometry worked out by hand: the pinhole camera, a plane, a box,
-// a sphere and a cylinder in the exact model, the Kinect model's statistics, determinism, and
-// every scene file in data/scenes.
+// a sphere and a cylinder in the exact model, the Kinect model's statistics and its bend,
+// determinism, quirks that change nothing while off, and every scene file in data/scenes.
 
 #include "synth/renderer.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -475,6 +476,62 @@ TEST(Kinect, DropsAboutHalfAPercentOfReturnsInRange) {
   EXPECT_LT(lost, 0.007);
 }
 
+// The bend: a wall facing the camera at depth Z, rendered with kappa = 0.02 /m, fitted with
+// z = a X^2 + b X Y + c Y^2 + d X + e Y + f over its measured points: the Hessian
+// [2a b; b 2c] is kappa Z / 3.5 m times the identity (a round bowl), to within 5 % at 3.5 m and
+// 1.75 m and 8 % at 5 m: the points move along their rays, which stretches X and Y at the
+// corners by e / Z, 2 % at 3.5 m and 4 % at 5 m, and flattens the bowl there by twice that. At
+// 3.5 m with the full Kinect model, whose depths stay on the disparity lattice (the bend comes
+// before it); at 1.75 m and 5 m, where the bowl's depth is within one or two lattice steps of
+// noise only 0.4-0.5 steps wide (rounding then shapes the mean), without the lattice. Without
+// the bend the curvature is nil.
+Eigen::Matrix2d wallHessian(const RenderedFrame& frame) {
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3f& point : frame.points) {
+    if (!isNaN(point)) points.push_back(point.cast<double>());
+  }
+  Eigen::MatrixXd design(points.size(), 6);
+  Eigen::VectorXd depth(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double x = points[k].x();
+    const double y = points[k].y();
+    design.row(static_cast<Eigen::Index>(k)) << x * x, x * y, y * y, x, y, 1.0;
+    depth(static_cast<Eigen::Index>(k)) = points[k].z();
+  }
+  const Eigen::VectorXd quadric = (design.transpose() * design).ldlt().solve(design.transpose() * depth);
+  Eigen::Matrix2d hessian;
+  hessian << 2.0 * quadric(0), quadric(1), quadric(1), 2.0 * quadric(2);
+  return hessian;
+}
+
+TEST(Kinect, BendGivesAWallFacingTheCameraACurvatureOfKappaAt3Point5MetresGrowingWithDepth) {
+  for (const double z : {3.5, 1.75, 5.0}) {
+    SCOPED_TRACE("wall at " + std::to_string(z) + " m");
+    const Scene scene = sceneInCameraFrame({rectangleFacingCamera(z, 40.0, 40.0)});
+    RenderSettings settings;
+    settings.sensor = SensorModel::kinect;
+    settings.seed = 3;
+    const bool lattice = z == 3.5;
+    if (!lattice) settings.kinect.disparity_step = 0.0;
+    const Eigen::Matrix2d flat = wallHessian(renderScene(scene, settings));
+    EXPECT_LT(flat.cwiseAbs().maxCoeff(), 0.002);
+    settings.kinect.bend_curvature = 0.02;
+    const RenderedFrame frame = renderScene(scene, settings);
+    const Eigen::Matrix2d bent = wallHessian(frame);
+    const double expected = 0.02 * z / 3.5;
+    const double tolerance = (z == 5.0 ? 0.08 : 0.05) * expected;
+    EXPECT_NEAR(bent(0, 0), expected, tolerance);
+    EXPECT_NEAR(bent(1, 1), expected, tolerance);
+    EXPECT_NEAR(bent(0, 1), 0.0, tolerance);
+    for (const Eigen::Vector3f& point : frame.points) {
+      if (isNaN(point) || !lattice) continue;
+      const double eighths = 8.0 * 525.0 * 0.075 / point.z();
+      ASSERT_NEAR(eighths, std::round(eighths), 1e-4) << "z = " << point.z();
+    }
+    EXPECT_EQ(frame.quirks.bend_curvature, 0.02);
+  }
+}
+
 // ---- Determinism -----------------------------------------------------------------------
 
 std::string fileBytes(const fs::path& path) {
@@ -531,6 +588,59 @@ TEST(Renderer, AnotherSeedGivesAnotherNoisyCloudButTheSameExactOne) {
   EXPECT_GT(differing, returns / 4);
 
   EXPECT_TRUE(sameBytes(render(scene, SensorModel::none, 7), render(scene, SensorModel::none, 8)));
+}
+
+// The quirks' parameters do nothing while their quirk is off, and the exact model has none:
+// such renders are the plain ones bit for bit, and their ground truth names no quirk. A frame
+// with quirks lists them in its ground truth.
+TEST(Renderer, QuirkParametersChangeNothingWhileTheirQuirkIsOff) {
+  const Scene scene = tabletopScene();
+  for (const SensorModel sensor : {SensorModel::none, SensorModel::kinect, SensorModel::scanner}) {
+    SCOPED_TRACE(sensorModelName(sensor));
+    RenderSettings plain;
+    plain.sensor = sensor;
+    plain.seed = 5;
+    RenderSettings inert = plain;
+    inert.warp.seed = 99;  // amplitude 0
+    inert.kinect.bend_reference_depth = 1.0;
+    inert.scanner.range_code_near = 0.2;
+    inert.scanner.range_code_far = 0.4;
+    inert.scanner.speckle_stripe_probability = 1.0;
+    inert.scanner.speckle_spurious_probability = 1.0;
+    if (sensor == SensorModel::none) {
+      // The exact model takes no quirk at all.
+      inert.warp.amplitude = 0.003;
+      inert.kinect.bend_curvature = 0.5;
+      inert.scanner.range_bits = 4;
+      inert.scanner.speckle = true;
+    }
+    const RenderedFrame a = renderScene(scene, plain);
+    const RenderedFrame b = renderScene(scene, inert);
+    EXPECT_TRUE(sameBytes(a, b));
+    EXPECT_EQ(groundTruthJson(a), groundTruthJson(b));
+    EXPECT_EQ(nlohmann::json::parse(groundTruthJson(b)).count("sensor_quirks"), 0U);
+  }
+  RenderSettings quirky;
+  quirky.sensor = SensorModel::scanner;
+  quirky.seed = 5;
+  quirky.warp = {0.002, 7};
+  quirky.scanner.range_bits = 8;
+  quirky.scanner.speckle = true;
+  quirky.kinect.bend_curvature = 0.02;  // not the scanner's: not listed
+  const nlohmann::json listed = nlohmann::json::parse(groundTruthJson(renderScene(scene, quirky))).at("sensor_quirks");
+  EXPECT_EQ(listed.at("quantize_bits").get<int>(), 8);
+  EXPECT_EQ(listed.at("range_code_window"), nlohmann::json::array({0.7, 1.5}));
+  EXPECT_DOUBLE_EQ(listed.at("warp_mm").get<double>(), 2.0);
+  EXPECT_EQ(listed.at("warp_seed").get<int>(), 7);
+  EXPECT_TRUE(listed.at("speckle").get<bool>());
+  EXPECT_EQ(listed.count("bend_per_m"), 0U);
+  quirky.sensor = SensorModel::kinect;
+  const nlohmann::json kinect = nlohmann::json::parse(groundTruthJson(renderScene(scene, quirky))).at("sensor_quirks");
+  EXPECT_DOUBLE_EQ(kinect.at("bend_per_m").get<double>(), 0.02);
+  EXPECT_DOUBLE_EQ(kinect.at("bend_reference_depth").get<double>(), 3.5);
+  EXPECT_DOUBLE_EQ(kinect.at("warp_mm").get<double>(), 2.0);
+  EXPECT_EQ(kinect.count("quantize_bits"), 0U);
+  EXPECT_EQ(kinect.count("speckle"), 0U);
 }
 
 // ---- The scene files -------------------------------------------------------------------

@@ -81,4 +81,21 @@ TEST(SensorModel, ReturnsOutsideTheRangeOrDroppedAreLost) {
   EXPECT_FALSE(measureKinectDepth(1.0, always_dropped, random).has_value());
 }
 
+// The bend's depth error e = (kappa / 2) rho^2 z^3 / z_ref: zero on the optical axis and when
+// off, growing with rho^2 and with z^3, of the sign of kappa.
+TEST(SensorModel, BendMovesTheDepthByHalfKappaRhoSquaredZCubedOverTheReferenceDepth) {
+  KinectParams params;
+  EXPECT_EQ(kinectBendOffset(3.5, 0.5, params), 0.0);  // off by default
+  params.bend_curvature = 0.02;
+  EXPECT_EQ(kinectBendOffset(3.5, 0.0, params), 0.0);
+  // A 640 x 480 Kinect's corner, rho^2 = (319.5^2 + 239.5^2) / 525^2 = 0.578, at 3.5 m: 7.1 cm.
+  const double corner = (319.5 * 319.5 + 239.5 * 239.5) / (525.0 * 525.0);
+  EXPECT_NEAR(kinectBendOffset(3.5, corner, params), 0.01 * corner * 3.5 * 3.5, 1e-15);
+  EXPECT_NEAR(kinectBendOffset(3.5, corner, params), 0.0708, 0.0001);
+  EXPECT_NEAR(kinectBendOffset(1.75, corner, params), kinectBendOffset(3.5, corner, params) / 8.0, 1e-15);
+  EXPECT_NEAR(kinectBendOffset(2.0, 0.4, params), 2.0 * kinectBendOffset(2.0, 0.2, params), 1e-15);
+  params.bend_curvature = -0.02;
+  EXPECT_NEAR(kinectBendOffset(3.5, corner, params), -0.0708, 0.0001);
+}
+
 }  // namespace

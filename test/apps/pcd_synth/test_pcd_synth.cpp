@@ -2,7 +2,8 @@
 // every seed and sensor, scenes made again one at a time byte for byte, saved scene files that
 // render the same frames, sequences of a walking camera (--sequence: every frame's files, the
 // poses a walking step apart, frame 0 the single render, determinism, saved rooms walked as
-// scene files), and a clear error and exit code 2 for every bad combination of arguments.
+// scene files), the quirks of real sensors (only their own sensors' frames change, the ground
+// truth lists them), and a clear error and exit code 2 for every bad combination of arguments.
 
 #include <gtest/gtest.h>
 
@@ -190,6 +191,48 @@ TEST_F(PcdSynth, ASequenceIsTheSameEveryTimeAndASavedRoomCanBeWalkedAsASceneFile
   EXPECT_TRUE(fs::exists(path("file/random_0004.room.poses.json")));
 }
 
+// The quirks of real sensors: each changes only the frames of the sensor models it belongs to
+// (the exact frames stay as they were) and is listed in those frames' ground truth; a sequence
+// keeps one warp (the scene's seed) through its frames.
+TEST_F(PcdSynth, QuirksChangeOnlyTheirSensorsFramesAndTheGroundTruthListsThem) {
+  ASSERT_EQ(run({"--random", "1", "--seed", "6", "-q", "-o", path("plain").string()}).exit_code, 0);
+  const Result quirky = run({"--random", "1", "--seed", "6", "--quantize-bits", "8", "--warp", "2", "--speckle",
+                             "--bend", "0.02", "-q", "-o", path("quirky").string()});
+  ASSERT_EQ(quirky.exit_code, 0) << quirky.err;
+  EXPECT_TRUE(readFile(path("plain/random_0006.none.pcd")) == readFile(path("quirky/random_0006.none.pcd")));
+  EXPECT_TRUE(readFile(path("plain/random_0006.none.planes.json")) ==
+              readFile(path("quirky/random_0006.none.planes.json")));
+  for (const std::string sensor : {"kinect", "scanner"}) {
+    EXPECT_FALSE(readFile(path("plain") / ("random_0006." + sensor + ".pcd")) ==
+                 readFile(path("quirky") / ("random_0006." + sensor + ".pcd")))
+        << sensor;
+    EXPECT_EQ(nlohmann::json::parse(readFile(path("plain") / ("random_0006." + sensor + ".planes.json")))
+                  .count("sensor_quirks"),
+              0U);
+  }
+  const nlohmann::json scanner =
+      nlohmann::json::parse(readFile(path("quirky/random_0006.scanner.planes.json"))).at("sensor_quirks");
+  EXPECT_EQ(scanner.at("quantize_bits").get<int>(), 8);
+  EXPECT_DOUBLE_EQ(scanner.at("warp_mm").get<double>(), 2.0);
+  EXPECT_EQ(scanner.at("warp_seed").get<int>(), 6);
+  EXPECT_TRUE(scanner.at("speckle").get<bool>());
+  EXPECT_EQ(scanner.count("bend_per_m"), 0U);
+  const nlohmann::json kinect =
+      nlohmann::json::parse(readFile(path("quirky/random_0006.kinect.planes.json"))).at("sensor_quirks");
+  EXPECT_DOUBLE_EQ(kinect.at("bend_per_m").get<double>(), 0.02);
+  EXPECT_DOUBLE_EQ(kinect.at("warp_mm").get<double>(), 2.0);
+  EXPECT_EQ(kinect.count("quantize_bits"), 0U);
+
+  const Result sequence = run({"--random", "1", "--seed", "6", "--sequence", "2", "--sensor", "kinect", "--warp", "2",
+                               "--bend", "0.02", "-q", "-o", path("sequence").string()});
+  ASSERT_EQ(sequence.exit_code, 0) << sequence.err;
+  for (int frame = 0; frame < 2; ++frame) {
+    const nlohmann::json listed =
+        nlohmann::json::parse(readFile(path("sequence") / frameFile("random_0006", frame, "kinect", ".planes.json")));
+    EXPECT_EQ(listed.at("sensor_quirks").at("warp_seed").get<int>(), 6) << "frame " << frame;
+  }
+}
+
 TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "0"}, "--random");
   expectRejected({"--random", "2", "scene.json"}, "not both");
@@ -202,6 +245,21 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "1", "--sequence", "x"}, "--sequence");
   expectRejected({"--random", "1", "--sequence", "3", "--sensor", "scanner"}, "--sequence walks through rooms");
   expectRejected({"--random", "1", "--sequence", "3", "--sensor", "all"}, "--sequence walks through rooms");
+  expectRejected({"--random", "1", "--quantize-bits", "0"}, "--quantize-bits");
+  expectRejected({"--random", "1", "--quantize-bits", "17"}, "--quantize-bits");
+  expectRejected({"--random", "1", "--warp", "0"}, "--warp: the peak warp must be");
+  expectRejected({"--random", "1", "--warp", "-2"}, "--warp: the peak warp must be");
+  expectRejected({"--random", "1", "--warp", "nan"}, "--warp: the peak warp must be");
+  expectRejected({"--random", "1", "--warp", "51"}, "--warp: the peak warp must be");
+  expectRejected({"--random", "1", "--bend", "1.5"}, "--bend: the curvature must be");
+  expectRejected({"--random", "1", "--bend", "inf"}, "--bend: the curvature must be");
+  expectRejected({"--random", "1", "--bend", "0"}, "--bend: the curvature must be");
+  expectRejected({"--random", "1", "--sensor", "kinect", "--quantize-bits", "8"},
+                 "--quantize-bits applies to the scanner model");
+  expectRejected({"--random", "1", "--sensor", "kinect", "--speckle"}, "--speckle applies to the scanner model");
+  expectRejected({"--random", "1", "--sensor", "scanner", "--bend", "0.02"}, "--bend applies to the kinect model");
+  expectRejected({"--random", "1", "--sensor", "none", "--warp", "2"}, "--warp applies to the scanner and kinect");
+  expectRejected({"--random", "1", "--sequence", "3", "--speckle"}, "--speckle applies to the scanner model");
 }
 
 }  // namespace
