@@ -17,8 +17,13 @@ this script counts the same in Python from the text PCDs (`--ascii`) of both too
 Targets (issue 28): at most 1 switch per 100 plane-frames for planes of at least 1 % of the
 frame; re-entries within 30 frames keep their id in at least 95 % of cases.
 
+With --look-away the camera glances away from its walking direction now and then and back
+(pcd_synth --look-away), so that planes leave the view for a moment and return: the re-entries
+that a plain walk hardly has.
+
 Example:
   bench/track_sequences.py --seeds 1-5 --frames 300
+  bench/track_sequences.py --seeds 101-102 --frames 150 --look-away   # re-entries
   bench/track_sequences.py --seeds 1 --frames 30 --ground-truth-as-tracks   # checks this script
 """
 
@@ -159,7 +164,7 @@ def evaluate_seed(seed, args, work):
     name = f"random_{seed:04d}"
     truth, tracks = work / name / "truth", work / name / "tracks"
     run([args.pcd_synth, "--random", 1, "--seed", seed, "--sequence", args.frames, "--sensor", args.sensor,
-         "--ascii", "-q", "-o", truth])
+         *(["--look-away"] if args.look_away else []), "--ascii", "-q", "-o", truth])
     frames = sorted(truth.glob(f"{name}_f*.{args.sensor}.pcd"))
     if len(frames) != args.frames:
         sys.exit(f"track_sequences.py: {truth}: {len(frames)} frames, expected {args.frames}")
@@ -195,6 +200,9 @@ def main():
     parser.add_argument("--seeds", type=parse_seeds, default=parse_seeds("1-5"),
                         help="random scene seeds: 1-5, 1,3,7 (default 1-5)")
     parser.add_argument("--frames", type=int, default=300, help="frames a sequence (default 300: 10 s at 30 Hz)")
+    parser.add_argument("--look-away", action="store_true",
+                        help="the camera glances away from its walking direction and back (pcd_synth --look-away): "
+                        "planes leave the view and return")
     parser.add_argument("--sensor", choices=["kinect", "none"], default="kinect", help="sensor model (default kinect)")
     parser.add_argument("--min-fraction", type=float, default=0.01,
                         help="share of the frame from which a plane is present (default 0.01)")
@@ -226,8 +234,8 @@ def main():
 
     tracker = "ground truth as tracks" if args.ground_truth_as_tracks else f"{args.pcd_segment} --track"
     print(f"machine: {machine()}")
-    print(f"sequences: seeds {','.join(map(str, args.seeds))}, {args.frames} frames each, sensor {args.sensor}; "
-          f"tracker: {tracker}")
+    print(f"sequences: seeds {','.join(map(str, args.seeds))}, {args.frames} frames each, sensor {args.sensor}"
+          f"{', looking away' if args.look_away else ''}; tracker: {tracker}")
     print(f"present from {args.min_fraction:g} of the frame, matched from IoU {args.min_iou:g}, "
           f"re-entries after 1-{args.max_gap} absent frames\n")
     with tempfile.TemporaryDirectory() as scratch:
@@ -245,7 +253,8 @@ def main():
     print(row("all", total))
     if args.json:
         try:
-            pathlib.Path(args.json).write_text(json.dumps({"seeds": {str(k): v for k, v in per_seed.items()},
+            pathlib.Path(args.json).write_text(json.dumps({"look_away": args.look_away,
+                                                           "seeds": {str(k): v for k, v in per_seed.items()},
                                                            "all": total}, indent=2) + "\n")
         except OSError as error:
             sys.exit(f"track_sequences.py: cannot write {args.json}: {error}")

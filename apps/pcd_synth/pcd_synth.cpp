@@ -60,6 +60,7 @@ struct Options {
   std::uint64_t seed = 1;
   std::optional<int> random_count;
   std::optional<int> sequence_frames;
+  bool look_away = false;  // glances away from the walking direction in a sequence
   std::optional<int> width;
   std::optional<int> height;
   bool png = false;
@@ -147,16 +148,16 @@ std::uint64_t frameNoiseSeed(std::uint64_t seed, int frame) {
   return seed + static_cast<std::uint64_t>(frame) * 0x9E3779B97F4A7C15ULL;
 }
 
-// Renders the sequence of `scene` along `poses` in every requested sensor model, with noise
-// seeds from `noise_seed` (frameNoiseSeed), and writes
+// Renders the sequence of `scene` along `poses` (walked with `walk`) in every requested sensor
+// model, with noise seeds from `noise_seed` (frameNoiseSeed), and writes
 // <scene>_fNNNN.<sensor>.* and <scene>.poses.json. Ground-truth ids stay constant: faces merged
 // in any frame are one surface in all (SequenceSurfaces); frames written before a later merge
 // changed their labels are rendered and written again. Returns a summary for the progress line.
 std::string renderSequence(const synth::Scene& scene, const std::vector<Eigen::Isometry3d>& poses,
-                           const std::vector<synth::SensorModel>& sensors, std::uint64_t noise_seed,
-                           const Options& options) {
+                           const synth::WalkSettings& walk, const std::vector<synth::SensorModel>& sensors,
+                           std::uint64_t noise_seed, const Options& options) {
   floodplane::io::writeBytesAtomically((fs::path(options.output_dir) / (scene.name + ".poses.json")).string(),
-                                       synth::cameraPathJson(scene.name, poses, synth::WalkSettings().frame_rate));
+                                       synth::cameraPathJson(scene.name, poses, walk.frame_rate, walk.look_away));
   synth::SequenceSurfaces surfaces;
   const auto frames = static_cast<int>(poses.size());
   const auto render = [&](synth::SensorModel sensor, int k) {
@@ -212,9 +213,10 @@ void renderSceneFile(const std::string& scene_file, const Options& options) {
     synth::WalkSettings walk;
     walk.max_distance_from_start = kSceneFileLeash;
     walk.max_turn = kSceneFileMaxTurn;
+    walk.look_away.enabled = options.look_away;
     const auto start = std::chrono::steady_clock::now();
     const std::string summary =
-        renderSequence(scene, synth::walkingCameraPath(scene, *options.sequence_frames, options.seed, walk),
+        renderSequence(scene, synth::walkingCameraPath(scene, *options.sequence_frames, options.seed, walk), walk,
                        sensorModels(*options.sensor), options.seed, options);
     const std::chrono::duration<double> time = std::chrono::steady_clock::now() - start;
     if (!options.quiet) {
@@ -250,7 +252,9 @@ std::string renderRandomSeed(std::uint64_t seed, const Options& options) {
       floodplane::io::writeBytesAtomically((fs::path(options.output_dir) / (name + ".room.json")).string(),
                                            synth::sceneJson(scene));
     }
-    return renderSequence(scene, synth::walkingCameraPath(scene, *options.sequence_frames, seed),
+    synth::WalkSettings walk;
+    walk.look_away.enabled = options.look_away;
+    return renderSequence(scene, synth::walkingCameraPath(scene, *options.sequence_frames, seed, walk), walk,
                           sensorModels(*options.sensor), seed, options);
   }
   std::optional<synth::Scene> room;
@@ -337,6 +341,9 @@ std::string inconsistency(const Options& options) {
   if (options.sequence_frames && options.sensor && (*options.sensor == "scanner" || *options.sensor == "all")) {
     return "--sequence walks through rooms seen by the sensor models none and kinect, not the scanner's";
   }
+  if (options.look_away && !options.sequence_frames) {
+    return "--look-away turns the walking camera of --sequence N";
+  }
   if (!options.random_count && options.write_scene) {
     return "--write-scene saves generated scenes and needs --random N";
   }
@@ -408,6 +415,13 @@ int main(int argc, char** argv) {
                  "view. The walk and frame 0's noise depend on the scene's seed (--seed for scene files), frame k's "
                  "noise on that seed + k * 0x9E3779B97F4A7C15. Sensor models none and kinect (default both)")
       ->check(CLI::Range(1, kMaxSequenceFrames));
+  app.add_flag("--look-away", options.look_away,
+               "With --sequence: now and then the camera turns away from the way it walks and back, as a head "
+               "does, so that surfaces leave the view and return (re-entries for plane tracking): after 1-2.5 s "
+               "of looking ahead a glance of 60-90 degrees to a random side at 180 deg/s, held 0.1-0.3 s; a small "
+               "surface in the "
+               "middle of the view is out of it for about 13-29 frames. The positions stay those of the walk "
+               "without it; the glances depend on the same seed and are listed in <scene>.poses.json. Default off");
   app.add_option("--sensor", options.sensor,
                  "Sensor model: none (exact), kinect, scanner (close-range structured light; random scanner "
                  "scenes are 512x512), both (none and kinect) or all; default both for scene files and --sequence, "

@@ -17,6 +17,8 @@ constexpr std::uint64_t kPathStream = 3;  // the room and blocks scenes of a see
 constexpr double kReachStep = 0.1;        // metres between the points tried along the way ahead
 constexpr double kWanderTime = 1.5;       // seconds over which the wandering yaw rate reverts
 constexpr double kWanderRate = 12.0;      // degrees a second: the wandering rate's spread
+// The glances' own stream: drawing them leaves the walk's draws, and so the walk, as they were.
+constexpr std::uint64_t kLookAwayStream = 4;
 
 double radians(double degrees) { return degrees * kPi / 180.0; }
 
@@ -35,6 +37,49 @@ void checkSettings(int frames, const WalkSettings& settings) {
         "walkingCameraPath: rates, speeds, clearance, look-ahead, leash and turn must be positive, max_speed at "
         "least min_speed, pitch_amplitude not negative, up not zero");
   }
+  const LookAwaySettings& look_away = settings.look_away;
+  if (look_away.enabled &&
+      !(positive(look_away.min_angle) && look_away.max_angle >= look_away.min_angle && look_away.max_angle < 180.0 &&
+        positive(look_away.turn_rate) && look_away.min_hold >= 0.0 && look_away.max_hold >= look_away.min_hold &&
+        std::isfinite(look_away.max_hold) && positive(look_away.min_interval) &&
+        look_away.max_interval >= look_away.min_interval && std::isfinite(look_away.max_interval))) {
+    throw std::invalid_argument(
+        "walkingCameraPath: look-away angles must be above 0 and below 180 degrees, its turn rate and intervals "
+        "positive, its holds not negative, each maximum at least its minimum");
+  }
+}
+
+// Per frame, the yaw (radians about up) by which the camera looks away from its walking
+// direction: glances as LookAwaySettings describes, 0 between them and at frame 0. Empty when
+// looking away is off.
+std::vector<double> lookAwayYaws(int frames, std::uint64_t seed, const WalkSettings& settings) {
+  const LookAwaySettings& look_away = settings.look_away;
+  if (!look_away.enabled) return {};
+  std::vector<double> yaws(static_cast<std::size_t>(frames), 0.0);
+  const auto set = [&](int frame, double yaw) {
+    if (frame < frames) yaws[static_cast<std::size_t>(frame)] = yaw;
+  };
+  // Frame counts past the sequence's end are cut there (and so cannot overflow).
+  const auto frameCount = [&](double count) { return static_cast<int>(std::round(std::min(count, frames + 1.0))); };
+  RandomSource random(seed, kLookAwayStream);
+  const double step = radians(look_away.turn_rate) / settings.frame_rate;  // a frame's turn
+  // The last frame looking ahead.
+  int frame = 0;
+  while (frame < frames) {
+    frame +=
+        std::max(1, frameCount(random.uniform(look_away.min_interval, look_away.max_interval) * settings.frame_rate));
+    const double angle = radians(random.uniform(look_away.min_angle, look_away.max_angle));
+    const double side = random.chance(0.5) ? 1.0 : -1.0;
+    const int hold = frameCount(random.uniform(look_away.min_hold, look_away.max_hold) * settings.frame_rate);
+    const int turning = frameCount(std::ceil(angle / step));
+    // Away: the last step stops at the angle; held; back: ends with the frame looking ahead.
+    for (int k = 1; k <= turning; ++k) set(frame + k, side * std::min(angle, k * step));
+    for (int k = 1; k <= hold; ++k) set(frame + turning + k, side * angle);
+    frame = std::min(frame + turning + hold, frames);
+    for (double yaw = angle - step; yaw > 0.0 && frame < frames; yaw -= step) set(++frame, side * yaw);
+    ++frame;
+  }
+  return yaws;
 }
 
 class Walker {
@@ -102,6 +147,7 @@ std::vector<Eigen::Isometry3d> walkingCameraPath(const Scene& scene, int frames,
   const double max_rate = radians(settings.max_yaw_rate);
   const double max_turn = radians(settings.max_turn);
   const double pitch_amplitude = radians(settings.pitch_amplitude);
+  const std::vector<double> look_away_yaws = lookAwayYaws(frames, seed, settings);
   // A sine from 0, so pose 0 is the scene's own.
   const auto pitch = [&](int frame) {
     return pitch_sign * pitch_amplitude * std::sin(2.0 * kPi * frame * dt / pitch_period);
@@ -144,18 +190,26 @@ std::vector<Eigen::Isometry3d> walkingCameraPath(const Scene& scene, int frames,
     } else {
       speed = 0.0;
     }
-    poses.push_back(walker.pose(position, yaw, pitch(frame)));
+    // Without glances the yaw as it is (not + 0.0, which would turn a -0.0 into +0.0 in the poses).
+    const double view_yaw = look_away_yaws.empty() ? yaw : yaw + look_away_yaws[static_cast<std::size_t>(frame)];
+    poses.push_back(walker.pose(position, view_yaw, pitch(frame)));
   }
   return poses;
 }
 
 std::string cameraPathJson(const std::string& scene_name, const std::vector<Eigen::Isometry3d>& poses,
-                           double frame_rate) {
+                           double frame_rate, const LookAwaySettings& look_away) {
   using nlohmann::ordered_json;  // keeps keys in the order written, for human readers
   ordered_json document;
   document["scene"] = scene_name;
   document["frames"] = poses.size();
   document["frame_rate"] = frame_rate;
+  if (look_away.enabled) {  // absent when off, so that the files of a plain walk stay as they were
+    document["look_away"] = {{"angle_degrees", {look_away.min_angle, look_away.max_angle}},
+                             {"turn_rate_degrees_per_second", look_away.turn_rate},
+                             {"hold_seconds", {look_away.min_hold, look_away.max_hold}},
+                             {"interval_seconds", {look_away.min_interval, look_away.max_interval}}};
+  }
   document["convention"] =
       "world_from_camera maps a point from frame k's camera frame (its PCD's: x right, y down, z forward, "
       "metres) to the world frame of the scene (z up): p_world = R p_camera + t, the matrix [R t; 0 0 0 1] given "

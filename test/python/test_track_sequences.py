@@ -1,7 +1,7 @@
 """bench/track_sequences.py, the plane tracking figures of issue 28: its Python counting gives
 what src/eval/tracking_metrics.h defines on the hand-made sequences of
-test/eval/test_tracking_metrics.cpp, it reads text PCDs, and a rendered sequence scored
-against itself has no switch and nothing lost."""
+test/eval/test_tracking_metrics.cpp, it reads text PCDs, a rendered sequence scored against
+itself has no switch and nothing lost, and --look-away renders with pcd_synth --look-away."""
 
 import json
 import os
@@ -107,6 +107,19 @@ def test_the_ground_truth_scored_as_tracks_has_no_switch_and_nothing_lost(tmp_pa
     assert figures["plane_frames"] > 0
     assert figures["plane_frames"] == figures["matched"]
     assert (figures["id_switches"], figures["lost"]) == (0, 0)
+
+
+@pytest.mark.skipif("FLOODPLANE_PCD_SYNTH" not in os.environ, reason="needs pcd_synth (FLOODPLANE_PCD_SYNTH)")
+def test_look_away_renders_the_sequence_with_pcd_synth_look_away(tmp_path):
+    completed = subprocess.run([sys.executable, str(SOURCE / "bench/track_sequences.py"), "--seeds", "2",
+                                "--frames", "2", "--sensor", "none", "--look-away", "--ground-truth-as-tracks",
+                                "--pcd-synth", os.environ["FLOODPLANE_PCD_SYNTH"], "--work", str(tmp_path / "work"),
+                                "--json", str(tmp_path / "figures.json")], capture_output=True, text=True)
+    assert completed.returncode == 0, completed.stderr
+    assert "looking away" in completed.stdout
+    assert json.loads((tmp_path / "figures.json").read_text())["look_away"] is True
+    poses = json.loads((tmp_path / "work/random_0002/truth/random_0002.poses.json").read_text())
+    assert poses["look_away"]["angle_degrees"] == [60.0, 90.0]
 
 
 def test_bad_arguments_are_one_line_errors():

@@ -1,8 +1,10 @@
 // The walking camera of pcd_synth --sequence: one pose per frame starting at the scene's own,
 // steps of a walking pace and turns of a walking person's rate, clearance from every surface
-// kept in random rooms, the leash and turn limit of scene files, determinism, the errors; and
-// one ground-truth id per surface over a sequence (SequenceSurfaces), checked by following the
-// pixels of each frame into the next.
+// kept in random rooms, the leash and turn limit of scene files, determinism, the errors; the
+// glances of looking away (away by the angle and back in time, the walk unchanged, nothing
+// changed while off, surfaces leaving the view and returning); and one ground-truth id per
+// surface over a sequence (SequenceSurfaces), checked by following the pixels of each frame
+// into the next.
 
 #include "synth/camera_path.h"
 
@@ -11,7 +13,9 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "synth/renderer.h"
@@ -140,6 +144,127 @@ TEST(CameraPath, BadFrameCountsSettingsAndStartsAreRejected) {
   Scene down = scene;
   down.world_from_camera = lookAt({0, 0, 1.5}, {0, 0, 0}, Eigen::Vector3d::UnitX());
   EXPECT_THROW(walkingCameraPath(down, 10, 1), SceneError);
+}
+
+WalkSettings lookingAway() {
+  WalkSettings settings;
+  settings.look_away.enabled = true;
+  return settings;
+}
+
+// The yaw (degrees, in (-180, 180]) by which `pose` looks away from `walking`, the same frame's
+// pose of the walk without glances.
+double lookAwayYaw(const Eigen::Isometry3d& pose, const Eigen::Isometry3d& walking) {
+  double yaw = headingOf(pose) - headingOf(walking);
+  if (yaw > 180.0) yaw -= 360.0;
+  if (yaw <= -180.0) yaw += 360.0;
+  return yaw;
+}
+
+TEST(CameraPath, LookingAwayTurnsByTheAngleAndBackInTimeAndWalksTheSameWalk) {
+  const WalkSettings settings = lookingAway();
+  const LookAwaySettings& look_away = settings.look_away;
+  const Scene scene = openFloor();
+  const std::vector<Eigen::Isometry3d> walking = walkingCameraPath(scene, 600, 7);
+  const std::vector<Eigen::Isometry3d> poses = walkingCameraPath(scene, 600, 7, settings);
+  ASSERT_EQ(poses.size(), walking.size());
+  EXPECT_TRUE(poses[0].isApprox(scene.world_from_camera, 1e-12));
+  // At 180 deg/s and 30 Hz, 6 degrees a frame: out and back, each at most ceil(90 / 6) frames,
+  // and a hold of at most 0.3 s.
+  const double step = look_away.turn_rate / settings.frame_rate;
+  const auto longest_glance =
+      static_cast<int>(2 * std::ceil(look_away.max_angle / step) + std::ceil(look_away.max_hold * settings.frame_rate));
+  int glances = 0;
+  int glance_frames = 0;  // of the glance under way
+  double widest = 0.0;    // its widest yaw, degrees
+  double previous = 0.0;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    EXPECT_TRUE(poses[k].translation() == walking[k].translation()) << "frame " << k;
+    const double yaw = lookAwayYaw(poses[k], walking[k]);
+    EXPECT_LE(std::abs(yaw - previous), step + 1e-9) << "frame " << k;
+    EXPECT_LE(std::abs(yaw), look_away.max_angle + 1e-9) << "frame " << k;
+    previous = yaw;
+    if (std::abs(yaw) > 1e-9) {
+      ++glance_frames;
+      widest = std::max(widest, std::abs(yaw));
+      continue;
+    }
+    if (glance_frames == 0) continue;
+    // A glance just ended: it reached its angle and came back in time.
+    ++glances;
+    EXPECT_GE(widest, look_away.min_angle - 1e-9) << "glance ending at frame " << k;
+    EXPECT_LE(glance_frames, longest_glance) << "glance ending at frame " << k;
+    glance_frames = 0;
+    widest = 0.0;
+  }
+  // A glance at most every 2.5 s + 39 frames: at least 4 in 20 s.
+  EXPECT_GE(glances, 4);
+}
+
+TEST(CameraPath, WhileOffLookingAwayChangesNothingAndWhenOnItsSettingsAreChecked) {
+  const Scene scene = generateRoomScene(3);
+  WalkSettings off;
+  off.look_away.min_angle = 10.0;
+  off.look_away.max_angle = 500.0;  // out of range, but off
+  const std::vector<Eigen::Isometry3d> plain = walkingCameraPath(scene, 200, 3);
+  const std::vector<Eigen::Isometry3d> still_plain = walkingCameraPath(scene, 200, 3, off);
+  const std::vector<Eigen::Isometry3d> glancing = walkingCameraPath(scene, 200, 3, lookingAway());
+  bool turned_away = false;
+  for (std::size_t k = 0; k < plain.size(); ++k) {
+    EXPECT_TRUE(plain[k].matrix() == still_plain[k].matrix()) << "frame " << k;
+    // In a room too the walk is the same: clearance is the camera centre's.
+    EXPECT_TRUE(plain[k].translation() == glancing[k].translation()) << "frame " << k;
+    turned_away = turned_away || std::abs(lookAwayYaw(glancing[k], plain[k])) >= 60.0 - 1e-9;
+  }
+  EXPECT_TRUE(turned_away);
+  // The poses file lists the glances only when they are on.
+  EXPECT_EQ(cameraPathJson("room", plain, 30.0).find("look_away"), std::string::npos);
+  EXPECT_NE(cameraPathJson("room", glancing, 30.0, lookingAway().look_away).find("\"look_away\""), std::string::npos);
+  WalkSettings bad = lookingAway();
+  bad.look_away.max_angle = 200.0;
+  EXPECT_THROW(walkingCameraPath(scene, 10, 1, bad), std::invalid_argument);
+  bad = lookingAway();
+  bad.look_away.min_interval = 0.0;
+  EXPECT_THROW(walkingCameraPath(scene, 10, 1, bad), std::invalid_argument);
+}
+
+// What looking away is for: planes in view leave it and come back within plane tracking's
+// 30-frame memory. Counts, per ground-truth surface of at least 1 % of the frame, its returns
+// after 1-29 absent frames over 5 s of a random room.
+TEST(CameraPath, WhenLookingAwaySurfacesLeaveTheViewAndComeBackWithinThirtyFrames) {
+  const auto re_entries = [](const WalkSettings& settings) {
+    Scene scene = generateRoomScene(11);
+    scene.intrinsics = scene.intrinsics.scaledTo(80, 60);
+    const std::vector<Eigen::Isometry3d> poses = walkingCameraPath(scene, 150, 11, settings);
+    std::vector<RenderedFrame> frames;
+    SequenceSurfaces surfaces;
+    for (const Eigen::Isometry3d& pose : poses) {
+      Scene view = scene;
+      view.world_from_camera = pose;
+      frames.push_back(renderScene(view, RenderSettings{}));
+      surfaces.add(frames.back());
+    }
+    std::map<std::uint32_t, int> absent;  // surface seen before -> frames absent since
+    int returned = 0;
+    for (RenderedFrame& frame : frames) {
+      surfaces.relabel(frame);
+      std::map<std::uint32_t, std::size_t> pixels;
+      for (const std::uint32_t label : frame.labels) pixels[label] += label != 0 ? 1 : 0;
+      for (auto& [surface, frames_absent] : absent) ++frames_absent;
+      for (const auto& [surface, count] : pixels) {
+        if (surface == 0 || count < frame.labels.size() / 100) continue;
+        const auto seen = absent.find(surface);
+        if (seen != absent.end() && seen->second >= 2 && seen->second <= 30) ++returned;
+        absent[surface] = 0;
+      }
+    }
+    return returned;
+  };
+  const int plain = re_entries(WalkSettings());
+  const int glancing = re_entries(lookingAway());
+  // 12 against 4 when written.
+  EXPECT_GE(glancing, 6) << "plain walk: " << plain;
+  EXPECT_GE(glancing, 2 * plain);
 }
 
 // Three planes; in `merged` plane 3's pixels carry 2 (touching and coplanar in that view).

@@ -2,12 +2,14 @@
 // every seed and sensor, scenes made again one at a time byte for byte, saved scene files that
 // render the same frames, sequences of a walking camera (--sequence: every frame's files, the
 // poses a walking step apart, frame 0 the single render, determinism, saved rooms walked as
-// scene files), the quirks of real sensors (only their own sensors' frames change, the ground
-// truth lists them), and a clear error and exit code 2 for every bad combination of arguments.
+// scene files, --look-away turning the camera away and back on the same walk), the quirks of real sensors (only their
+// own sensors' frames change, the ground truth lists them), and a clear error and exit code 2 for every bad combination
+// of arguments.
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -191,6 +193,53 @@ TEST_F(PcdSynth, ASequenceIsTheSameEveryTimeAndASavedRoomCanBeWalkedAsASceneFile
   EXPECT_TRUE(fs::exists(path("file/random_0004.room.poses.json")));
 }
 
+// --look-away: the same walk (the same positions), the camera turned away by 60-90 degrees in
+// some frames, the glances listed in the poses file; a small scene file, to be quick.
+TEST_F(PcdSynth, LookingAwayTurnsTheCameraOfTheSameWalkAndThePosesFileSaysSo) {
+  ASSERT_EQ(run({"--random", "1", "--seed", "4", "--sequence", "1", "--sensor", "none", "--write-scene", "-q", "-o",
+                 path("room").string()})
+                .exit_code,
+            0);
+  const auto walk = [&](const std::string& directory, bool look_away) {
+    std::vector<std::string> arguments = {path("room/random_0004.room.json").string(),
+                                          "--sequence",
+                                          "90",
+                                          "--sensor",
+                                          "none",
+                                          "--width",
+                                          "64",
+                                          "--height",
+                                          "48",
+                                          "-q",
+                                          "-o",
+                                          path(directory).string()};
+    if (look_away) arguments.push_back("--look-away");
+    const Result result = run(arguments);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return readFile(path(directory) / "random_0004.room.poses.json");
+  };
+  const std::string plain = walk("plain", false);
+  const std::string glancing = walk("glancing", true);
+  EXPECT_FALSE(contains(plain, "look_away"));
+  const nlohmann::json listed = nlohmann::json::parse(glancing).at("look_away");
+  EXPECT_EQ(listed.at("angle_degrees"), nlohmann::json({60.0, 90.0}));
+  const std::vector<Eigen::Matrix4d> walked = posesOf(plain);
+  const std::vector<Eigen::Matrix4d> turned = posesOf(glancing);
+  ASSERT_EQ(walked.size(), 90U);
+  ASSERT_EQ(turned.size(), 90U);
+  double widest = 0.0;
+  for (std::size_t k = 0; k < walked.size(); ++k) {
+    const Eigen::Vector3d walked_position = walked[k].col(3).head<3>();
+    const Eigen::Vector3d turned_position = turned[k].col(3).head<3>();
+    EXPECT_TRUE(walked_position == turned_position) << "frame " << k;
+    const Eigen::Matrix3d away = walked[k].block<3, 3>(0, 0).transpose() * turned[k].block<3, 3>(0, 0);
+    widest = std::max(widest, Eigen::AngleAxisd(away).angle() * 180.0 / 3.14159265358979323846);
+  }
+  EXPECT_GE(widest, 60.0 - 1e-6);
+  EXPECT_LE(widest, 90.0 + 1e-6);
+  EXPECT_TRUE(fs::exists(path("glancing/random_0004.room_f0089.none.pcd")));
+}
+
 // The quirks of real sensors: each changes only the frames of the sensor models it belongs to
 // (the exact frames stay as they were) and is listed in those frames' ground truth; a sequence
 // keeps one warp (the scene's seed) through its frames.
@@ -260,6 +309,7 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "1", "--sensor", "scanner", "--bend", "0.02"}, "--bend applies to the kinect model");
   expectRejected({"--random", "1", "--sensor", "none", "--warp", "2"}, "--warp applies to the scanner and kinect");
   expectRejected({"--random", "1", "--sequence", "3", "--speckle"}, "--speckle applies to the scanner model");
+  expectRejected({"--random", "1", "--look-away"}, "--look-away turns the walking camera of --sequence");
 }
 
 }  // namespace
