@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_poses.h"
 #include "common/cli.h"
 #include "common/display_check.h"
 #include "common/plane_view.h"
@@ -63,6 +64,7 @@ struct Options {
   bool json = false;
   bool quiet = false;
   bool track = false;                          ///< the inputs are one sequence; labels are track ids
+  std::optional<std::string> poses;            ///< --poses: the inputs' camera poses (JSON), with --track
   unsigned jobs = pcd_segment::defaultJobs();  ///< inputs segmented at once
   bool view = false;
   std::optional<std::string> snapshot;  ///< given: the file, or empty for <name>.snapshot.png
@@ -154,6 +156,15 @@ void addOutputFlags(CLI::App& app, Options& options) {
                "ids (0 no plane) instead of size ranks; with --json, each plane's \"track\" in <name>.planes.json "
                "and a summary of the tracks in OUT/tracks.json. Segments the frames in order on one thread (-j "
                "above 1 is refused); a frame that cannot be read is reported and skipped");
+  app.add_option_function<std::string>(
+         "--poses", [&options](const std::string& path) { options.poses = path; },
+         "With --track: the camera pose of each input, so that a plane keeps its id however the camera moved: "
+         "before input k the tracker takes the motion inverse(W[j]) * W[k] from the last input segmented, j "
+         "(k-1 unless that one failed). FILE is a JSON object whose \"poses\" array has one entry per input, in "
+         "input order, each with \"world_from_camera\": the 4x4 rigid transform W from the camera's frame (the "
+         "cloud's axes) to a fixed world frame, in metres, as 4 rows of 4 numbers; other keys are ignored. "
+         "pcd_synth --sequence writes such a file (<scene>.poses.json)")
+      ->type_name("FILE");
   app.add_option("-j,--jobs", options.jobs,
                  "Inputs segmented at once, each on a thread of its own (default: one per core); "
                  "outputs and messages are those of -j 1, in input order")
@@ -270,14 +281,21 @@ struct FileResult {
   std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
 };
 
-// Reads, segments and writes one input; throws std::runtime_error saying what went wrong.
-// With --track, `summary` takes the frame once it is segmented (the tracker has then seen it,
-// whatever happens to the outputs).
-FileResult segmentFile(const std::string& input, const pcd_segment::OutputPaths& paths, Segmentation& segmentation,
-                       const Options& options, pcd_segment::TrackSummary* summary) {
+// Reads, segments and writes one input, the index-th; throws std::runtime_error saying what
+// went wrong. With --track, `summary` takes the frame once it is segmented (the tracker has then
+// seen it, whatever happens to the outputs), and with --poses the tracker takes the camera's
+// motion from `motions`.
+FileResult segmentFile(const std::string& input, std::size_t index, const pcd_segment::OutputPaths& paths,
+                       Segmentation& segmentation, const Options& options, pcd_segment::TrackSummary* summary,
+                       pcd_segment::CameraMotions* motions) {
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(input, options.camera);
   const auto points = std::make_shared<Cloud>(std::move(frame.xyz));
+  const std::size_t frames_taken = segmentation.getTracker().frameCount();
+  if (motions) {
+    if (const std::optional<Eigen::Matrix4d> motion = motions->motionTo(index)) segmentation.setCameraMotion(*motion);
+  }
   const Segmented segmented = segment(segmentation, points);
+  if (motions && segmentation.getTracker().frameCount() > frames_taken) motions->taken(index);
   std::vector<std::uint32_t> track_labels;
   if (segmentation.getTracking()) {
     segmentation.getTracker().relabel(segmentation.getLastSegmentation().labels, track_labels);
@@ -369,9 +387,11 @@ struct Outcome {
 
 // Segments every input, options.jobs at a time, going on past failures; prints results and
 // errors in input order and returns the number of inputs that failed. With --track, one
-// segmentation takes the inputs in order on this thread and `summary` follows its tracks.
+// segmentation takes the inputs in order on this thread, `summary` follows its tracks and
+// `motions`, when given (--poses), has one pose per input.
 std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, const Options& options, bool single_file,
-                       const floodplane::Params& params, pcd_segment::TrackSummary* summary) {
+                       const floodplane::Params& params, pcd_segment::TrackSummary* summary,
+                       pcd_segment::CameraMotions* motions) {
   const std::vector<BatchItem> items = batchItems(files, options, single_file);
   pcd_segment::ProgressBar progress(items.size(), !options.quiet && items.size() > 3 && ::isatty(2));
   progress.show(0);
@@ -390,7 +410,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       return outcome;
     }
     try {
-      outcome.result = segmentFile(item.file->path, item.paths, *segmentation, options, summary);
+      outcome.result = segmentFile(item.file->path, i, item.paths, *segmentation, options, summary, motions);
     } catch (const std::exception& error) {
       outcome.error = error.what();
     } catch (...) {
@@ -464,6 +484,17 @@ std::optional<int> checkViewOptions(const CLI::App& app, const Options& options,
   return std::nullopt;
 }
 
+// The poses of --poses, one per input; throws std::runtime_error with a one-line message.
+pcd_segment::CameraMotions readPoses(const std::string& path, std::size_t inputs) {
+  std::vector<Eigen::Matrix4d> poses = pcd_segment::readCameraPoses(path);
+  if (poses.size() != inputs) {
+    throw std::runtime_error(path + ": " + std::to_string(poses.size()) + (poses.size() == 1 ? " pose" : " poses") +
+                             " for " + std::to_string(inputs) + (inputs == 1 ? " input" : " inputs") +
+                             "; give one per input, in input order");
+  }
+  return pcd_segment::CameraMotions(std::move(poses));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -500,16 +531,28 @@ int main(int argc, char** argv) {
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
+  if (options.poses && !options.track) {
+    return floodplane::apps::usageError(app, "--poses gives the camera motion to the tracker: it needs --track");
+  }
   if (options.track && options.jobs > 1 && app.get_option("--jobs")->count() > 0) {
     return floodplane::apps::usageError(app, "--track segments the frames in order on one thread; -j " +
                                                  std::to_string(options.jobs) + " cannot apply (leave -j out)");
+  }
+  std::optional<pcd_segment::CameraMotions> motions;
+  if (options.poses) {
+    try {
+      motions.emplace(readPoses(*options.poses, files.size()));
+    } catch (const std::runtime_error& error) {
+      std::cerr << "pcd_segment: error: --poses " << error.what() << "\n";
+      return 1;
+    }
   }
   if (!createOutputDirectory(single_file ? fs::path(options.output).parent_path() : fs::path(options.output))) {
     return 1;
   }
   pcd_segment::TrackSummary summary;
-  const std::size_t failed =
-      segmentAll(files, options, single_file, segmentation.getParams(), options.track ? &summary : nullptr);
+  const std::size_t failed = segmentAll(files, options, single_file, segmentation.getParams(),
+                                        options.track ? &summary : nullptr, motions ? &*motions : nullptr);
   if (failed > 0 && files.size() > 1) {
     std::cerr << "pcd_segment: " << failed << " of " << files.size() << " inputs failed\n";
   }

@@ -1,5 +1,6 @@
 // pcd_segment --track: its inputs as one sequence, track ids in the label field and the JSON,
-// tracks.json, a bad frame skipped, and -j refused.
+// tracks.json, a bad frame skipped, and -j refused; --poses, the camera motions from a poses
+// file, and its errors.
 
 #include <gtest/gtest.h>
 #include <pcl/console/print.h>
@@ -36,6 +37,27 @@ std::vector<std::uint32_t> labelField(const fs::path& file) {
 }
 
 Json readJson(const fs::path& file) { return Json::parse(readFile(file)); }
+
+using Rows = std::vector<std::vector<double>>;
+const Rows kIdentity = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+// A turn of 120 degrees about (1, 1, 1) (x to y, y to z, z to x) and a step: no plane of a scene
+// keeps its normal and offset under it.
+const Rows kTurned = {{0, 0, 1, 0.5}, {1, 0, 0, 0.2}, {0, 1, 0, -0.3}, {0, 0, 0, 1}};
+
+// A poses file as pcd_synth --sequence writes it: "poses", one entry per frame.
+std::string posesJson(const std::vector<Rows>& poses) {
+  Json entries = Json::array();
+  for (std::size_t k = 0; k < poses.size(); ++k)
+    entries.push_back({{"frame", k}, {"time", static_cast<double>(k) / 30.0}, {"world_from_camera", poses[k]}});
+  return Json{{"scene", "test"}, {"poses", entries}}.dump(2) + "\n";
+}
+
+std::set<std::uint32_t> trackIdsOf(const fs::path& planes_json) {
+  const Json report = readJson(planes_json);  // not in the loop's head: a temporary's member would dangle
+  std::set<std::uint32_t> ids;
+  for (const Json& plane : report["planes"]) ids.insert(plane["track"].get<std::uint32_t>());
+  return ids;
+}
 
 class PcdSegmentTrack : public AppTest {
  protected:
@@ -145,6 +167,114 @@ TEST_F(PcdSegmentTrack, RefusesSeveralJobsAndSaysWhyInTheHelp) {
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_TRUE(contains(help.out, "--track")) << help.out;
   EXPECT_TRUE(contains(help.out, "in order on one thread")) << help.out;
+}
+
+TEST_F(PcdSegmentTrack, TakesTheCameraMotionsOfPosesAndGivesIdsBackAfterATurnAwayAndBack) {
+  copyScene({"a.pcd", "b.pcd", "c.pcd"});
+  // The same cloud three times, but the poses say the camera turned between a and b and back
+  // for c: the tracker moves a's tracks by the turn, so no plane of b matches one (new ids), and
+  // back again, so that c's planes get a's ids back.
+  writeFile(path("turn.json"), posesJson({kIdentity, kTurned, kIdentity}));
+  const Result result = run({path("in").string(), "-o", path("out").string(), "--track", "--json", "-q", "--poses",
+                             path("turn.json").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+  const std::set<std::uint32_t> first = trackIdsOf(path("out/a.planes.json"));
+  const std::set<std::uint32_t> turned = trackIdsOf(path("out/b.planes.json"));
+  ASSERT_GE(first.size(), 5u);
+  ASSERT_EQ(turned.size(), first.size());
+  EXPECT_GT(*turned.begin(), *first.rbegin()) << "a plane of the turned frame kept an id of the first";
+  EXPECT_EQ(labelField(path("out/c.labels.pcd")), labelField(path("out/a.labels.pcd")));
+  const Json tracks = readJson(path("out/tracks.json"));
+  EXPECT_EQ(tracks["frame_count"], 3);
+  EXPECT_EQ(tracks["track_count"], 2 * first.size());
+
+  // Poses that do not move the camera: the ids of no poses at all.
+  writeFile(path("still.json"), posesJson({kIdentity, kIdentity, kIdentity}));
+  ASSERT_EQ(
+      run({path("in").string(), "-o", path("still").string(), "--track", "-q", "--poses", path("still.json").string()})
+          .exit_code,
+      0);
+  for (const std::string name : {"a", "b", "c"})
+    EXPECT_EQ(labelField(path("still/" + name + ".labels.pcd")), labelField(path("out/a.labels.pcd"))) << name;
+}
+
+TEST_F(PcdSegmentTrack, TakesTheMotionFromTheLastFrameSegmentedWhenOneFails) {
+  copyScene({"a.pcd", "c.pcd"});
+  writeFile(path("in/b.pcd"), "not a point cloud\n");
+  // b fails; c's motion is then from a's pose (the same), not from b's (turned).
+  writeFile(path("poses.json"), posesJson({kIdentity, kTurned, kIdentity}));
+  const Result result =
+      run({path("in").string(), "-o", path("out").string(), "--track", "-q", "--poses", path("poses.json").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_TRUE(contains(result.err, "pcd_segment: error: " + path("in/b.pcd").string())) << result.err;
+  EXPECT_EQ(labelField(path("out/c.labels.pcd")), labelField(path("out/a.labels.pcd")));
+}
+
+TEST_F(PcdSegmentTrack, RefusesBadPosesInOneLineBeforeAnyWork) {
+  copyScene({"a.pcd", "b.pcd"});
+  // The first of two poses is `matrix`.
+  const auto rows = [](const Rows& matrix) {
+    Json poses = Json::array();
+    poses.push_back(Json::object({{"world_from_camera", matrix}}));
+    poses.push_back(Json::object({{"world_from_camera", kIdentity}}));
+    return Json::object({{"poses", poses}}).dump();
+  };
+  Rows scaled = kIdentity;
+  scaled[0][0] = 2.0;
+  Rows bottom = kIdentity;
+  bottom[3][0] = 0.1;
+  Rows three_columns = kIdentity;
+  for (auto& row : three_columns) row.pop_back();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "cannot be parsed as JSON: parse error at line 1, column"},
+      {"{\"poses\": [", "cannot be parsed as JSON: parse error at line 1, column"},
+      {"[]", "has no \"poses\" array"},
+      {"{\"poses\": {}}", "has no \"poses\" array"},
+      {posesJson({kIdentity}), "1 pose for 2 inputs"},
+      {posesJson({kIdentity, kIdentity, kIdentity}), "3 poses for 2 inputs"},
+      {"{\"poses\": [{\"frame\": 0}, {}]}", "poses[0] has no \"world_from_camera\""},
+      {rows(three_columns), "poses[0].world_from_camera is not 4 rows of 4 numbers"},
+      {rows({{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}), "poses[0].world_from_camera is not 4 rows of 4 numbers"},
+      {R"({"poses": [{"world_from_camera": [[1, 0, 0, "0"], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}, {}]})",
+       "poses[0].world_from_camera is not 4 rows of 4 numbers"},
+      {R"({"poses": [{"world_from_camera": [[1, 0, 0, 1e999], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}, {}]})",
+       "cannot be parsed as JSON: number overflow parsing '1e999'"},
+      {rows(scaled), "poses[0].world_from_camera is not a finite rigid transform"},
+      {rows(bottom), "poses[0].world_from_camera is not a finite rigid transform"},
+  };
+  for (const auto& [text, message] : cases) {
+    writeFile(path("poses.json"), text);
+    const Result result =
+        run({path("in").string(), "-o", path("out").string(), "--track", "--poses", path("poses.json").string()});
+    EXPECT_EQ(result.exit_code, 1) << text;
+    EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+    EXPECT_TRUE(contains(result.err, "pcd_segment: error: --poses " + path("poses.json").string() + ": " + message))
+        << text << "\n"
+        << result.err;
+    EXPECT_TRUE(result.out.empty()) << result.out;
+    EXPECT_FALSE(fs::exists(path("out"))) << text;
+  }
+  const Result missing =
+      run({path("in").string(), "-o", path("out").string(), "--track", "--poses", path("missing.json").string()});
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(lineCount(missing.err), 1u) << missing.err;
+  EXPECT_TRUE(contains(missing.err, path("missing.json").string() + ": cannot read the file: No such file"))
+      << missing.err;
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
+TEST_F(PcdSegmentTrack, RefusesPosesWithoutTrackAndDescribesThemInTheHelp) {
+  copyScene({"a.pcd", "b.pcd"});
+  writeFile(path("poses.json"), posesJson({kIdentity, kIdentity}));
+  const Result refused = run({path("in").string(), "-o", path("out").string(), "--poses", path("poses.json").string()});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err.substr(0, refused.err.find('\n')),
+            "pcd_segment: error: --poses gives the camera motion to the tracker: it needs --track");
+  EXPECT_FALSE(fs::exists(path("out")));
+  const Result help = run({"--help"});
+  EXPECT_TRUE(contains(help.out, "--poses FILE")) << help.out;
+  EXPECT_TRUE(contains(help.out, "world_from_camera")) << help.out;
 }
 
 // The issue's target on real data, the three consecutive Kinect frames: every plane of at least
