@@ -21,9 +21,14 @@ With --look-away the camera glances away from its walking direction now and then
 (pcd_synth --look-away), so that planes leave the view for a moment and return: the re-entries
 that a plain walk hardly has.
 
+pcd_segment takes the camera poses pcd_synth writes (<scene>.poses.json) with --poses, so that
+the tracker knows the camera's motion between frames; --no-poses leaves them out (the tracker
+then matches planes by their parameters and pixel overlap alone).
+
 Example:
   bench/track_sequences.py --seeds 1-5 --frames 300
   bench/track_sequences.py --seeds 101-102 --frames 150 --look-away   # re-entries
+  bench/track_sequences.py --seeds 101-102 --frames 150 --look-away --no-poses   # without the motions
   bench/track_sequences.py --seeds 1 --frames 30 --ground-truth-as-tracks   # checks this script
 """
 
@@ -155,12 +160,13 @@ def run(command):
     return completed.stdout
 
 
-def has_track_option(pcd_segment):
-    return "--track" in run([pcd_segment, "--help"])
+def has_option(pcd_segment, option):
+    return option in run([pcd_segment, "--help"])
 
 
 def evaluate_seed(seed, args, work):
-    """Renders, segments and scores one seed's sequence; returns its scores."""
+    """Renders, segments and scores one seed's sequence; returns its scores and whether
+    pcd_segment had the sequence's camera poses."""
     name = f"random_{seed:04d}"
     truth, tracks = work / name / "truth", work / name / "tracks"
     run([args.pcd_synth, "--random", 1, "--seed", seed, "--sequence", args.frames, "--sensor", args.sensor,
@@ -168,10 +174,13 @@ def evaluate_seed(seed, args, work):
     frames = sorted(truth.glob(f"{name}_f*.{args.sensor}.pcd"))
     if len(frames) != args.frames:
         sys.exit(f"track_sequences.py: {truth}: {len(frames)} frames, expected {args.frames}")
+    poses = truth / f"{name}.poses.json"
+    with_poses = not args.no_poses and not args.ground_truth_as_tracks and poses.is_file()
     if args.ground_truth_as_tracks:
         outputs = frames
     else:
-        run([args.pcd_segment, *frames, "-o", tracks, "--track", "--ascii", "-q"])
+        run([args.pcd_segment, *frames, "-o", tracks, "--track", *(["--poses", poses] if with_poses else []),
+             "--ascii", "-q"])
         outputs = [tracks / (frame.name[:-len(".pcd")] + ".labels.pcd") for frame in frames]
     evaluator = TrackingEvaluator(args.min_fraction, args.min_iou, args.max_gap)
     for frame, output in zip(frames, outputs):
@@ -181,7 +190,7 @@ def evaluate_seed(seed, args, work):
             evaluator.add_frame(ground_truth, predicted, valid)
         except (OSError, ValueError) as error:
             sys.exit(f"track_sequences.py: {error}")
-    return evaluator.scores
+    return evaluator.scores, with_poses
 
 
 def per100(count, total):
@@ -203,6 +212,9 @@ def main():
     parser.add_argument("--look-away", action="store_true",
                         help="the camera glances away from its walking direction and back (pcd_synth --look-away): "
                         "planes leave the view and return")
+    parser.add_argument("--no-poses", action="store_true",
+                        help="do not give pcd_segment the sequence's camera poses (--poses <scene>.poses.json): "
+                        "the tracker then knows no camera motion")
     parser.add_argument("--sensor", choices=["kinect", "none"], default="kinect", help="sensor model (default kinect)")
     parser.add_argument("--min-fraction", type=float, default=0.01,
                         help="share of the frame from which a plane is present (default 0.01)")
@@ -229,10 +241,14 @@ def main():
     for binary in [args.pcd_synth] + ([] if args.ground_truth_as_tracks else [args.pcd_segment]):
         if not pathlib.Path(binary).is_file():
             sys.exit(f"track_sequences.py: no binary {binary} (build it, or give its path)")
-    if not args.ground_truth_as_tracks and not has_track_option(args.pcd_segment):
+    if not args.ground_truth_as_tracks and not has_option(args.pcd_segment, "--track"):
         sys.exit(f"track_sequences.py: {args.pcd_segment} has no --track option (issue 28's tracking is not built)")
+    if not args.ground_truth_as_tracks and not args.no_poses and not has_option(args.pcd_segment, "--poses"):
+        sys.exit(f"track_sequences.py: {args.pcd_segment} has no --poses option (give --no-poses)")
 
     tracker = "ground truth as tracks" if args.ground_truth_as_tracks else f"{args.pcd_segment} --track"
+    if not args.ground_truth_as_tracks:
+        tracker += " without poses" if args.no_poses else " --poses <scene>.poses.json"
     print(f"machine: {machine()}")
     print(f"sequences: seeds {','.join(map(str, args.seeds))}, {args.frames} frames each, sensor {args.sensor}"
           f"{', looking away' if args.look_away else ''}; tracker: {tracker}")
@@ -240,9 +256,9 @@ def main():
           f"re-entries after 1-{args.max_gap} absent frames\n")
     with tempfile.TemporaryDirectory() as scratch:
         work = pathlib.Path(args.work or scratch)
-        per_seed = {}
+        per_seed, with_poses = {}, {}
         for seed in args.seeds:
-            per_seed[seed] = evaluate_seed(seed, args, work)
+            per_seed[seed], with_poses[seed] = evaluate_seed(seed, args, work)
             print(f"seed {seed}: done", file=sys.stderr, flush=True)
     total = {key: sum(s[key] for s in per_seed.values()) for key in next(iter(per_seed.values()))}
     print("| seed | frames | plane-frames | switches | per 100 | lost | per 100 | re-entries | kept | switched "
@@ -254,6 +270,7 @@ def main():
     if args.json:
         try:
             pathlib.Path(args.json).write_text(json.dumps({"look_away": args.look_away,
+                                                           "poses": all(with_poses.values()),
                                                            "seeds": {str(k): v for k, v in per_seed.items()},
                                                            "all": total}, indent=2) + "\n")
         except OSError as error:

@@ -1,7 +1,8 @@
 """bench/track_sequences.py, the plane tracking figures of issue 28: its Python counting gives
 what src/eval/tracking_metrics.h defines on the hand-made sequences of
 test/eval/test_tracking_metrics.cpp, it reads text PCDs, a rendered sequence scored against
-itself has no switch and nothing lost, and --look-away renders with pcd_synth --look-away."""
+itself has no switch and nothing lost, --look-away renders with pcd_synth --look-away, and
+pcd_segment gets the sequence's camera poses unless --no-poses."""
 
 import json
 import os
@@ -120,6 +121,23 @@ def test_look_away_renders_the_sequence_with_pcd_synth_look_away(tmp_path):
     assert json.loads((tmp_path / "figures.json").read_text())["look_away"] is True
     poses = json.loads((tmp_path / "work/random_0002/truth/random_0002.poses.json").read_text())
     assert poses["look_away"]["angle_degrees"] == [60.0, 90.0]
+
+
+@pytest.mark.skipif("FLOODPLANE_PCD_SYNTH" not in os.environ or "FLOODPLANE_PCD_SEGMENT" not in os.environ,
+                    reason="needs pcd_synth and pcd_segment (FLOODPLANE_PCD_SYNTH, FLOODPLANE_PCD_SEGMENT)")
+def test_pcd_segment_gets_the_camera_poses_unless_no_poses(tmp_path):
+    for no_poses in (False, True):
+        figures_path = tmp_path / f"figures_{no_poses}.json"
+        completed = subprocess.run([sys.executable, str(SOURCE / "bench/track_sequences.py"), "--seeds", "2",
+                                    "--frames", "3", "--sensor", "none", *(["--no-poses"] if no_poses else []),
+                                    "--pcd-synth", os.environ["FLOODPLANE_PCD_SYNTH"], "--pcd-segment",
+                                    os.environ["FLOODPLANE_PCD_SEGMENT"], "--json", str(figures_path)],
+                                   capture_output=True, text=True)
+        assert completed.returncode == 0, completed.stderr
+        assert ("without poses" if no_poses else "--poses <scene>.poses.json") in completed.stdout
+        figures = json.loads(figures_path.read_text())
+        assert figures["poses"] is not no_poses
+        assert figures["all"]["plane_frames"] > 0
 
 
 def test_bad_arguments_are_one_line_errors():
