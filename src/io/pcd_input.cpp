@@ -78,12 +78,15 @@ void checkBodySize(const std::string& path, std::uintmax_t file_size, int data_t
 }
 
 // A number of the header's SIZE, COUNT or POINTS line: PCL reads it with >> into an int or a
-// size_t, which turns an overflowing or negative value into a huge size. One that does not
-// start with digits or exceeds INT_MAX is refused here.
+// size_t, which turns an overflowing or negative value into a huge size. One that is not all
+// digits or exceeds INT_MAX is refused here. All digits: PCL's >> stops inside a word such as
+// "0-465599" and reads the rest as the next value, -465599, a count of 4 G (found by
+// fuzz_pcd_loader as an out-of-memory in PCL's readHeader).
 std::uint64_t headerCount(const std::string& key, const std::string& word) {
   std::uint64_t value = 0;
   const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (error != std::errc() || value > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+  if (error != std::errc() || end != word.data() + word.size() ||
+      value > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
     std::string shown = word.substr(0, 24);
     for (char& c : shown) c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
     fail("corrupt PCD header: " + key + " value '" + shown + "' is not a count");

@@ -260,7 +260,9 @@ TEST_F(InputFrame, RefusesABufferAnnouncedAfterTheDataLine) {
       {"POINTSX 2000000000\n", "bytes of points"},
       {"# comment\nPOINTS 2000000000\n", "bytes of points"},
       {"COUNTX 100000000 1 1\nPOINTS 4\n", "bytes of points"},
-      {"COUNT -100 1 1\n", "is not a count"}};
+      {"COUNT -100 1 1\n", "is not a count"},
+      // PCL's >> reads "0-465599" as 0 and then -465599, a count of 4 G (found by the fuzzer).
+      {"COUNT 0-465599 1 1\n", "is not a count"}};
   for (const auto& [line, reason] : cases) {
     SCOPED_TRACE(line);
     writeFile(path_, header + line + points);
