@@ -27,6 +27,19 @@ namespace {
 
 using namespace floodplane::synth;
 
+// The frames of `scene` seen from each of `poses`, exact sensor, each added to `surfaces`.
+std::vector<RenderedFrame> renderAlong(const Scene& scene, const std::vector<Eigen::Isometry3d>& poses,
+                                       SequenceSurfaces& surfaces) {
+  std::vector<RenderedFrame> frames;
+  for (const Eigen::Isometry3d& pose : poses) {
+    Scene view = scene;
+    view.world_from_camera = pose;
+    frames.push_back(renderScene(view, RenderSettings{}));
+    surfaces.add(frames.back());
+  }
+  return frames;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 double degrees(double radians) { return radians * 180.0 / kPi; }
@@ -236,14 +249,8 @@ TEST(CameraPath, WhenLookingAwaySurfacesLeaveTheViewAndComeBackWithinThirtyFrame
     Scene scene = generateRoomScene(11);
     scene.intrinsics = scene.intrinsics.scaledTo(80, 60);
     const std::vector<Eigen::Isometry3d> poses = walkingCameraPath(scene, 150, 11, settings);
-    std::vector<RenderedFrame> frames;
     SequenceSurfaces surfaces;
-    for (const Eigen::Isometry3d& pose : poses) {
-      Scene view = scene;
-      view.world_from_camera = pose;
-      frames.push_back(renderScene(view, RenderSettings{}));
-      surfaces.add(frames.back());
-    }
+    std::vector<RenderedFrame> frames = renderAlong(scene, poses, surfaces);
     std::map<std::uint32_t, int> absent;  // surface seen before -> frames absent since
     int returned = 0;
     for (RenderedFrame& frame : frames) {
@@ -327,14 +334,8 @@ TEST(SequenceSurfaces, TheSameSurfaceKeepsItsIdAlongAWalk) {
   Scene scene = generateRoomScene(11);
   scene.intrinsics = scene.intrinsics.scaledTo(160, 120);
   const std::vector<Eigen::Isometry3d> poses = walkingCameraPath(scene, 60, 11);
-  std::vector<RenderedFrame> frames;
   SequenceSurfaces surfaces;
-  for (const Eigen::Isometry3d& pose : poses) {
-    Scene view = scene;
-    view.world_from_camera = pose;
-    frames.push_back(renderScene(view, RenderSettings{}));
-    surfaces.add(frames.back());
-  }
+  std::vector<RenderedFrame> frames = renderAlong(scene, poses, surfaces);
   for (RenderedFrame& frame : frames) surfaces.relabel(frame);
   const CameraIntrinsics& camera = scene.intrinsics;
   std::size_t compared = 0;
