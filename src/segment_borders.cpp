@@ -1,7 +1,5 @@
 #include "segment_borders.h"
 
-#include <array>
-
 #include "distance_function.h"
 #include "simd.h"
 
@@ -12,26 +10,23 @@ void SegmentBorders::collect(const PointGrid& grid, const std::vector<std::int32
   borders_.clear();
   const std::size_t width = static_cast<std::size_t>(grid.width);
   const std::size_t height = static_cast<std::size_t>(grid.height);
-  // A pair recurs pixel after pixel along its border, and a few pairs alternate where
-  // borders cross a row: a small direct-mapped cache of the map's entries (which stay where
-  // they are as the map grows) saves most lookups.
-  constexpr std::size_t kCacheSlots = 64;
-  struct Slot {
-    std::uint64_t key = 0;  // 0: empty (label 0 is never part of a pair)
-    SegmentBorder* border = nullptr;
-  };
-  std::array<Slot, kCacheSlots> cache{};
+  // Along a border the pair repeats pixel after pixel: one lookup per change of pair (the
+  // map's entries stay where they are as it grows).
+  std::uint64_t last_key = 0;  // 0: none (label 0 is never part of a pair)
+  SegmentBorder* last = nullptr;
   const auto touch = [&](std::int32_t a, std::size_t i, std::int32_t b, std::size_t j) {
     const Vec3 p = Vec3::load(grid.point(i));
     const Vec3 q = Vec3::load(grid.point(j));
     if (!(squaredEuclideanDistance(p, q) < segments[a].criterion.euclideanToleranceSq(noiseRangeSq(p, q)))) return;
     const std::uint64_t key = borderKey(a, b);
-    Slot& slot = cache[(static_cast<std::size_t>(a) * 31u + static_cast<std::size_t>(b)) % kCacheSlots];
-    if (slot.key != key) slot = {key, &borders_[key]};
+    if (key != last_key) {
+      last = &borders_[key];
+      last_key = key;
+    }
     if (a < b)
-      slot.border->add(p, q);
+      last->add(p, q);
     else
-      slot.border->add(q, p);
+      last->add(q, p);
   };
   const auto pixel = [&](std::size_t i, bool has_right, bool has_below) {
     const std::int32_t a = labels[i];
