@@ -102,6 +102,20 @@ void checkLabels(const std::vector<std::uint32_t>& labels, std::size_t planes, c
                                 std::to_string(*highest) + " but only " + std::to_string(planes) + " planes");
 }
 
+// How far apart a track's plane and a frame's plane are where they were seen: the smaller of
+// the distances from each one's centroid to the other's plane. Not the difference of the
+// offsets d, which compares the planes at the foot of the perpendicular from the camera,
+// often metres from any pixel of either: there a plane fitted to a sliver at the image's edge,
+// its normal a few degrees off, lies tens of centimetres from where the surface is, while
+// near its own pixels it is within millimetres of it (a wall 5 m away, last seen as a
+// 20-pixel-wide strip 0.04 rad off, came back 12 cm away in d and 5 mm away at its
+// centroid). Two parallel surfaces stay their distance apart at every centroid.
+double separation(const PlaneTrack& track, const PlaneFit& fit) {
+  const double plane_at_track = std::abs(fit.normal.dot(track.centroid) + fit.offset);
+  const double track_at_plane = std::abs(track.normal.dot(fit.centroid) + track.offset);
+  return std::min(plane_at_track, track_at_plane);
+}
+
 struct Candidate {
   double score;
   std::size_t track;  // index into the tracks
@@ -179,43 +193,56 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
         pair.pixels / union_pixels;
   }
 
-  // 4. Candidate pairs within the gate, scored by overlap plus parameter similarity.
-  std::vector<Candidate> candidates;
-  for (std::size_t t = 0; t < tracks_.size(); ++t)
-    for (std::size_t p = 0; p < planes.size(); ++p) {
-      const PlaneFit& fit = planes[p].fit;
-      const double angle = std::acos(std::clamp(tracks_[t].normal.dot(fit.normal), -1.0, 1.0));
-      const double offset_difference = std::abs(tracks_[t].offset - fit.offset);
-      if (!(angle <= options_.max_normal_angle && offset_difference <= options_.max_offset_difference)) continue;
-      const double similarity =
-          1.0 - 0.5 * (angle / options_.max_normal_angle + offset_difference / options_.max_offset_difference);
-      candidates.push_back({overlap[t * planes.size() + p] + similarity, t, p});
-    }
-  // Ties go to the older track (tracks_ is by id), then to the larger plane (planes by size).
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    if (a.score != b.score) return a.score > b.score;
-    if (a.track != b.track) return a.track < b.track;
-    return a.plane < b.plane;
-  });
-
-  // 5. Greedy one-to-one assignment; the planes left over start new tracks.
+  // 4. Candidate pairs within the gate, scored by overlap plus parameter similarity, taken
+  // greedily one-to-one (5). Two rounds: every track within the gate, then the tracks lost
+  // before the previous frame, within twice the angle, for the planes still unmatched. A
+  // surface coming back into view shows first as a sliver at the image's edge whose normal
+  // can be off by 0.1-0.2 rad; the wider gate takes it back then rather than giving it a new
+  // id, which would stay with it. Only in the second round, so that it never takes a plane
+  // that a track seen a frame ago matches, and only for lost tracks, whose pixels nothing
+  // else in the frame claims.
   plane_track_ids_.assign(planes.size(), 0);
   const double alpha = options_.smoothing;
-  for (const Candidate& candidate : candidates) {
-    PlaneTrack& track = tracks_[candidate.track];
-    if (track.plane >= 0 || plane_track_ids_[candidate.plane] != 0) continue;
-    const SegmentedPlane& plane = planes[candidate.plane];
-    track.plane = static_cast<int>(candidate.plane);
-    track.last_frame = frame;
-    ++track.frames_seen;
-    track.inlier_count = plane.inlier_count;
-    track.normal = plane.fit.normal;
-    track.offset = plane.fit.offset;
-    track.centroid = plane.fit.centroid;
-    track.smoothed_normal = ((1.0 - alpha) * track.smoothed_normal + alpha * plane.fit.normal).normalized();
-    track.smoothed_offset = (1.0 - alpha) * track.smoothed_offset + alpha * plane.fit.offset;
-    plane_track_ids_[candidate.plane] = track.id;
+  std::vector<Candidate> candidates;
+  for (const bool lost_only : {false, true}) {
+    const double max_angle = lost_only ? 2.0 * options_.max_normal_angle : options_.max_normal_angle;
+    candidates.clear();
+    for (std::size_t t = 0; t < tracks_.size(); ++t) {
+      if (tracks_[t].plane >= 0) continue;
+      if (lost_only && tracks_[t].last_frame + 1 >= frame) continue;
+      for (std::size_t p = 0; p < planes.size(); ++p) {
+        if (plane_track_ids_[p] != 0) continue;
+        const PlaneFit& fit = planes[p].fit;
+        const double angle = std::acos(std::clamp(tracks_[t].normal.dot(fit.normal), -1.0, 1.0));
+        const double apart = separation(tracks_[t], fit);
+        if (!(angle <= max_angle && apart <= options_.max_offset_difference)) continue;
+        const double similarity = 1.0 - 0.5 * (angle / max_angle + apart / options_.max_offset_difference);
+        candidates.push_back({overlap[t * planes.size() + p] + similarity, t, p});
+      }
+    }
+    // Ties go to the older track (tracks_ is by id), then to the larger plane (planes by size).
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+      if (a.score != b.score) return a.score > b.score;
+      if (a.track != b.track) return a.track < b.track;
+      return a.plane < b.plane;
+    });
+    for (const Candidate& candidate : candidates) {
+      PlaneTrack& track = tracks_[candidate.track];
+      if (track.plane >= 0 || plane_track_ids_[candidate.plane] != 0) continue;
+      const SegmentedPlane& plane = planes[candidate.plane];
+      track.plane = static_cast<int>(candidate.plane);
+      track.last_frame = frame;
+      ++track.frames_seen;
+      track.inlier_count = plane.inlier_count;
+      track.normal = plane.fit.normal;
+      track.offset = plane.fit.offset;
+      track.centroid = plane.fit.centroid;
+      track.smoothed_normal = ((1.0 - alpha) * track.smoothed_normal + alpha * plane.fit.normal).normalized();
+      track.smoothed_offset = (1.0 - alpha) * track.smoothed_offset + alpha * plane.fit.offset;
+      plane_track_ids_[candidate.plane] = track.id;
+    }
   }
+  // The planes left over start new tracks.
   for (std::size_t p = 0; p < planes.size(); ++p) {
     if (plane_track_ids_[p] != 0) continue;
     PlaneTrack track;

@@ -34,13 +34,15 @@ struct PlaneTrack {
 /// Feed it each frame's Segmentation in order, with the camera's motion since the previous
 /// frame when it is known. Each plane of the frame is matched one-to-one to a track, by three
 /// cues:
-///  - the angle between the normals and the difference of the offsets (plane distances),
-///    which must both be within Options' limits (a gate, not a preference);
+///  - the angle between the normals and how far apart the two planes are where they were
+///    seen (the smaller of the distances from each one's centroid to the other's plane), which
+///    must both be within Options' limits (a gate, not a preference);
 ///  - the pixel overlap of the plane with the track's pixels in the previous frame, as
 ///    intersection over union of the two label images, counted in one pass over them.
 /// A pair's score is its overlap (0 when the track was not in the previous frame, or when the
 /// overlap is not used, below) plus its parameter similarity
-///   1 - (angle / max_normal_angle + |offset difference| / max_offset_difference) / 2,
+///   1 - (angle / max_normal_angle + separation / max_offset_difference) / 2
+/// (with the second round's wider angle there),
 /// both in [0, 1]; the pairs are taken greedily by falling score. Overlap weighs as much as the
 /// whole parameter range because without a motion the camera's own movement shifts every
 /// plane's offset (by up to the distance moved), and two parallel planes a few centimetres
@@ -59,9 +61,15 @@ struct PlaneTrack {
 ///
 /// Planes that match no track start new tracks. A track not matched stays (lost) for up to
 /// max_lost_frames frames and can be matched again, by its parameters only, in any of them: a
-/// surface that leaves the view and returns within that many frames gets its id back. Since
+/// surface that leaves the view and returns within that many frames gets its id back. A
+/// returning surface shows first as a sliver at the image's edge whose fitted normal can be
+/// 0.1-0.2 rad off, so a second round gives the planes still unmatched to tracks lost before
+/// the previous frame within twice max_normal_angle. Since
 /// a track is matched by its plane's parameters, a surface coplanar with a lost one (within the
 /// gate) may take its id; two planes of one frame never share one.
+///
+/// The planes' centroids (PlaneFit::centroid) must lie on them, as every fit's does: the
+/// separation is measured there.
 ///
 /// Cost per frame: a copy of the label image and one pass over it and the previous one
 /// (counting runs of equal label pairs, not pixels one by one), plus O(tracks x planes).
@@ -71,9 +79,12 @@ class PlaneTracker {
   struct Options {
     /// Largest angle between a track's normal and a plane's normal for them to match [rad].
     /// Covers the fit's noise and, without motions, the camera's turn between two frames.
+    /// A track lost before the previous frame may take a plane no other track matched within
+    /// twice this angle (a returning surface's first sliver).
     double max_normal_angle = 0.15;
-    /// Largest difference between a track's offset and a plane's offset for them to match
-    /// [m]. Covers the fit's noise and, without motions, the camera's movement between two
+    /// Largest distance between a track's plane and a frame's plane where they were seen for
+    /// them to match [m]: the smaller of the distances from each one's centroid to the other's
+    /// plane. Covers the fit's noise and, without motions, the camera's movement between two
     /// frames (walking speed at 30 Hz is 5 cm).
     double max_offset_difference = 0.08;
     /// How many consecutive frames a track may go unseen and still be matched again (K).

@@ -215,8 +215,9 @@ void bindTracker(py::module_& m) {
                       "back when it returns within max_lost_frames frames; new surfaces get new ids. Feed it each "
                       "frame's Segmentation in order. Not thread-safe: one Tracker per stream.")
       .def(py::init(&makeTracker),
-           "Tracker(**options): max_normal_angle [rad] and max_offset_difference [m] (the largest change of a "
-           "plane between frames that still matches), max_lost_frames, smoothing (weight of the newest "
+           "Tracker(**options): max_normal_angle [rad] and max_offset_difference [m] (the largest turn of a "
+           "plane's normal, and the largest distance between two planes where they were seen, that still "
+           "match), max_lost_frames, smoothing (weight of the newest "
            "measurement in the smoothed parameters, (0, 1]), overlap_max_rotation [rad] and "
            "overlap_max_translation [m] (the largest motion for which the label images are compared).")
       .def_property_readonly(

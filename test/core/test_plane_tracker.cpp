@@ -21,11 +21,12 @@ struct Surface {
   Eigen::Vector3d normal;
   double offset;
   int x0, y0, x1, y1;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Constant(NAN);  ///< NaN: the plane's point nearest the sensor
 };
 
 // A segmentation of the surfaces, labelled in the order given (surfaces[k] is label k + 1, a
 // later one painted over an earlier one where they overlap); the centroid is the plane's point
-// nearest the sensor.
+// nearest the sensor unless the surface gives one.
 Segmentation segmentationOf(const std::vector<Surface>& surfaces, int width = kWidth, int height = kHeight) {
   Segmentation segmentation;
   segmentation.width = width;
@@ -36,7 +37,7 @@ Segmentation segmentationOf(const std::vector<Surface>& surfaces, int width = kW
     SegmentedPlane plane;
     plane.fit.normal = s.normal.normalized();
     plane.fit.offset = s.offset;
-    plane.fit.centroid = -s.offset * plane.fit.normal;
+    plane.fit.centroid = s.centroid.allFinite() ? s.centroid : Eigen::Vector3d(-s.offset * plane.fit.normal);
     plane.fit.valid = true;
     for (int y = s.y0; y < s.y1; ++y)
       for (int x = s.x0; x < s.x1; ++x)
@@ -123,6 +124,69 @@ TEST(PlaneTracker, GivesAPlaneItsIdBackWhenItReturnsWithinMaxLostFrames) {
   EXPECT_EQ(back->first_frame, 0u);
   EXPECT_EQ(back->last_frame, 31u);
   EXPECT_EQ(back->frames_seen, 2u);
+}
+
+// A plane fitted to a sliver at the image's edge, its normal tilted by `angle` about the
+// vertical through `centroid`, a point of the true plane.
+Surface tiltedThrough(const Surface& truth, double angle, const Eigen::Vector3d& centroid, int x0, int y0, int x1,
+                      int y1) {
+  const Eigen::Vector3d normal = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()) * truth.normal.normalized();
+  return {normal, -normal.dot(centroid), x0, y0, x1, y1, centroid};
+}
+
+TEST(PlaneTracker, ComparesOffsetsWhereThePlanesWereSeen) {
+  // A wall 5 m ahead, last seen as a sliver 3 m to the right whose normal is 0.04 rad off:
+  // that plane's offset d is 12 cm from the wall's, more than max_offset_difference (8 cm),
+  // but at the sliver it is on the wall, and the wall coming back is on it there.
+  const Surface far_wall{kTowardsCamera, 5.0, 0, 0, 10, 10, Eigen::Vector3d(-2.0, 0.0, 5.0)};
+  const Surface sliver = tiltedThrough(far_wall, 0.04, Eigen::Vector3d(3.0, 0.0, 5.0), 18, 0, 20, 10);
+  ASSERT_GT(std::abs(sliver.offset - far_wall.offset), PlaneTracker::Options().max_offset_difference);
+  PlaneTracker tracker;
+  tracker.update(segmentationOf({floorOf(), sliver}));
+  tracker.update(segmentationOf({floorOf()}));  // out of view
+  const std::vector<std::uint32_t> ids = tracker.update(segmentationOf({floorOf(), far_wall}));
+  EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 2}));
+}
+
+TEST(PlaneTracker, TakesALostTrackBackWithTwiceTheNormalAngleOnlyWhenNothingElseMatches) {
+  const Surface side = sideWall();
+  const Eigen::Vector3d on_side(2.0, 0.0, 3.0);  // a point of the side wall, x = 2
+  // Back from out of view as a sliver 0.2 rad off (max_normal_angle 0.15): its id back.
+  {
+    PlaneTracker tracker;
+    tracker.update(segmentationOf({floorOf(), side}));
+    tracker.update(segmentationOf({floorOf()}));
+    const std::vector<std::uint32_t> ids =
+        tracker.update(segmentationOf({floorOf(), tiltedThrough(side, 0.2, on_side, 18, 0, 20, 12)}));
+    EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 2}));
+  }
+  // Seen a frame ago, the same plane 0.2 rad off is another surface: a new id.
+  {
+    PlaneTracker tracker;
+    tracker.update(segmentationOf({floorOf(), side}));
+    const std::vector<std::uint32_t> ids =
+        tracker.update(segmentationOf({floorOf(), tiltedThrough(side, 0.2, on_side, 12, 0, 20, 12)}));
+    EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 3}));
+  }
+  // Beyond twice the angle: a new id even for a lost track.
+  {
+    PlaneTracker tracker;
+    tracker.update(segmentationOf({floorOf(), side}));
+    tracker.update(segmentationOf({floorOf()}));
+    const std::vector<std::uint32_t> ids =
+        tracker.update(segmentationOf({floorOf(), tiltedThrough(side, 0.35, on_side, 18, 0, 20, 12)}));
+    EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 3}));
+  }
+  // A lost track and a track seen a frame ago both within the wider angle of a plane: the
+  // first round gives it to the one within max_normal_angle, the lost one stays lost.
+  {
+    PlaneTracker tracker;
+    const Surface tilted = tiltedThrough(side, 0.1, on_side, 12, 0, 20, 12);
+    tracker.update(segmentationOf({floorOf(), side, tilted}));  // ids 1, 2, 3
+    tracker.update(segmentationOf({floorOf(), tilted}));        // 2 lost, 3 seen
+    const std::vector<std::uint32_t> ids = tracker.update(segmentationOf({floorOf(), tilted}));
+    EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 3}));
+  }
 }
 
 TEST(PlaneTracker, GivesAPlaneANewIdWhenItWasGoneLongerThanMaxLostFrames) {

@@ -89,6 +89,7 @@ floodplane::Segmentation frameOf(const std::vector<int>& axes) {
     floodplane::SegmentedPlane plane;
     plane.fit.normal = Eigen::Vector3d::Unit(axes[k]);
     plane.fit.offset = 1.0;
+    plane.fit.centroid = -plane.fit.offset * plane.fit.normal;  // on the plane, as a fit's
     plane.inlier_count = 4;
     for (std::size_t x = 0; x < 4; ++x) frame.labels[k * 4 + x] = static_cast<std::uint32_t>(k + 1);
     frame.planes.push_back(plane);
