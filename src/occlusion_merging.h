@@ -22,8 +22,9 @@ namespace floodplane {
 /// shared row or column have no pixels between them to judge and stay apart.
 class OcclusionMerging {
  public:
-  /// Merges such candidates of `planes` (labelled in `labels` by number, 1-based). Afterwards
-  /// `planes.remap()` maps every old number to its new one; returns whether any merged.
+  /// Merges such candidates of `planes` (labelled in `labels` by number, 1-based); returns
+  /// whether any merged. Only when it did does `planes.remap()` map every old number to its
+  /// new one (with fewer than two planes it is left as the previous stage set it).
   bool run(const PointGrid& full, const RenumberedLabels& labels, PlaneCandidates& planes,
            const MergeCriterion& criterion, const Tolerances& tolerances, float angular_pitch);
 

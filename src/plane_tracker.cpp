@@ -49,6 +49,16 @@ void moveIntoCurrentFrame(PlaneTrack& track, const Eigen::Isometry3d& motion) {
   track.centroid = motion.inverse() * track.centroid;
 }
 
+// Takes a frame's plane as the track's newest measurement.
+void measure(PlaneTrack& track, const SegmentedPlane& plane, double alpha) {
+  track.inlier_count = plane.inlier_count;
+  track.normal = plane.fit.normal;
+  track.offset = plane.fit.offset;
+  track.centroid = plane.fit.centroid;
+  track.smoothed_normal = ((1.0 - alpha) * track.smoothed_normal + alpha * plane.fit.normal).normalized();
+  track.smoothed_offset = (1.0 - alpha) * track.smoothed_offset + alpha * plane.fit.offset;
+}
+
 // Pixel counts of two label images of one size: per label of each, and per pair of plane
 // labels that share pixels. One pass, by runs of equal pairs: along a row a plane's label
 // rarely changes, so a frame has a few thousand runs for 300 000 pixels.
@@ -102,18 +112,25 @@ void checkLabels(const std::vector<std::uint32_t>& labels, std::size_t planes, c
                                 std::to_string(*highest) + " but only " + std::to_string(planes) + " planes");
 }
 
-// How far apart a track's plane and a frame's plane are where they were seen: the smaller of
-// the distances from each one's centroid to the other's plane. Not the difference of the
-// offsets d, which compares the planes at the foot of the perpendicular from the camera,
-// often metres from any pixel of either: there a plane fitted to a sliver at the image's edge,
-// its normal a few degrees off, lies tens of centimetres from where the surface is, while
-// near its own pixels it is within millimetres of it (a wall 5 m away, last seen as a
-// 20-pixel-wide strip 0.04 rad off, came back 12 cm away in d and 5 mm away at its
-// centroid). Two parallel surfaces stay their distance apart at every centroid.
-double separation(const PlaneTrack& track, const PlaneFit& fit) {
-  const double plane_at_track = std::abs(fit.normal.dot(track.centroid) + fit.offset);
-  const double track_at_plane = std::abs(track.normal.dot(fit.centroid) + track.offset);
-  return std::min(plane_at_track, track_at_plane);
+// How far apart a track's plane and a frame's plane are: the smallest of the difference of
+// their offsets d and the distances from each one's centroid to the other's plane. The offsets
+// compare the planes at the foot of the perpendicular from the camera, often metres from any
+// pixel of either: there a plane fitted to a sliver at the image's edge, its normal a few
+// degrees off, lies tens of centimetres from where the surface is, while near its own pixels
+// it is within millimetres of it (a wall 5 m away, last seen as a 20-pixel-wide strip 0.04 rad
+// off, came back 12 cm away in d and 5 mm away at its centroid). The centroids, in turn, move
+// with a camera turn the tracker was not told of (0.1 rad moves a centroid 5 m away by 50 cm
+// off the turned plane), which leaves d as it was. Two parallel surfaces stay their distance
+// apart by all three.
+double separation(const Eigen::Vector3d& normal, double offset, const Eigen::Vector3d& centroid, const PlaneFit& fit) {
+  const double offsets = std::abs(offset - fit.offset);
+  const double plane_at_track = std::abs(fit.normal.dot(centroid) + fit.offset);
+  const double track_at_plane = std::abs(normal.dot(fit.centroid) + offset);
+  return std::min({offsets, plane_at_track, track_at_plane});
+}
+
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
 }
 
 struct Candidate {
@@ -213,8 +230,9 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
       for (std::size_t p = 0; p < planes.size(); ++p) {
         if (plane_track_ids_[p] != 0) continue;
         const PlaneFit& fit = planes[p].fit;
-        const double angle = std::acos(std::clamp(tracks_[t].normal.dot(fit.normal), -1.0, 1.0));
-        const double apart = separation(tracks_[t], fit);
+        const PlaneTrack& track = tracks_[t];
+        const double angle = angleBetween(track.normal, fit.normal);
+        const double apart = separation(track.normal, track.offset, track.centroid, fit);
         if (!(angle <= max_angle && apart <= options_.max_offset_difference)) continue;
         const double similarity = 1.0 - 0.5 * (angle / max_angle + apart / options_.max_offset_difference);
         candidates.push_back({overlap[t * planes.size() + p] + similarity, t, p});
@@ -233,12 +251,7 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
       track.plane = static_cast<int>(candidate.plane);
       track.last_frame = frame;
       ++track.frames_seen;
-      track.inlier_count = plane.inlier_count;
-      track.normal = plane.fit.normal;
-      track.offset = plane.fit.offset;
-      track.centroid = plane.fit.centroid;
-      track.smoothed_normal = ((1.0 - alpha) * track.smoothed_normal + alpha * plane.fit.normal).normalized();
-      track.smoothed_offset = (1.0 - alpha) * track.smoothed_offset + alpha * plane.fit.offset;
+      measure(track, plane, alpha);
       plane_track_ids_[candidate.plane] = track.id;
     }
   }
@@ -250,10 +263,9 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
     track.first_frame = track.last_frame = frame;
     track.frames_seen = 1;
     track.plane = static_cast<int>(p);
-    track.inlier_count = planes[p].inlier_count;
-    track.normal = track.smoothed_normal = planes[p].fit.normal;
-    track.offset = track.smoothed_offset = planes[p].fit.offset;
-    track.centroid = planes[p].fit.centroid;
+    track.smoothed_normal = planes[p].fit.normal;
+    track.smoothed_offset = planes[p].fit.offset;
+    measure(track, planes[p], 1.0);
     tracks_.push_back(track);  // ids grow, so tracks_ stays by id
     plane_track_ids_[p] = track.id;
   }

@@ -34,9 +34,10 @@ struct PlaneTrack {
 /// Feed it each frame's Segmentation in order, with the camera's motion since the previous
 /// frame when it is known. Each plane of the frame is matched one-to-one to a track, by three
 /// cues:
-///  - the angle between the normals and how far apart the two planes are where they were
-///    seen (the smaller of the distances from each one's centroid to the other's plane), which
-///    must both be within Options' limits (a gate, not a preference);
+///  - the angle between the normals and how far apart the two planes are (the smallest of the
+///    difference of their offsets and the distances from each one's centroid to the other's
+///    plane: a sliver's normal a few degrees off moves its offset, a camera turn its centroid),
+///    which must both be within Options' limits (a gate, not a preference);
 ///  - the pixel overlap of the plane with the track's pixels in the previous frame, as
 ///    intersection over union of the two label images, counted in one pass over them.
 /// A pair's score is its overlap (0 when the track was not in the previous frame, or when the
@@ -69,7 +70,7 @@ struct PlaneTrack {
 /// gate) may take its id; two planes of one frame never share one.
 ///
 /// The planes' centroids (PlaneFit::centroid) must lie on them, as every fit's does: the
-/// separation is measured there.
+/// planes' distance is measured there too.
 ///
 /// Cost per frame: a copy of the label image and one pass over it and the previous one
 /// (counting runs of equal label pairs, not pixels one by one), plus O(tracks x planes).
@@ -82,9 +83,9 @@ class PlaneTracker {
     /// A track lost before the previous frame may take a plane no other track matched within
     /// twice this angle (a returning surface's first sliver).
     double max_normal_angle = 0.15;
-    /// Largest distance between a track's plane and a frame's plane where they were seen for
-    /// them to match [m]: the smaller of the distances from each one's centroid to the other's
-    /// plane. Covers the fit's noise and, without motions, the camera's movement between two
+    /// Largest distance between a track's plane and a frame's plane for them to match [m]:
+    /// the smallest of the difference of their offsets and the distances from each one's
+    /// centroid to the other's plane. Covers the fit's noise and, without motions, the camera's movement between two
     /// frames (walking speed at 30 Hz is 5 cm).
     double max_offset_difference = 0.08;
     /// How many consecutive frames a track may go unseen and still be matched again (K).

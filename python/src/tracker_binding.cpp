@@ -216,8 +216,8 @@ void bindTracker(py::module_& m) {
                       "frame's Segmentation in order. Not thread-safe: one Tracker per stream.")
       .def(py::init(&makeTracker),
            "Tracker(**options): max_normal_angle [rad] and max_offset_difference [m] (the largest turn of a "
-           "plane's normal, and the largest distance between two planes where they were seen, that still "
-           "match), max_lost_frames, smoothing (weight of the newest "
+           "plane's normal, and the largest distance between two planes, by their offsets or at their "
+           "centroids, that still match), max_lost_frames, smoothing (weight of the newest "
            "measurement in the smoothed parameters, (0, 1]), overlap_max_rotation [rad] and "
            "overlap_max_translation [m] (the largest motion for which the label images are compared).")
       .def_property_readonly(

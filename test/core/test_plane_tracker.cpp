@@ -148,6 +148,19 @@ TEST(PlaneTracker, ComparesOffsetsWhereThePlanesWereSeen) {
   EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 2}));
 }
 
+TEST(PlaneTracker, KeepsAFarPlaneThroughACameraTurnItWasNotToldOf) {
+  // The camera turns 0.1 rad about its vertical axis between two frames, no motion given: the
+  // wall's normal and centroid turn with it (the centroid by 50 cm, far off the turned plane),
+  // its offset d stays.
+  const Surface far_wall{kTowardsCamera, 5.0, 0, 0, 10, 10, Eigen::Vector3d(0.0, 0.0, 5.0)};
+  const Eigen::AngleAxisd turn(0.1, Eigen::Vector3d::UnitY());
+  const Surface turned{turn * far_wall.normal, 5.0, 2, 0, 12, 10, turn * far_wall.centroid};
+  PlaneTracker tracker;
+  tracker.update(segmentationOf({floorOf(), far_wall}));
+  const std::vector<std::uint32_t> ids = tracker.update(segmentationOf({floorOf(), turned}));
+  EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 2}));
+}
+
 TEST(PlaneTracker, TakesALostTrackBackWithTwiceTheNormalAngleOnlyWhenNothingElseMatches) {
   const Surface side = sideWall();
   const Eigen::Vector3d on_side(2.0, 0.0, 3.0);  // a point of the side wall, x = 2
