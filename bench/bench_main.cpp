@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerSoak();
   floodplane::bench::registerSmoothing();
   floodplane::bench::registerNoiseEstimation();
+  floodplane::bench::registerTracking();
   floodplane::bench::registerMemoryFloor();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -17,6 +17,8 @@ void registerSoak();
 void registerSmoothing();
 /// The noise estimation alone: a fixed cost per call, whatever the frame's size.
 void registerNoiseEstimation();
+/// PlaneTracker::update and relabel on the three consecutive real frames (issue 28).
+void registerTracking();
 /// One pass that reads every point and writes a label: the floor under any segmentation.
 void registerMemoryFloor();
 

@@ -27,6 +27,14 @@ struct PlaneTrack {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();          ///< of its inliers when last seen [m]
   Eigen::Vector3d smoothed_normal = Eigen::Vector3d::UnitZ();  ///< exponentially smoothed n, unit
   double smoothed_offset = 0.0;                                ///< exponentially smoothed d [m]
+  /// The plane as measured in the frame where the track had the most inliers (moved like the
+  /// others), since the last frame given without a motion (which makes it the newest
+  /// measurement): a reference a plane is also compared with, since a surface last seen as a
+  /// sliver at the image's edge or at range may have been measured far off.
+  std::uint32_t best_inlier_count = 0;
+  Eigen::Vector3d best_normal = Eigen::Vector3d::UnitZ();   ///< n there, unit
+  double best_offset = 0.0;                                 ///< d there [m]
+  Eigen::Vector3d best_centroid = Eigen::Vector3d::Zero();  ///< centroid there [m]
 };
 
 /// Gives the planes of a stream of segmentations ids that persist over frames (PCL-free).
@@ -37,7 +45,12 @@ struct PlaneTrack {
 ///  - the angle between the normals and how far apart the two planes are (the smallest of the
 ///    difference of their offsets and the distances from each one's centroid to the other's
 ///    plane: a sliver's normal a few degrees off moves its offset, a camera turn its centroid),
-///    which must both be within Options' limits (a gate, not a preference);
+///    which must both be within Options' limits (a gate, not a preference). A track's plane
+///    here is two measurements, its newest and its best (the frame where it had the most
+///    inliers), and the closer of the two counts: a surface that shrank to a sliver at the
+///    image's edge or receded to where Kinect noise is centimetres, and was fitted ever
+///    further off as it went, comes back as its best view saw it. Only while the motions are
+///    given: a frame without one makes the newest measurement the best;
 ///  - the pixel overlap of the plane with the track's pixels in the previous frame, as
 ///    intersection over union of the two label images, counted in one pass over them.
 /// A pair's score is its overlap (0 when the track was not in the previous frame, or when the

@@ -198,6 +198,17 @@ void bindTrack(py::module_& m) {
           "smoothed_normal", [](const PlaneTrack& t) -> Eigen::Vector3d { return t.smoothed_normal; },
           "exponentially smoothed unit normal (3,)")
       .def_readonly("smoothed_offset", &PlaneTrack::smoothed_offset, "exponentially smoothed offset d [m]")
+      .def_readonly("best_inliers", &PlaneTrack::best_inlier_count,
+                    "pixels in the frame where it had the most (since the last update without a motion, which "
+                    "makes the newest the best): where best_normal, best_offset and best_centroid were "
+                    "measured (moved like the others since)")
+      .def_property_readonly(
+          "best_normal", [](const PlaneTrack& t) -> Eigen::Vector3d { return t.best_normal; },
+          "unit normal where it had the most inliers (3,)")
+      .def_readonly("best_offset", &PlaneTrack::best_offset, "offset d where it had the most inliers [m]")
+      .def_property_readonly(
+          "best_centroid", [](const PlaneTrack& t) -> Eigen::Vector3d { return t.best_centroid; },
+          "mean of its inliers where it had the most (3,) [m]")
       .def("__repr__", [](const PlaneTrack& t) {
         return "Track(id=" + std::to_string(t.id) + ", first_frame=" + std::to_string(t.first_frame) +
                ", last_frame=" + std::to_string(t.last_frame) + ", frames_seen=" + std::to_string(t.frames_seen) +

@@ -161,6 +161,37 @@ TEST(PlaneTracker, KeepsAFarPlaneThroughACameraTurnItWasNotToldOf) {
   EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 2}));
 }
 
+TEST(PlaneTracker, TakesALostTrackBackByItsBestMeasuredPlaneWhenTheMotionsAreKnown) {
+  // The side wall is seen whole, then shrinks to a sliver at the image's edge whose fitted
+  // normal drifts 0.14 rad a frame (each step within max_normal_angle, so the track follows
+  // it) to 0.42 rad off, then leaves the view. It comes back whole and as it is: 0.42 rad from
+  // the track's newest measurement, beyond even twice max_normal_angle, and on the plane the
+  // track measured with the most inliers. The camera stands still, and says so.
+  const Surface side = sideWall();
+  const Eigen::Vector3d on_side(2.0, 0.0, 3.0);
+  for (const bool motions_known : {true, false}) {
+    SCOPED_TRACE(motions_known ? "motions given" : "no motions");
+    PlaneTracker tracker;
+    const auto update = [&](const Segmentation& segmentation) {
+      return motions_known ? tracker.update(segmentation, Eigen::Isometry3d::Identity()) : tracker.update(segmentation);
+    };
+    update(segmentationOf({floorOf(), side}));
+    for (const double drift : {0.14, 0.28, 0.42})
+      ASSERT_EQ(update(segmentationOf({floorOf(), tiltedThrough(side, drift, on_side, 18, 0, 20, 12)})),
+                (std::vector<std::uint32_t>{1, 2}));
+    update(segmentationOf({floorOf()}));
+    const std::vector<std::uint32_t> ids = update(segmentationOf({floorOf(), side}));
+    if (motions_known) {
+      EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 2}));
+      EXPECT_EQ(tracker.track(2)->best_inlier_count, 96u);  // the whole wall, 8 x 12 pixels
+    } else {
+      // Without motions a view from frames ago is in a camera frame moved by an unknown amount:
+      // only the newest measurement counts, and the wall is a new surface.
+      EXPECT_EQ(ids, (std::vector<std::uint32_t>{1, 3}));
+    }
+  }
+}
+
 TEST(PlaneTracker, TakesALostTrackBackWithTwiceTheNormalAngleOnlyWhenNothingElseMatches) {
   const Surface side = sideWall();
   const Eigen::Vector3d on_side(2.0, 0.0, 3.0);  // a point of the side wall, x = 2

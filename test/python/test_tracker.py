@@ -68,6 +68,11 @@ def test_gives_the_same_ids_to_the_same_frame_segmented_twice(segmented):
         np.testing.assert_allclose(track.smoothed_normal, plane.normal, atol=1e-9)
         assert track.smoothed_offset == pytest.approx(plane.d)
         assert track.normal.shape == (3,) and track.smoothed_normal.shape == (3,)
+        # The same frame twice: its best measurement is that frame's.
+        assert track.best_inliers == plane.inliers
+        np.testing.assert_allclose(track.best_normal, plane.normal, atol=1e-12)
+        assert track.best_offset == pytest.approx(plane.d)
+        np.testing.assert_allclose(track.best_centroid, plane.centroid)
     assert tracker.track(2).id == 2
     assert tracker.track(99) is None
     assert repr(tracks[0]).startswith("Track(id=1, first_frame=0, last_frame=1, frames_seen=2")
