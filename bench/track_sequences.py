@@ -39,6 +39,9 @@ import pathlib
 import subprocess
 import sys
 import tempfile
+import warnings
+
+import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from bench_common import ROOT, machine  # noqa: E402
@@ -57,21 +60,26 @@ class TrackingEvaluator:
         if not len(ground_truth) == len(predicted) == len(valid):
             raise ValueError(f"ground truth, prediction and mask differ in size "
                              f"({len(ground_truth)}, {len(predicted)}, {len(valid)})")
-        plane_pixels, id_pixels, overlaps = {}, {}, {}
-        for g, p, v in zip(ground_truth, predicted, valid):
-            if not v:
-                continue
-            if g:
-                plane_pixels[g] = plane_pixels.get(g, 0) + 1
-                if p:
-                    overlaps[(g, p)] = overlaps.get((g, p), 0) + 1
-            if p:
-                id_pixels[p] = id_pixels.get(p, 0) + 1
-        candidates = {}  # plane -> (overlap, id)
-        for (g, p), overlap in overlaps.items():
-            best = candidates.get(g)
-            if best is None or overlap > best[0] or (overlap == best[0] and p < best[1]):
-                candidates[g] = (overlap, p)
+        # Pixel counts per plane, per id and per (plane, id) pair, over the valid pixels: numpy
+        # counts a 640x480 frame in milliseconds where a loop over its pixels took a tenth of a second.
+        mask = np.asarray(valid, dtype=bool)
+        plane_of = np.asarray(ground_truth, dtype=np.int64)[mask]
+        id_of = np.asarray(predicted, dtype=np.int64)[mask]
+
+        def counts(values):
+            labels, pixels = np.unique(values[values != 0], return_counts=True)
+            return dict(zip(labels.tolist(), pixels.tolist()))
+
+        plane_pixels, id_pixels = counts(plane_of), counts(id_of)
+        both = (plane_of != 0) & (id_of != 0)
+        base = int(id_of.max(initial=0)) + 1  # a (plane, id) pair as one number: plane * base + id
+        pairs, overlap_pixels = np.unique(plane_of[both] * base + id_of[both], return_counts=True)
+        candidates = {}  # plane -> (overlap, id): the id overlapping it most, the smaller one on a tie
+        for pair, overlap in zip(pairs.tolist(), overlap_pixels.tolist()):
+            plane, track_id = divmod(pair, base)
+            best = candidates.get(plane)
+            if best is None or overlap > best[0] or (overlap == best[0] and track_id < best[1]):
+                candidates[plane] = (overlap, track_id)
         min_pixels = math.ceil(self.min_fraction * len(ground_truth))
         present = {g for g, pixels in plane_pixels.items() if pixels >= min_pixels}
         for g, history in self.planes.items():
@@ -108,7 +116,8 @@ class TrackingEvaluator:
 
 
 def read_ascii_pcd(path):
-    """The label of every point and whether its x is finite, from a text PCD."""
+    """The label of every point and whether its x is finite, from a text PCD: two numpy arrays
+    (int64, bool)."""
     with open(path) as f:
         fields, points = None, None
         for line in f:
@@ -126,16 +135,20 @@ def read_ascii_pcd(path):
         if fields is None or "label" not in fields or "x" not in fields or points is None:
             raise ValueError(f"{path}: not a PCD with x and label fields")
         x_column, label_column = fields.index("x"), fields.index("label")
-        lines = f.read().splitlines()
+        body = f.read()
+    # All the numbers at once (numpy parses "nan" too): what both tools write, one value a
+    # field; anything else (or a malformed body) goes line by line, which says what is wrong.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)  # numpy's note on a body it could not read to its end
+        values = np.fromstring(body, sep=" ")
+    if values.size == points * len(fields):
+        return values[label_column::len(fields)].astype(np.int64), ~np.isnan(values[x_column::len(fields)])
+    lines = body.splitlines()
     if len(lines) != points:
         raise ValueError(f"{path}: {len(lines)} points, the header says {points}")
-    if x_column == 0 and label_column == len(fields) - 1:  # as both tools write them: fast
-        labels = [int(line[line.rfind(" ") + 1:]) for line in lines]
-        valid = [not line.startswith(("nan", "NaN", "-nan")) for line in lines]
-    else:
-        rows = [line.split() for line in lines]
-        labels = [int(row[label_column]) for row in rows]
-        valid = [row[x_column].lower() not in ("nan", "-nan") for row in rows]
+    rows = [line.split() for line in lines]
+    labels = np.array([int(row[label_column]) for row in rows], dtype=np.int64)
+    valid = np.array([row[x_column].lower() not in ("nan", "-nan") for row in rows], dtype=bool)
     return labels, valid
 
 

@@ -86,7 +86,15 @@ def test_text_pcds_give_their_labels_and_finite_points(tmp_path):
               "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\nDATA ascii\n")
     path = tmp_path / "frame.pcd"
     path.write_text(header + "1 2 3 7\nnan nan nan 0\n-1 0.5 2 12\n")
-    assert track_sequences.read_ascii_pcd(path) == ([7, 0, 12], [True, False, True])
+    labels, valid = track_sequences.read_ascii_pcd(path)
+    assert (labels.tolist(), valid.tolist()) == ([7, 0, 12], [True, False, True])
+    # Fields in another order.
+    path.write_text(header.replace("x y z label", "label x y z") + "7 1 2 3\n0 nan nan nan\n12 -1 0.5 2\n")
+    labels, valid = track_sequences.read_ascii_pcd(path)
+    assert (labels.tolist(), valid.tolist()) == ([7, 0, 12], [True, False, True])
+    path.write_text(header + "1 2 3 7\nnan nan nan 0\n")
+    with pytest.raises(ValueError, match="2 points, the header says 3"):
+        track_sequences.read_ascii_pcd(path)
     path.write_text(header.replace("ascii", "binary_compressed"))
     with pytest.raises(ValueError, match="text PCDs only"):
         track_sequences.read_ascii_pcd(path)
