@@ -139,15 +139,18 @@ void checkLabels(const std::vector<std::uint32_t>& labels, std::size_t planes, c
 // with a camera turn the tracker was not told of (0.1 rad moves a centroid 5 m away by 50 cm
 // off the turned plane), which leaves d as it was. Two parallel surfaces stay their distance
 // apart by all three.
-double separation(const Eigen::Vector3d& normal, double offset, const Eigen::Vector3d& centroid, const PlaneFit& fit) {
-  const double offsets = std::abs(offset - fit.offset);
-  const double plane_at_track = std::abs(fit.normal.dot(centroid) + fit.offset);
-  const double track_at_plane = std::abs(normal.dot(fit.centroid) + offset);
-  return std::min({offsets, plane_at_track, track_at_plane});
-}
+// One of a track's two measurements a plane is compared with, by reference into the track.
+struct Measurement {
+  const Eigen::Vector3d& normal;
+  double offset;
+  const Eigen::Vector3d& centroid;
+};
 
-double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+double separation(const Measurement& track, const PlaneFit& fit) {
+  const double offsets = std::abs(track.offset - fit.offset);
+  const double plane_at_track = std::abs(fit.normal.dot(track.centroid) + fit.offset);
+  const double track_at_plane = std::abs(track.normal.dot(fit.centroid) + track.offset);
+  return std::min({offsets, plane_at_track, track_at_plane});
 }
 
 struct Candidate {
@@ -256,10 +259,10 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
         const PlaneTrack& track = tracks_[t];
         // Against the newest measurement and against the best one; the closer counts.
         double similarity = -1.0;
-        for (const bool best : {false, true}) {
-          const double angle = angleBetween(best ? track.best_normal : track.normal, fit.normal);
-          const double apart = best ? separation(track.best_normal, track.best_offset, track.best_centroid, fit)
-                                    : separation(track.normal, track.offset, track.centroid, fit);
+        for (const Measurement& measured : {Measurement{track.normal, track.offset, track.centroid},
+                                            Measurement{track.best_normal, track.best_offset, track.best_centroid}}) {
+          const double angle = std::acos(std::clamp(measured.normal.dot(fit.normal), -1.0, 1.0));
+          const double apart = separation(measured, fit);
           if (angle <= max_angle && apart <= options_.max_offset_difference)
             similarity = std::max(similarity, 1.0 - 0.5 * (angle / max_angle + apart / options_.max_offset_difference));
         }
@@ -292,10 +295,8 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
     track.first_frame = track.last_frame = frame;
     track.frames_seen = 1;
     track.plane = static_cast<int>(p);
-    track.smoothed_normal = planes[p].fit.normal;
-    track.smoothed_offset = planes[p].fit.offset;
-    measure(track, planes[p], 1.0);
-    tracks_.push_back(track);  // ids grow, so tracks_ stays by id
+    measure(track, planes[p], 1.0);  // weight 1: the first measurement is the smoothed one too
+    tracks_.push_back(track);        // ids grow, so tracks_ stays by id
     plane_track_ids_[p] = track.id;
   }
 
