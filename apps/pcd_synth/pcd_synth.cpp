@@ -59,6 +59,7 @@ struct Options {
   std::optional<std::string> sensor;  // default: "both" for scene files, "all" for --random
   std::uint64_t seed = 1;
   std::optional<int> random_count;
+  std::optional<std::string> family;  // of --random: "room" (default) or "boards"
   std::optional<int> sequence_frames;
   bool look_away = false;  // glances away from the walking direction in a sequence
   std::optional<int> width;
@@ -241,10 +242,44 @@ void renderSceneFile(const std::string& scene_file, const Options& options) {
   }
 }
 
+bool boardsFamily(const Options& options) { return options.family && *options.family == "boards"; }
+
+// "random_0007", or "boards_0007" for --family boards.
+std::string randomSceneName(std::uint64_t seed, const Options& options) {
+  return boardsFamily(options) ? synth::boardsSceneName(seed) : synth::randomSceneName(seed);
+}
+
+// The boards scene of `seed` in every requested sensor model (none, kinect).
+std::string renderBoardsSeed(std::uint64_t seed, const Options& options) {
+  const std::string name = synth::boardsSceneName(seed);
+  const synth::Scene scene = synth::generateBoardsScene(seed);
+  if (options.write_scene) {
+    floodplane::io::writeBytesAtomically((fs::path(options.output_dir) / (name + ".boards.json")).string(),
+                                         synth::sceneJson(scene));
+  }
+  std::ostringstream summary;
+  for (const synth::SensorModel sensor : sensorModels(*options.sensor)) {
+    const synth::RenderedFrame frame = synth::renderScene(scene, renderSettings(sensor, seed, seed, options));
+    writeFrame(outputStem(options, name, sensor), frame, options);
+    std::size_t edges = 0;
+    for (const auto& plane : frame.planes) {
+      edges += plane.pixel_count > 0 && synth::isBoardEdgeFace(plane.primitive, plane.face) ? 1 : 0;
+    }
+    summary << "; " << synth::sensorModelName(sensor) << " " << frame.intrinsics.width << "x" << frame.intrinsics.height
+            << ", " << visiblePlanes(frame) << " of " << frame.planes.size() << " planes visible, " << edges
+            << " board edges";
+    if (sensor != synth::SensorModel::none) {
+      summary << ", " << std::fixed << std::setprecision(1) << 100.0 * missingFraction(frame) << " % no return";
+    }
+  }
+  return summary.str();
+}
+
 // Generates the scenes of `seed` the sensors need (the room for none and kinect, the blocks for
-// the scanner), renders them with noise seed `seed`, writes the outputs and returns a summary
-// for the progress line.
+// the scanner; the boards scene for --family boards), renders them with noise seed `seed`,
+// writes the outputs and returns a summary for the progress line.
 std::string renderRandomSeed(std::uint64_t seed, const Options& options) {
+  if (boardsFamily(options)) return renderBoardsSeed(seed, options);
   const std::string name = synth::randomSceneName(seed);
   if (options.sequence_frames) {
     const synth::Scene scene = synth::generateRoomScene(seed);
@@ -315,7 +350,7 @@ std::vector<std::string> renderRandomScenes(const Options& options) {
       const std::string summary = renderRandomSeed(seed, options);
       const std::chrono::duration<double> time = std::chrono::steady_clock::now() - start;
       if (!options.quiet) {
-        std::cout << synth::randomSceneName(seed) << " (" << i + 1 << " of " << count << ")" << summary << "; "
+        std::cout << randomSceneName(seed, options) << " (" << i + 1 << " of " << count << ")" << summary << "; "
                   << std::fixed << std::setprecision(2) << time.count() << " s\n"
                   << std::flush;
       }
@@ -340,6 +375,16 @@ std::string inconsistency(const Options& options) {
   }
   if (options.sequence_frames && options.sensor && (*options.sensor == "scanner" || *options.sensor == "all")) {
     return "--sequence walks through rooms seen by the sensor models none and kinect, not the scanner's";
+  }
+  if (options.family && !options.random_count) {
+    return "--family chooses the family of the generated scenes of --random N";
+  }
+  if (boardsFamily(options) && options.sequence_frames) {
+    return "--family boards renders single frames; --sequence walks through the room family";
+  }
+  if (boardsFamily(options) && options.sensor && (*options.sensor == "scanner" || *options.sensor == "all")) {
+    return "--family boards has no scanner scene: its rooms are for the sensor models none and kinect (--sensor "
+           "none, kinect or both)";
   }
   if (options.look_away && !options.sequence_frames) {
     return "--look-away turns the walking camera of --sequence N";
@@ -396,7 +441,8 @@ int main(int argc, char** argv) {
       "into organized pcl::PointXYZL clouds: the measured point in x y z (NaN for no return) and the "
       "ground-truth plane id in label. Writes <scene>.<sensor>.pcd and <scene>.<sensor>.planes.json per scene "
       "and sensor model into OUTDIR. Random scene i (from 0) has seed S + i and is named random_<seed, 4 "
-      "digits>; the kinect and none frames show a room, the scanner frame blocks on a table. With --sequence N, "
+      "digits>; the kinect and none frames show a room, the scanner frame blocks on a table (--family boards: "
+      "boards_<seed>, 2 cm boards in a bare room, none and kinect only). With --sequence N, "
       "writes N frames of a camera walking through each scene instead: <scene>_f0000.<sensor>.pcd to "
       "<scene>_f<N-1>.<sensor>.pcd (and .planes.json), with one ground-truth id per surface over the whole "
       "sequence, and <scene>.poses.json with each frame's camera pose.",
@@ -408,6 +454,14 @@ int main(int argc, char** argv) {
   app.add_option("--random", options.random_count,
                  "Render N generated scenes, seeds S to S + N - 1, instead of scene files")
       ->check(CLI::Range(1, kMaxRandomScenes));
+  app.add_option("--family", options.family,
+                 "With --random: which generated scenes. room (default): a furnished room for none and kinect, "
+                 "blocks on a table for the scanner, named random_<seed>. boards: a bare room with 2-5 boards 2 cm "
+                 "thick (standing or hung on a wall, leaning on it at 5-25 degrees, lying on the floor, a shelf "
+                 "sticking out of a wall), seen from 0.8-3.5 m at an angle so that their 2 cm edges show, named "
+                 "boards_<seed> (so both families can share a directory); sensor models none and kinect only "
+                 "(default both), no --sequence; --write-scene saves <scene>.boards.json")
+      ->check(CLI::IsMember({"room", "boards"}));
   app.add_option("--sequence", options.sequence_frames,
                  "Render N frames of a camera walking through each scene: 1.0-1.4 m/s at 30 Hz, turning about "
                  "the vertical at up to 30 deg/s, nodding up to 4 degrees, never nearer than 0.5 m to a surface "
@@ -425,7 +479,7 @@ int main(int argc, char** argv) {
   app.add_option("--sensor", options.sensor,
                  "Sensor model: none (exact), kinect, scanner (close-range structured light; random scanner "
                  "scenes are 512x512), both (none and kinect) or all; default both for scene files and --sequence, "
-                 "all for --random")
+                 "all for --random (both for --random --family boards)")
       ->check(CLI::IsMember({"none", "kinect", "scanner", "both", "all"}));
   app.add_option("--seed", options.seed, "Seed of the sensor noise; with --random also of the first scene (S)")
       ->capture_default_str();
@@ -469,7 +523,7 @@ int main(int argc, char** argv) {
   if (const std::string problem = inconsistency(options); !problem.empty())
     return floodplane::apps::usageError(app, problem);
   if (!options.sensor) {
-    options.sensor = options.random_count && !options.sequence_frames ? "all" : "both";
+    options.sensor = options.random_count && !options.sequence_frames && !boardsFamily(options) ? "all" : "both";
   }
   if (const std::string problem = quirkInconsistency(options); !problem.empty())
     return floodplane::apps::usageError(app, problem);
