@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -288,8 +289,13 @@ std::string boardsSceneName(std::uint64_t seed) {
 }
 
 bool isBoardEdgeFace(const std::string& primitive, const std::string& face) {
-  const bool board = primitive.size() > 6 && primitive.find(" board ") != std::string::npos;
-  return board && !face.empty() && face != "+y" && face != "-y";
+  // "<kind> board <n>": three words, the last a number.
+  std::istringstream words(primitive);
+  std::string kind, noun, number, more;
+  words >> kind >> noun >> number;
+  const bool board = noun == "board" && !number.empty() &&
+                     number.find_first_not_of("0123456789") == std::string::npos && !(words >> more);
+  return board && (face == "+x" || face == "-x" || face == "+z" || face == "-z");
 }
 
 Scene generateBoardsScene(std::uint64_t seed) {

@@ -48,7 +48,8 @@ std::string boardsSceneName(std::uint64_t seed);
 Scene generateBoardsScene(std::uint64_t seed);
 
 /// Whether the face `face` ("+x" ... "-z", a ground-truth plane's face) of the primitive named
-/// `primitive` is a 2 cm edge of a board of generateBoardsScene.
+/// `primitive` is a 2 cm edge of a board of generateBoardsScene: the primitive is named
+/// "<kind> board <n>" and the face is +x, -x, +z or -z.
 bool isBoardEdgeFace(const std::string& primitive, const std::string& face);
 
 }  // namespace floodplane::synth
