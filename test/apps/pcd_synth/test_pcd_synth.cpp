@@ -2,7 +2,8 @@
 // every seed and sensor, scenes made again one at a time byte for byte, saved scene files that
 // render the same frames, sequences of a walking camera (--sequence: every frame's files, the
 // poses a walking step apart, frame 0 the single render, determinism, saved rooms walked as
-// scene files, --look-away turning the camera away and back on the same walk), the quirks of real sensors (only their
+// scene files, --look-away turning the camera away and back on the same walk), the boards family
+// (--family boards: its own names and files, none and kinect only), the quirks of real sensors (only their
 // own sensors' frames change, the ground truth lists them), and a clear error and exit code 2 for every bad combination
 // of arguments.
 
@@ -103,6 +104,48 @@ TEST_F(PcdSynth, OneSensorWritesOnlyItsOwnFrames) {
   EXPECT_FALSE(fs::exists(path("out/random_0003.none.pcd")));
   EXPECT_FALSE(fs::exists(path("out/random_0003.kinect.pcd")));
   EXPECT_TRUE(contains(result.out, "% no return")) << result.out;
+}
+
+TEST_F(PcdSynth, TheBoardsFamilyWritesBoardsScenesForNoneAndKinectNamedApartFromTheRooms) {
+  const Result boards =
+      run({"--random", "2", "--seed", "5", "--family", "boards", "--write-scene", "-o", path("out").string()});
+  ASSERT_EQ(boards.exit_code, 0) << boards.err;
+  EXPECT_EQ(lineCount(boards.out), 2U) << boards.out;
+  EXPECT_TRUE(contains(boards.out, "boards_0005 (1 of 2)")) << boards.out;
+  EXPECT_TRUE(contains(boards.out, "board edges")) << boards.out;
+  for (const std::string scene : {"boards_0005", "boards_0006"}) {
+    for (const std::string sensor : {"none", "kinect"}) {
+      EXPECT_TRUE(fs::exists(path("out") / (scene + "." + sensor + ".pcd"))) << scene << " " << sensor;
+      EXPECT_TRUE(fs::exists(path("out") / (scene + "." + sensor + ".planes.json"))) << scene << " " << sensor;
+    }
+    EXPECT_FALSE(fs::exists(path("out") / (scene + ".scanner.pcd"))) << scene;
+    EXPECT_TRUE(fs::exists(path("out") / (scene + ".boards.json"))) << scene;
+  }
+  // The ground truth lists each board's six faces under its name.
+  const auto listing = nlohmann::json::parse(readFile(path("out/boards_0005.none.planes.json")));
+  int board_faces = 0;
+  for (const auto& plane : listing.at("planes")) {
+    board_faces += contains(plane.at("primitive").get<std::string>(), " board ") ? 1 : 0;
+  }
+  EXPECT_GE(board_faces, 2 * 6);
+  EXPECT_EQ(board_faces % 6, 0);
+  // The rooms of the same seeds go into the same directory without touching the boards.
+  const std::string kinect = readFile(path("out/boards_0005.kinect.pcd"));
+  ASSERT_EQ(run({"--random", "1", "--seed", "5", "--sensor", "kinect", "-q", "-o", path("out").string()}).exit_code, 0);
+  EXPECT_TRUE(fs::exists(path("out/random_0005.kinect.pcd")));
+  EXPECT_TRUE(readFile(path("out/boards_0005.kinect.pcd")) == kinect);
+  EXPECT_FALSE(readFile(path("out/random_0005.kinect.pcd")) == kinect);
+  // --family room is the default family, byte for byte.
+  ASSERT_EQ(
+      run({"--random", "1", "--seed", "5", "--sensor", "kinect", "--family", "room", "-q", "-o", path("room").string()})
+          .exit_code,
+      0);
+  EXPECT_TRUE(readFile(path("room/random_0005.kinect.pcd")) == readFile(path("out/random_0005.kinect.pcd")));
+  // A saved boards scene renders the same frame from its file.
+  const Result file = run({path("out/boards_0005.boards.json").string(), "--sensor", "kinect", "--seed", "5", "-q",
+                           "-o", path("files").string()});
+  ASSERT_EQ(file.exit_code, 0) << file.err;
+  EXPECT_TRUE(readFile(path("files/boards_0005.boards.kinect.pcd")) == kinect);
 }
 
 // "random_0009_f0002.kinect.pcd".
@@ -310,6 +353,11 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "1", "--sensor", "none", "--warp", "2"}, "--warp applies to the scanner and kinect");
   expectRejected({"--random", "1", "--sequence", "3", "--speckle"}, "--speckle applies to the scanner model");
   expectRejected({"--random", "1", "--look-away"}, "--look-away turns the walking camera of --sequence");
+  expectRejected({"--random", "1", "--family", "planks"}, "--family");
+  expectRejected({"scene.json", "--family", "boards"}, "--family chooses the family of the generated scenes");
+  expectRejected({"--random", "1", "--family", "boards", "--sensor", "scanner"}, "--family boards has no scanner");
+  expectRejected({"--random", "1", "--family", "boards", "--sensor", "all"}, "--family boards has no scanner");
+  expectRejected({"--random", "1", "--family", "boards", "--sequence", "3"}, "--family boards renders single frames");
 }
 
 }  // namespace
