@@ -68,7 +68,7 @@ def match_one_to_one(ground_truth, predicted, valid, min_pixels):
     """The ground-truth planes of at least `min_pixels` valid pixels, each with its size and
     the IoU of its partner among the predicted segments of at least `min_pixels` (0 without
     one): pairs taken best IoU first, each plane and segment in at most one pair (the smaller
-    labels first on a tie). Returns {plane label: (pixels, iou)}."""
+    labels first on a tie). Returns {plane label: Match}."""
     if not len(ground_truth) == len(predicted) == len(valid):
         raise ValueError(f"ground truth, prediction and mask differ in size "
                          f"({len(ground_truth)}, {len(predicted)}, {len(valid)})")
@@ -87,13 +87,56 @@ def match_one_to_one(ground_truth, predicted, valid, min_pixels):
         g, p = divmod(pair, base)
         if g in plane_size and p in segment_size:
             candidates.append((-overlap / (plane_size[g] + segment_size[p] - overlap), g, p))
-    result = {g: (n, 0.0) for g, n in plane_size.items()}
-    taken = set()
+    iou = {g: 0.0 for g in plane_size}
+    partner_of_segment = {}
     for negative_iou, g, p in sorted(candidates):
-        if result[g][1] == 0.0 and p not in taken:
-            result[g] = (plane_size[g], -negative_iou)
-            taken.add(p)
+        if iou[g] == 0.0 and p not in partner_of_segment:
+            iou[g] = -negative_iou
+            partner_of_segment[p] = g
+    # Where each plane's pixels went: its largest overlap with a kept segment, and the rest.
+    largest = {}
+    for pair, overlap in zip(pairs.tolist(), overlaps.tolist()):
+        g, p = divmod(pair, base)
+        if g in plane_size and p in segment_size and overlap > largest.get(g, (0, 0))[0]:
+            largest[g] = (overlap, p)
+    in_segments = {g: 0 for g in plane_size}
+    for pair, overlap in zip(pairs.tolist(), overlaps.tolist()):
+        g, p = divmod(pair, base)
+        if g in plane_size and p in segment_size:
+            in_segments[g] += overlap
+    result = {}
+    for g, n in plane_size.items():
+        overlap, p = largest.get(g, (0, 0))
+        result[g] = Match(n, iou[g], 1.0 - in_segments[g] / n, overlap / n,
+                          partner_of_segment.get(p) if p else None)
     return result
+
+
+class Match:
+    """A ground-truth plane's match: its pixels, its IoU with its partner segment, the share of
+    its pixels in no (kept) segment, the share in the segment overlapping it most, and the plane
+    that segment is the partner of (None: no such segment, or one without a partner)."""
+
+    def __init__(self, pixels, iou, unlabelled, in_largest, largest_partner):
+        self.pixels, self.iou, self.unlabelled = pixels, iou, unlabelled
+        self.in_largest, self.largest_partner = in_largest, largest_partner
+
+
+def where_missed(match, plane, described):
+    """Where the pixels of a face that was not found went, in words."""
+    if match.unlabelled >= 0.5:
+        return "mostly unlabelled"
+    if match.largest_partner is None:
+        return "mostly in a segment matched to no plane"
+    other = described[match.largest_partner]
+    if match.largest_partner == plane["id"]:
+        return "its own segment, IoU too low"
+    if face_class(other["primitive"], other["face"]) == "room":
+        return "mostly in a floor, wall or ceiling segment"
+    if other["primitive"] == plane["primitive"]:
+        return "mostly in a segment of its own board's " + (
+            "broad face" if face_class(other["primitive"], other["face"]) == "large" else "edge")
+    return "mostly in another board's segment"
 
 
 def score_frame(ground_truth, predicted, valid, listing, min_pixels, min_iou):
@@ -101,14 +144,18 @@ def score_frame(ground_truth, predicted, valid, listing, min_pixels, min_iou):
     IoU and whether it was found. `listing`: the planes of the frame's .planes.json."""
     described = {plane["id"]: plane for plane in listing}
     records = []
-    for g, (pixels, iou) in sorted(match_one_to_one(ground_truth, predicted, valid, min_pixels).items()):
-        plane = described.get(g)
-        if plane is None:
+    matches = match_one_to_one(ground_truth, predicted, valid, min_pixels)
+    for g in sorted(matches):
+        if g not in described:
             raise ValueError(f"label {g} is not in the ground-truth listing")
+    for g, match in sorted(matches.items()):
+        plane = described[g]
+        found = match.iou >= min_iou
         records.append({"id": g, "primitive": plane["primitive"], "face": plane["face"],
                         "class": face_class(plane["primitive"], plane["face"]),
-                        "kind": board_kind(plane["primitive"]), "pixels": pixels, "iou": iou,
-                        "found": iou >= min_iou})
+                        "kind": board_kind(plane["primitive"]), "pixels": match.pixels, "iou": match.iou,
+                        "found": found, "unlabelled": match.unlabelled,
+                        "missed": None if found else where_missed(match, plane, described)})
     return records
 
 
@@ -132,6 +179,8 @@ def figures(records):
                               for kind in sorted({r["kind"] for r in thin})}
     result["thin_by_pixels"] = {size_bin_name(low, high): summarize(
         [r for r in thin if r["pixels"] >= low and (high is None or r["pixels"] < high)]) for low, high in SIZE_BINS}
+    missed = [r["missed"] for r in thin if not r["found"]]
+    result["thin_missed"] = {where: missed.count(where) for where in sorted(set(missed))}
     return result
 
 
@@ -243,6 +292,12 @@ def main():
             for key, s in results[sensor][group].items():
                 label = f"{key} boards" if group == "thin_by_kind" else f"{key} px"
                 print(f"| {sensor} | {label} | {s['faces']} | {s['found']} | {share_text(s)} | {iou_text(s)} |")
+    print("\nWhere the pixels of the 2 cm edges not found went:\n")
+    print("| sensor | edges not found | count |")
+    print("|---|---|---:|")
+    for sensor in sensors:
+        for where, count in results[sensor]["thin_missed"].items():
+            print(f"| {sensor} | {where} | {count} |")
     if args.json:
         try:
             pathlib.Path(args.json).write_text(json.dumps(

@@ -26,10 +26,18 @@ LISTING = [{"id": 1, "primitive": "wall 1", "face": ""},
            {"id": 4, "primitive": "leaning board 2", "face": "-x"}]
 
 
-def score(ground_truth, predicted, valid=None, min_pixels=2, min_iou=0.8):
+def records(ground_truth, predicted, valid=None, min_pixels=2, min_iou=0.8):
     valid = [True] * len(ground_truth) if valid is None else [c != "x" for c in valid]
-    records = thin_faces.score_frame(labels(ground_truth), labels(predicted), valid, LISTING, min_pixels, min_iou)
-    return {r["id"]: (r["class"], r["pixels"], round(r["iou"], 3), r["found"]) for r in records}
+    return thin_faces.score_frame(labels(ground_truth), labels(predicted), valid, LISTING, min_pixels, min_iou)
+
+
+def score(*arguments, **options):
+    return {r["id"]: (r["class"], r["pixels"], round(r["iou"], 3), r["found"])
+            for r in records(*arguments, **options)}
+
+
+def missed(*arguments, **options):
+    return {r["id"]: r["missed"] for r in records(*arguments, **options)}
 
 
 def test_faces_are_classed_by_primitive_name_and_face():
@@ -50,6 +58,19 @@ def test_an_edge_taken_by_the_broad_face_is_missed_and_the_broad_face_still_foun
     assert s[3] == ("thin", 2, 0.0, False)
     assert s[2] == ("large", 8, 0.8, True)
     assert s[1] == ("room", 6, 1.0, True)
+
+
+def test_where_the_pixels_of_a_face_not_found_went():
+    assert missed("1111222222223311", "5555777777777755")[3] == "mostly in a segment of its own board's broad face"
+    assert missed("1111222222223311", "5555777777778855")[3] is None
+    assert missed("1111222222223311", "5555777777770055")[3] == "mostly unlabelled"
+    assert missed("1111222222224411", "5555777777555555")[4] == "mostly in a floor, wall or ceiling segment"
+    assert missed("1111222222224411", "5555777777999955")[4] == "its own segment, IoU too low"
+    # Plane 4's partner is segment 5 (IoU 1/4); most of its pixels are in segment 6, too large
+    # to be anyone's partner.
+    assert missed("4444..........11", "5666666666666611", min_pixels=1)[4] == "mostly in a segment matched to no plane"
+    # Plane 4's pixels in segment 6, partner of plane 2 (a broad face of another board).
+    assert missed("22224444", "66666669", min_pixels=1, min_iou=0.3)[4] == "mostly in another board's segment"
 
 
 def test_an_edge_segmented_on_its_own_is_found():
@@ -86,10 +107,12 @@ def test_small_planes_and_segments_are_left_out_and_nan_pixels_ignored():
 
 
 def test_figures_count_per_class_kind_and_size():
-    records = [{"class": "thin", "kind": "leaning", "pixels": 400, "iou": 0.9, "found": True},
-               {"class": "thin", "kind": "standing", "pixels": 2000, "iou": 0.5, "found": False},
-               {"class": "large", "kind": "standing", "pixels": 9000, "iou": 0.95, "found": True}]
-    f = thin_faces.figures(records)
+    faces = [{"class": "thin", "kind": "leaning", "pixels": 400, "iou": 0.9, "found": True, "missed": None},
+             {"class": "thin", "kind": "standing", "pixels": 2000, "iou": 0.5, "found": False,
+              "missed": "mostly unlabelled"},
+             {"class": "large", "kind": "standing", "pixels": 9000, "iou": 0.95, "found": True, "missed": None}]
+    f = thin_faces.figures(faces)
+    assert f["thin_missed"] == {"mostly unlabelled": 1}
     assert (f["thin"]["faces"], f["thin"]["found"], f["thin"]["share"]) == (2, 1, 0.5)
     assert f["thin"]["mean_iou"] == pytest.approx(0.7)
     assert f["room"] == {"faces": 0, "found": 0, "share": None, "mean_iou": None}
