@@ -18,6 +18,10 @@
 #include "synth/room_shell.h"
 #include "synth/scene_generator.h"
 
+// Every draw from the random source is a statement of its own: the order in which a function's
+// arguments are evaluated is unspecified, and two draws in one call could give another scene
+// with another compiler.
+
 namespace floodplane::synth {
 namespace {
 
@@ -127,8 +131,9 @@ class BoardsLayout {
         const double length = random_.uniform(0.3, 1.8);
         for (int attempt = 0; attempt < 30; ++attempt) {
           const double yaw = random_.uniform(0, 2 * kPi);
-          const Footprint footprint{Eigen::Vector2d(random_.uniform(0, shell_.width), random_.uniform(0, shell_.depth)),
-                                    Eigen::Vector2d(width / 2, length / 2), yaw};
+          const double x = random_.uniform(0, shell_.width);
+          const double y = random_.uniform(0, shell_.depth);
+          const Footprint footprint{Eigen::Vector2d(x, y), Eigen::Vector2d(width / 2, length / 2), yaw};
           if (!floor_.fits(footprint, kBoardGap, 0.1)) continue;
           floor_.add(footprint);
           const Eigen::Vector3d across(std::cos(yaw), std::sin(yaw), 0.0);
@@ -254,7 +259,8 @@ bool placeCamera(Scene& scene, const BoardsLayout& layout, RandomSource& random,
   const RoomShell& shell = layout.shell();
   for (int attempt = 0; attempt < kPoseAttempts; ++attempt) {
     const PlacedBoard& target_board = random.pick(layout.placed());
-    const Eigen::Vector3d jitter(random.gaussian(), random.gaussian(), random.gaussian());
+    Eigen::Vector3d jitter;
+    for (int axis = 0; axis < 3; ++axis) jitter[axis] = random.gaussian();
     const Eigen::Vector3d target = target_board.interest + 0.05 * jitter;
     distance = random.uniform(0.8, 3.5);
     const double camera_height = random.uniform(0.7, std::min(2.3, shell.height - 0.4));
@@ -301,9 +307,11 @@ bool isBoardEdgeFace(const std::string& primitive, const std::string& face) {
 Scene generateBoardsScene(std::uint64_t seed) {
   RandomSource random(seed, kBoardsStream);
   for (int layout_attempt = 0; layout_attempt < kLayoutAttempts; ++layout_attempt) {
-    BoardsLayout layout(makeRoomShell(random.uniform(3.0, 6.0), random.uniform(3.0, 6.0), random.uniform(2.4, 3.0),
-                                      random.chance(0.5)),
-                        random);
+    const double width = random.uniform(3.0, 6.0);
+    const double depth = random.uniform(3.0, 6.0);
+    const double height = random.uniform(2.4, 3.0);
+    const bool ceiling = random.chance(0.5);
+    BoardsLayout layout(makeRoomShell(width, depth, height, ceiling), random);
     const int wanted = random.integer(2, 5);
     for (int b = 0; b < wanted; ++b) layout.add(randomBoardKind(random));
     if (layout.placed().size() < 2) continue;

@@ -107,7 +107,8 @@ TEST(BoardsScenes, BoardsAreBoxes2CmThickAlongTheirOwnYInsideTheRoomAsTheirKindS
       high = high.cwiseMax(v);
     }
     for (const Primitive& primitive : scene.primitives) {
-      const bool room = primitive.name == "floor" || primitive.name == "ceiling" || primitive.name.rfind("wall ", 0) == 0;
+      const bool room =
+          primitive.name == "floor" || primitive.name == "ceiling" || primitive.name.rfind("wall ", 0) == 0;
       EXPECT_TRUE(room || !kindOf(primitive.name).empty()) << primitive.name;
     }
     for (const Primitive* board : boards) {
