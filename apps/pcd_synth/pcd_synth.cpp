@@ -267,7 +267,7 @@ std::string renderBoardsSeed(std::uint64_t seed, const Options& options) {
     }
     summary << "; " << synth::sensorModelName(sensor) << " " << frame.intrinsics.width << "x" << frame.intrinsics.height
             << ", " << visiblePlanes(frame) << " of " << frame.planes.size() << " planes visible, " << edges
-            << " board edges";
+            << (edges == 1 ? " board edge" : " board edges");
     if (sensor != synth::SensorModel::none) {
       summary << ", " << std::fixed << std::setprecision(1) << 100.0 * missingFraction(frame) << " % no return";
     }
@@ -495,7 +495,7 @@ int main(int argc, char** argv) {
   app.add_flag("--png", options.png, "Also write <scene>.<sensor>.labels.png (ground truth)");
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
-               "<scene>.blocks.json");
+               "<scene>.blocks.json (<scene>.boards.json with --family boards)");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
   // A real sensor's quirks (synth/scanner_model.h, synth/sensor_model.h, synth/depth_warp.h).
   app.add_option("--quantize-bits", options.quantize_bits,

@@ -112,7 +112,7 @@ TEST_F(PcdSynth, TheBoardsFamilyWritesBoardsScenesForNoneAndKinectNamedApartFrom
   ASSERT_EQ(boards.exit_code, 0) << boards.err;
   EXPECT_EQ(lineCount(boards.out), 2U) << boards.out;
   EXPECT_TRUE(contains(boards.out, "boards_0005 (1 of 2)")) << boards.out;
-  EXPECT_TRUE(contains(boards.out, "board edges")) << boards.out;
+  EXPECT_TRUE(contains(boards.out, " board edge")) << boards.out;
   for (const std::string scene : {"boards_0005", "boards_0006"}) {
     for (const std::string sensor : {"none", "kinect"}) {
       EXPECT_TRUE(fs::exists(path("out") / (scene + "." + sensor + ".pcd"))) << scene << " " << sensor;
