@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerSmoothing();
   floodplane::bench::registerNoiseEstimation();
   floodplane::bench::registerTracking();
+  floodplane::bench::registerHeadStart();
   floodplane::bench::registerMemoryFloor();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

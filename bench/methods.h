@@ -19,6 +19,8 @@ void registerSmoothing();
 void registerNoiseEstimation();
 /// PlaneTracker::update and relabel on the three consecutive real frames (issue 28).
 void registerTracking();
+/// Cold starts against head starts, interleaved, on a rendered walk (issue 28).
+void registerHeadStart();
 /// One pass that reads every point and writes a label: the floor under any segmentation.
 void registerMemoryFloor();
 

@@ -77,6 +77,18 @@ struct SegmentImage {
   std::vector<SegmentEdge>& edges;
 };
 
+// What a head start (Segmenter::Options::head_start) takes from the last frame: its noise.
+struct PreviousFrame {
+  bool valid = false;  // the last call completed with the current parameters
+  int width = 0;
+  int height = 0;
+  NoiseModel noise;            // measured on the raw frame
+  NoiseModel segment_noise;    // measured on the smoothed frame
+  int frames_since_noise = 0;  // frames since the noise was last measured
+
+  bool continuedBy(const PointGrid& grid) const { return valid && width == grid.width && height == grid.height; }
+};
+
 }  // namespace
 
 struct Segmenter::Workspace {
@@ -96,25 +108,27 @@ struct Segmenter::Workspace {
   PlaneMerger merger;
   std::vector<PlaneSums> cluster_sums;
   RegionBuilder regions;
-
+  PreviousFrame previous;
+  NoiseModel segment_noise;  // the segmented grid's noise (smoothed: less than the raw frame's)
   // The frame's grid (sub-sampled when s > 1), its angular pitch and noise model, and every
-  // buffer reset for it.
-  Frame prepare(const PointGrid& full, const Params& params, NoiseModel& noise) {
+  // buffer reset for it. With `reuse_noise`, the previous frame's noise models stand in for
+  // the two measurements (raw and smoothed): the noise belongs to the sensor, not the scene.
+  Frame prepare(const PointGrid& full, const Params& params, bool reuse_noise, NoiseModel& noise) {
     Frame frame;
     const int s = params.subsampling;
     frame.full_pitch = SeedSelector::estimateAngularPitch(full, pitch_scratch);
     frame.pitch = frame.full_pitch * static_cast<float>(s);
-    noise = noiseModel(full, params);
+    noise = reuse_noise ? previous.noise : noiseModel(full, params);
     const PointGrid& filled = holes.fill(full, Tolerances(params, noise, frame.full_pitch, full.size()));
     // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
     // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
     // Kinect). A noise model the user gives describes the raw data: no smoothing then; nor on
     // exact depths rounded to a lattice (roundingOnly).
-    NoiseModel segment_noise = noise;
+    segment_noise = noise;
     frame.source = &filled;
     if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch) && !roundingOnly(noise)) {
       frame.source = &smoothing.smooth(filled, noise);
-      segment_noise = noise_estimator.estimate(*frame.source);
+      segment_noise = reuse_noise ? previous.segment_noise : noise_estimator.estimate(*frame.source);
     }
     frame.grid = sample(*frame.source, s);
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
@@ -140,21 +154,23 @@ struct Segmenter::Workspace {
     const int stride = std::max(1, kSeedStride / params.subsampling);
     const int offset = stride / 2;
     Seed seed;
+    // Tests the candidate at (x, y) with `seeds` and floods from it if it is a seed.
+    const auto tryCandidate = [&](const SeedSelector& seeds, int x, int y) {
+      const std::size_t pixel =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
+      if (buffer.label(pixel) != 0) return;
+      ++result.stats.seed_candidates;
+      if (seeds.test(grid, x, y, seed) != SeedVerdict::kAccepted) return;
+      ++result.stats.seeds;
+      const std::int32_t label = static_cast<std::int32_t>(segments.size());
+      segments.emplace_back();
+      PhaseTimer timer(timed, flooding);
+      result.stats.pixels_taken_over +=
+          flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
+    };
     for (const SeedSelector* seeds : {&selector, &fine_selector}) {
       for (int y = offset; y < grid.height; y += stride) {
-        for (int x = offset; x < grid.width; x += stride) {
-          const std::size_t pixel =
-              static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
-          if (buffer.label(pixel) != 0) continue;
-          ++result.stats.seed_candidates;
-          if (seeds->test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
-          ++result.stats.seeds;
-          const std::int32_t label = static_cast<std::int32_t>(segments.size());
-          segments.emplace_back();
-          PhaseTimer timer(timed, flooding);
-          result.stats.pixels_taken_over +=
-              flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
-        }
+        for (int x = offset; x < grid.width; x += stride) tryCandidate(*seeds, x, y);
       }
     }
     if (timed) {
@@ -226,6 +242,7 @@ Segmenter& Segmenter::operator=(Segmenter&&) noexcept = default;
 void Segmenter::setParams(const Params& params) {
   params.validate();
   params_ = params;
+  workspace_->previous.valid = false;  // a head start needs the same parameters
 }
 
 const Segmentation& Segmenter::segment(const PointGrid& full, const Options& options) {
@@ -233,12 +250,19 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   result_.phases = PhaseTimes();
   result_.stats = SegmentationStats();
   const bool timed = options.measure_phases;
+  PreviousFrame& previous = ws.previous;
+  // A noise model from too few patches (NoiseEstimator::kMinimumPatches) is measured again.
+  const bool reuse_noise = options.head_start && previous.continuedBy(full) && params_.estimatesNoise() &&
+                           previous.frames_since_noise + 1 < kNoiseRefreshFrames &&
+                           previous.noise.patches >= NoiseEstimator::kMinimumPatches;
+  previous.valid = false;  // until this frame is done
+  result_.stats.head_start = reuse_noise;
   // The pipeline: prepared frame -> segment image (seeds and floods, relabelled) -> clusters
   // (merged) -> planes (labels at full resolution, refined, checked).
   Frame frame;
   {
     PhaseTimer timer(timed, result_.phases.preparation);
-    frame = ws.prepare(full, params_, result_.noise);
+    frame = ws.prepare(full, params_, reuse_noise, result_.noise);
   }
   SegmentImage image = ws.seedAndFlood(frame, params_, timed, result_);
   {
@@ -257,6 +281,12 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     ws.regions.build(full, *frame.source, frame.grid, ws.holes, params_.subsampling, clusters, params_,
                      frame.tolerances, frame.full_pitch, options.refine, result_);
   }
+  previous.valid = true;
+  previous.width = full.width;
+  previous.height = full.height;
+  previous.frames_since_noise = reuse_noise ? previous.frames_since_noise + 1 : 0;
+  previous.noise = result_.noise;
+  previous.segment_noise = ws.segment_noise;
   return result_;
 }
 

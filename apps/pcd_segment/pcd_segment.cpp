@@ -64,6 +64,7 @@ struct Options {
   bool json = false;
   bool quiet = false;
   bool track = false;                          ///< the inputs are one sequence; labels are track ids
+  bool cold_starts = false;                    ///< --cold-starts: with --track, no head start
   std::optional<std::string> poses;            ///< --poses: the inputs' camera poses (JSON), with --track
   unsigned jobs = pcd_segment::defaultJobs();  ///< inputs segmented at once
   bool view = false;
@@ -156,6 +157,10 @@ void addOutputFlags(CLI::App& app, Options& options) {
                "ids (0 no plane) instead of size ranks; with --json, each plane's \"track\" in <name>.planes.json "
                "and a summary of the tracks in OUT/tracks.json. Segments the frames in order on one thread (-j "
                "above 1 is refused); a frame that cannot be read is reported and skipped");
+  app.add_flag("--cold-starts", options.cold_starts,
+               "With --track: segment every frame from nothing. By default each frame continues from the one "
+               "before (a head start: the previous frame's sensor noise model is taken again instead of measured, "
+               "anew every 30 frames), which is faster on a stream");
   app.add_option_function<std::string>(
          "--poses", [&options](const std::string& path) { options.poses = path; },
          "With --track: the camera pose of each input, so that a plane keeps its id however the camera moved: "
@@ -237,6 +242,7 @@ struct Segmented {
   std::vector<pcl::PointIndices> boundaries;
   Segmentation::PointCloudLPtr labels;
   floodplane::NoiseModel noise;
+  bool head_start = false;  // continued from the previous frame (--track)
   double segmentation_ms = 0.0;
 };
 
@@ -249,6 +255,7 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
   out.segmentation_ms = elapsed.count();
   out.noise = segmentation.getLastSegmentation().noise;
+  out.head_start = segmentation.getLastSegmentation().stats.head_start;
   if (!out.labels || out.labels->size() != points->size()) {
     // The loader only passes organized clouds, so this is a library failure, not bad data.
     throw std::runtime_error("the segmentation returned no labels");
@@ -266,6 +273,7 @@ void writeReport(const std::string& path, const std::string& input, const Cloud&
   report.height = points.height;
   report.params = params;
   report.noise = segmented.noise;
+  report.head_start = segmented.head_start;
   report.segmentation_ms = segmented.segmentation_ms;
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);
@@ -400,6 +408,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
     auto segmentation = std::make_unique<Segmentation>();
     segmentation->setParams(params);
     segmentation->setTracking(options.track);
+    segmentation->setHeadStart(options.track && !options.cold_starts);
     return segmentation;
   };
   const auto segment_item = [&](std::unique_ptr<Segmentation>& segmentation, std::size_t i) {
@@ -531,6 +540,9 @@ int main(int argc, char** argv) {
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
+  if (options.cold_starts && !options.track) {
+    return floodplane::apps::usageError(app, "--cold-starts turns off the head start of --track: it needs --track");
+  }
   if (options.poses && !options.track) {
     return floodplane::apps::usageError(app, "--poses gives the camera motion to the tracker: it needs --track");
   }

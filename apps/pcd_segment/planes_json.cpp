@@ -75,6 +75,7 @@ nlohmann::ordered_json reportJson(const Report& report) {
       {"floodplane_version", FLOODPLANE_VERSION_STRING},
       {"parameters", floodplane::io::paramsJson(p)},
       {"noise", floodplane::io::noiseJson(report.noise)},
+      {"head_start", report.head_start},
       {"segmentation_ms", report.segmentation_ms},
       {"plane_count", report.planes.size()},
       {"planes", planes},

@@ -55,6 +55,7 @@ struct Report {
   std::size_t height = 0;
   floodplane::Params params;
   floodplane::NoiseModel noise;  ///< the depth noise the segmentation assumed
+  bool head_start = false;       ///< continued from the previous frame (--track without --cold-starts)
   double segmentation_ms = 0.0;  ///< segmentAndRefine alone, not reading or writing
   std::vector<PlaneRecord> planes;
 };

@@ -136,6 +136,12 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   const Params& getParams() const { return params_; }
   /// Record the time of each phase (Fig. 5) in getLastPhases().
   void setMeasurePhases(bool measure) { measure_phases_ = measure; }
+  /// Treat each cloud as the next frame of one stream (Segmenter::Options::head_start): the
+  /// previous cloud's sensor noise model is taken again, which saves the noise measurement on
+  /// most frames. A cloud of another size, or the first after a parameter changed, starts
+  /// cold. Default off.
+  void setHeadStart(bool head_start) { head_start_ = head_start; }
+  bool getHeadStart() const { return head_start_; }
 
   // ---- planes over a stream of clouds (floodplane::PlaneTracker) ---------------------------
   /// Follow the planes over the clouds segmented one after another: each keeps an id (1, 2,
@@ -215,6 +221,7 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
     const std::string problem = changed.problem();
     if (!problem.empty()) detail::throwBadParameter(setter, problem);
     params_ = changed;
+    params_changed_ = true;
   }
   // Validates the input and runs the core; false (after a PCL_ERROR) when there is nothing
   // to segment. Fills last_ and planes_.
@@ -234,6 +241,8 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
 
   Params params_;
   bool measure_phases_ = false;
+  bool head_start_ = false;
+  bool params_changed_ = true;  // params_ still to be handed to segmenter_ (which then starts cold)
   bool tracking_ = false;
   PlaneTracker tracker_;
   std::vector<std::uint32_t> track_ids_;  // of the last call's planes, when tracking

@@ -35,6 +35,8 @@ struct SegmentationStats {
   std::size_t pixels_taken_over = 0;  ///< pixels reassigned by Eq. 4
   std::size_t segments = 0;           ///< segments after relabelling
   std::size_t merges = 0;             ///< merges by Eq. 9
+  /// The noise model was the previous frame's (Segmenter::Options::head_start), not measured.
+  bool head_start = false;
 };
 
 /// The sensor noise a segmentation assumed: the depth noise along a viewing ray at range r,
@@ -88,7 +90,19 @@ class Segmenter {
     bool refine = true;
     /// Fill Segmentation::phases (a few clock reads per flood).
     bool measure_phases = false;
+    /// The frame continues the last one this Segmenter segmented (a stream from one sensor):
+    /// that frame's noise model (raw and smoothed) is taken again instead of measured anew,
+    /// which saves the two noise measurements, about a sixth of a Kinect frame's time; it is
+    /// measured again every kNoiseRefreshFrames frames, and whenever the last estimate rested
+    /// on too few flat patches. A cold start on the first frame, after setParams, after a
+    /// failed call, when the size changed, and when Params fix the noise. Planes are those of a cold start up to the
+    /// frame-to-frame scatter of the noise estimate (see bench/README.md, "Head start").
+    bool head_start = false;
   };
+
+  /// With head starts, the noise model is measured again on every this-many-th frame (one
+  /// second at 30 Hz), so that it follows what the camera sees.
+  static constexpr int kNoiseRefreshFrames = 30;
 
   explicit Segmenter(const Params& params = Params());
   ~Segmenter();

@@ -68,6 +68,8 @@ void bindStats(py::module_& m) {
       .def_readonly("pixels_taken_over", &SegmentationStats::pixels_taken_over, "pixels reassigned by Eq. 4")
       .def_readonly("segments", &SegmentationStats::segments, "segments after relabelling")
       .def_readonly("merges", &SegmentationStats::merges, "merges by Eq. 9")
+      .def_readonly("head_start", &SegmentationStats::head_start,
+                    "the noise model was the previous frame's (Segmenter.segment(head_start=True)), not measured")
       .def("__repr__", [](const SegmentationStats& s) {
         return "SegmentationStats(seed_candidates=" + std::to_string(s.seed_candidates) +
                ", seeds=" + std::to_string(s.seeds) + ", pixels_taken_over=" + std::to_string(s.pixels_taken_over) +

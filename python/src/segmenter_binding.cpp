@@ -31,7 +31,8 @@ struct SharedSegmenter {
   std::mutex mutex;
 };
 
-SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool refine, bool measure_phases) {
+SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool refine, bool measure_phases,
+                                bool head_start) {
   const GridArray input = gridFromArray(points, "Segmenter.segment: points");
   auto copy = std::make_shared<Segmentation>();
   SegmentationResult result;
@@ -41,6 +42,7 @@ SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool r
     Segmenter::Options options;
     options.refine = refine;
     options.measure_phases = measure_phases;
+    options.head_start = head_start;
     const auto start = std::chrono::steady_clock::now();
     const Segmentation& segmentation = self.core.segment(input.grid, options);
     const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
@@ -124,11 +126,13 @@ void bindSegmenter(py::module_& m) {
           "params", [](const SharedSegmenter& self) { return paramsToDict(self.core.params()); },
           "every parameter as a dict (None: derived from the frame)")
       .def("segment", &segmentArray, py::arg("points"), py::kw_only(), py::arg("refine") = true,
-           py::arg("measure_phases") = false,
+           py::arg("measure_phases") = false, py::arg("head_start") = false,
            "Segments `points`, an (H, W, 3) float32 or float64 array in metres with the camera at the origin "
            "(NaN: no return). Read in place when float32 with x y z adjacent, converted otherwise. `refine` grows "
            "the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the result's "
-           "phases. Returns a Segmentation.")
+           "phases; `head_start` continues from the last frame this Segmenter segmented (a stream from one "
+           "sensor): its noise model is taken again instead of measured (anew every 30 frames); a cold start on "
+           "the first frame, after a size change or a failed call. Returns a Segmentation.")
       .def("segment_file", &segmentFileSummary, py::arg("input"), py::arg("output"), py::kw_only(),
            py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0,
            "Segments the file `input` and writes its labelled cloud to `output` as pcd_segment does (the same "

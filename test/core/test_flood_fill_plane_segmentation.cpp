@@ -568,5 +568,37 @@ TEST(FloodFillPlaneSegmentation, StartsANewSequenceWhenTrackingIsSwitchedOffAndO
   EXPECT_EQ(seg.getTracker().frameCount(), 1u);
 }
 
+TEST(FloodFillPlaneSegmentation, ContinuesFromThePreviousCloudWithAHeadStart) {
+  const auto first = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 7));
+  const auto second = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 8));
+  FloodFillPlaneSegmentation<pcl::PointXYZ> cold, warm;
+  EXPECT_FALSE(warm.getHeadStart());
+  warm.setHeadStart(true);
+  EXPECT_TRUE(warm.getHeadStart());
+  warm.setInputCloud(first);
+  segmentAndRefine(warm);
+  EXPECT_FALSE(warm.getLastSegmentation().stats.head_start) << "the first cloud";
+  const NoiseModel first_noise = warm.getLastSegmentation().noise;
+  for (auto* seg : {&cold, &warm}) seg->setInputCloud(second);
+  const AllOutputs<pcl::PointXYZ> from_cold = segmentAndRefine(cold);
+  const AllOutputs<pcl::PointXYZ> from_warm = segmentAndRefine(warm);
+  EXPECT_FALSE(cold.getLastSegmentation().stats.head_start);
+  EXPECT_TRUE(warm.getLastSegmentation().stats.head_start);
+  EXPECT_EQ(warm.getLastSegmentation().noise.sigma_quadratic, first_noise.sigma_quadratic);
+  EXPECT_NE(cold.getLastSegmentation().noise.sigma_quadratic, first_noise.sigma_quadratic);
+  ASSERT_EQ(from_warm.coefficients.size(), from_cold.coefficients.size());
+  for (std::size_t k = 0; k < from_cold.coefficients.size(); ++k) {
+    const auto& a = from_warm.coefficients[k].values;
+    const auto& b = from_cold.coefficients[k].values;
+    EXPECT_GT(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], 0.9999) << "plane " << k;
+  }
+  // A changed parameter: the next cloud starts cold, the one after continues.
+  warm.setMaximumCurvature(0.3);
+  segmentAndRefine(warm);
+  EXPECT_FALSE(warm.getLastSegmentation().stats.head_start);
+  segmentAndRefine(warm);
+  EXPECT_TRUE(warm.getLastSegmentation().stats.head_start);
+}
+
 }  // namespace
 }  // namespace floodplane

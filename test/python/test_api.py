@@ -268,3 +268,20 @@ def test_the_package_exports_what_it_documents():
     for name in floodplane.__all__:
         assert hasattr(floodplane, name), name
     assert re.fullmatch(r"\d+\.\d+\.\d+", floodplane.__version__)
+
+
+def test_a_head_start_continues_from_the_previous_frame(scene):
+    rng = np.random.default_rng(5)
+    frames = [scene + rng.normal(0, 0.002, scene.shape).astype(np.float32) for _ in range(2)]
+    segmenter = floodplane.Segmenter()
+    first = segmenter.segment(frames[0], head_start=True)
+    assert not first.stats.head_start  # nothing to continue from
+    second = segmenter.segment(frames[1], head_start=True)
+    assert second.stats.head_start
+    assert second.noise.sigma_quadratic == first.noise.sigma_quadratic  # taken, not measured again
+    cold = floodplane.Segmenter().segment(frames[1])
+    assert not cold.stats.head_start
+    assert len(second.planes) == len(cold.planes) == 2
+    assert np.mean(second.labels == cold.labels) > 0.99
+    # Another size: a cold start.
+    assert not segmenter.segment(frames[1][:100], head_start=True).stats.head_start

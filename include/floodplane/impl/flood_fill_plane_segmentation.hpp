@@ -21,6 +21,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::setParams(const Params& params
   const std::string problem = params.problem();
   if (!problem.empty()) detail::throwBadParameter("setParams", problem);
   params_ = params;
+  params_changed_ = true;
 }
 
 template <typename PointT, typename PointLT>
@@ -101,10 +102,14 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
     grid.data = sensor_frame_points_.data();
     grid.stride = 3;
   }
-  segmenter_.setParams(params_);
+  if (params_changed_) {
+    segmenter_.setParams(params_);
+    params_changed_ = false;
+  }
   Segmenter::Options options;
   options.refine = refine;
   options.measure_phases = measure_phases_;
+  options.head_start = head_start_;
   const Clock::time_point core_start = measure_phases_ ? Clock::now() : Clock::time_point();
   last_ = &segmenter_.segment(grid, options);
   if (measure_phases_) {
