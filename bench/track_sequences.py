@@ -23,7 +23,8 @@ that a plain walk hardly has.
 
 pcd_segment takes the camera poses pcd_synth writes (<scene>.poses.json) with --poses, so that
 the tracker knows the camera's motion between frames; --no-poses leaves them out (the tracker
-then matches planes by their parameters and pixel overlap alone).
+then matches planes by their parameters and pixel overlap alone). pcd_segment --track continues
+each frame from the one before (the head start); --cold-starts segments every frame from nothing.
 
 Example:
   bench/track_sequences.py --seeds 1-5 --frames 300
@@ -193,7 +194,7 @@ def evaluate_seed(seed, args, work):
         outputs = frames
     else:
         run([args.pcd_segment, *frames, "-o", tracks, "--track", *(["--poses", poses] if with_poses else []),
-             "--ascii", "-q"])
+             *(["--cold-starts"] if args.cold_starts else []), "--ascii", "-q"])
         outputs = [tracks / (frame.name[:-len(".pcd")] + ".labels.pcd") for frame in frames]
     evaluator = TrackingEvaluator(args.min_fraction, args.min_iou, args.max_gap)
     for frame, output in zip(frames, outputs):
@@ -228,6 +229,9 @@ def main():
     parser.add_argument("--no-poses", action="store_true",
                         help="do not give pcd_segment the sequence's camera poses (--poses <scene>.poses.json): "
                         "the tracker then knows no camera motion")
+    parser.add_argument("--cold-starts", action="store_true",
+                        help="pcd_segment --cold-starts: every frame segmented from nothing, without the head start "
+                        "from the frame before")
     parser.add_argument("--sensor", choices=["kinect", "none"], default="kinect", help="sensor model (default kinect)")
     parser.add_argument("--min-fraction", type=float, default=0.01,
                         help="share of the frame from which a plane is present (default 0.01)")
@@ -262,6 +266,7 @@ def main():
     tracker = "ground truth as tracks" if args.ground_truth_as_tracks else f"{args.pcd_segment} --track"
     if not args.ground_truth_as_tracks:
         tracker += " without poses" if args.no_poses else " --poses <scene>.poses.json"
+        tracker += " --cold-starts" if args.cold_starts else ""
     print(f"machine: {machine()}")
     print(f"sequences: seeds {','.join(map(str, args.seeds))}, {args.frames} frames each, sensor {args.sensor}"
           f"{', looking away' if args.look_away else ''}; tracker: {tracker}")
