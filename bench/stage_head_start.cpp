@@ -14,9 +14,7 @@
 
 #include "floodplane/segmenter.h"
 #include "methods.h"
-#include "synth/camera_path.h"
-#include "synth/renderer.h"
-#include "synth/scene_generator.h"
+#include "synth/room_walk.h"
 
 namespace floodplane::bench {
 
@@ -40,20 +38,12 @@ struct SequenceFrame {
   }
 };
 
-// pcd_synth --random 1 --seed S --sequence N --sensor kinect, without the files: the same walk
-// and the same per-frame noise seeds.
+// pcd_synth --random 1 --seed S --sequence N --sensor kinect, without the files.
 const std::vector<SequenceFrame>& renderedSequence() {
   static const std::vector<SequenceFrame> frames = [] {
     std::vector<SequenceFrame> out;
-    const synth::Scene scene = synth::generateRoomScene(kSequenceSeed);
-    const std::vector<Eigen::Isometry3d> poses = synth::walkingCameraPath(scene, kSequenceFrames, kSequenceSeed);
-    for (int k = 0; k < kSequenceFrames; ++k) {
-      synth::Scene view = scene;
-      view.world_from_camera = poses[static_cast<std::size_t>(k)];
-      synth::RenderSettings settings;
-      settings.sensor = synth::SensorModel::kinect;
-      settings.seed = kSequenceSeed + static_cast<std::uint64_t>(k) * 0x9E3779B97F4A7C15ULL;
-      const synth::RenderedFrame rendered = synth::renderScene(view, settings);
+    for (const synth::RenderedFrame& rendered :
+         synth::renderRoomWalk(kSequenceSeed, kSequenceFrames, synth::SensorModel::kinect)) {
       SequenceFrame frame;
       frame.width = rendered.intrinsics.width;
       frame.height = rendered.intrinsics.height;

@@ -32,6 +32,7 @@
 #include "synth/renderer.h"
 #include "synth/scene_file.h"
 #include "synth/scene_generator.h"
+#include "synth/room_walk.h"
 #include "synth/sequence_labels.h"
 
 namespace {
@@ -143,14 +144,8 @@ std::string frameName(const std::string& scene_name, int frame) {
   return scene_name + digits;
 }
 
-// Frame k's sensor noise: seed S for frame 0 (the frame a single render gives), then spread
-// (golden-ratio increments) so that no two frames share a noise pattern.
-std::uint64_t frameNoiseSeed(std::uint64_t seed, int frame) {
-  return seed + static_cast<std::uint64_t>(frame) * 0x9E3779B97F4A7C15ULL;
-}
-
 // Renders the sequence of `scene` along `poses` (walked with `walk`) in every requested sensor
-// model, with noise seeds from `noise_seed` (frameNoiseSeed), and writes
+// model, with noise seeds from `noise_seed` (synth::sequenceFrameSeed), and writes
 // <scene>_fNNNN.<sensor>.* and <scene>.poses.json. Ground-truth ids stay constant: faces merged
 // in any frame are one surface in all (SequenceSurfaces); frames written before a later merge
 // changed their labels are rendered and written again. Returns a summary for the progress line.
@@ -164,7 +159,8 @@ std::string renderSequence(const synth::Scene& scene, const std::vector<Eigen::I
   const auto render = [&](synth::SensorModel sensor, int k) {
     synth::Scene view = scene;
     view.world_from_camera = poses[static_cast<std::size_t>(k)];
-    return synth::renderScene(view, renderSettings(sensor, frameNoiseSeed(noise_seed, k), noise_seed, options));
+    return synth::renderScene(view,
+                              renderSettings(sensor, synth::sequenceFrameSeed(noise_seed, k), noise_seed, options));
   };
   // The planes as written, per sensor and frame, to find the frames a later merge changes.
   std::vector<std::vector<synth::RenderedFrame>> written(sensors.size());

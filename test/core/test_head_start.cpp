@@ -9,9 +9,7 @@
 
 #include "eval/segmentation_metrics.h"
 #include "floodplane/segmenter.h"
-#include "synth/camera_path.h"
-#include "synth/renderer.h"
-#include "synth/scene_generator.h"
+#include "synth/room_walk.h"
 
 namespace floodplane {
 namespace {
@@ -34,16 +32,8 @@ struct WalkFrame {
 
 // Frames 0 .. n-1 of random scene `seed`'s walk with the Kinect model.
 std::vector<WalkFrame> renderWalk(std::uint64_t seed, int frames) {
-  const synth::Scene scene = synth::generateRoomScene(seed);
-  const std::vector<Eigen::Isometry3d> poses = synth::walkingCameraPath(scene, frames, seed);
   std::vector<WalkFrame> walk;
-  for (int k = 0; k < frames; ++k) {
-    synth::Scene view = scene;
-    view.world_from_camera = poses[static_cast<std::size_t>(k)];
-    synth::RenderSettings settings;
-    settings.sensor = synth::SensorModel::kinect;
-    settings.seed = seed + static_cast<std::uint64_t>(k) * 0x9E3779B97F4A7C15ULL;
-    const synth::RenderedFrame rendered = synth::renderScene(view, settings);
+  for (const synth::RenderedFrame& rendered : synth::renderRoomWalk(seed, frames, synth::SensorModel::kinect)) {
     WalkFrame frame;
     frame.width = rendered.intrinsics.width;
     frame.height = rendered.intrinsics.height;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "synth/renderer.h"
+#include "synth/room_walk.h"
 #include "synth/scene_generator.h"
 #include "synth/sequence_labels.h"
 #include "synth/surface_distance.h"
@@ -358,6 +359,34 @@ TEST(SequenceSurfaces, TheSameSurfaceKeepsItsIdAlongAWalk) {
   }
   ASSERT_GT(compared, 59U * 3000U);  // of 19200 pixels a frame
   EXPECT_GE(static_cast<double>(same), 0.999 * static_cast<double>(compared)) << same << " of " << compared;
+}
+
+// renderRoomWalk is pcd_synth --sequence's walk in memory: frame k is the room seen from the
+// walk's pose k with noise seed sequenceFrameSeed(seed, k), frame 0 with the seed itself.
+TEST(RoomWalk, RendersTheWalksPosesWithAnotherNoiseSeedEachFrame) {
+  EXPECT_EQ(sequenceFrameSeed(7, 0), 7u);
+  EXPECT_NE(sequenceFrameSeed(7, 1), sequenceFrameSeed(7, 2));
+  const std::vector<RenderedFrame> walk = renderRoomWalk(5, 3, SensorModel::kinect);
+  ASSERT_EQ(walk.size(), 3u);
+  const Scene scene = generateRoomScene(5);
+  const std::vector<Eigen::Isometry3d> poses = walkingCameraPath(scene, 3, 5);
+  for (int k : {0, 2}) {
+    Scene view = scene;
+    view.world_from_camera = poses[static_cast<std::size_t>(k)];
+    RenderSettings settings;
+    settings.sensor = SensorModel::kinect;
+    settings.seed = sequenceFrameSeed(5, k);
+    const RenderedFrame expected = renderScene(view, settings);
+    ASSERT_EQ(walk[static_cast<std::size_t>(k)].points.size(), expected.points.size());
+    EXPECT_EQ(walk[static_cast<std::size_t>(k)].labels, expected.labels) << k;
+    EXPECT_TRUE(std::equal(expected.points.begin(), expected.points.end(),
+                           walk[static_cast<std::size_t>(k)].points.begin(),
+                           [](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+                             return a.cwiseEqual(b).all() || (a.array().isNaN().all() && b.array().isNaN().all());
+                           }))
+        << k;
+  }
+  EXPECT_NE(walk[0].labels, walk[2].labels) << "the camera moved";
 }
 
 }  // namespace
