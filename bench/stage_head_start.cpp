@@ -24,36 +24,17 @@ namespace {
 constexpr std::uint64_t kSequenceSeed = 101;
 constexpr int kSequenceFrames = 60;
 
-struct SequenceFrame {
-  std::vector<float> xyz;  // x y z per pixel, NaN for no return
-  int width = 0;
-  int height = 0;
-  PointGrid grid() const {
-    PointGrid g;
-    g.data = xyz.data();
-    g.width = width;
-    g.height = height;
-    g.stride = 3;
-    return g;
-  }
-};
-
 // pcd_synth --random 1 --seed S --sequence N --sensor kinect, without the files.
-const std::vector<SequenceFrame>& renderedSequence() {
-  static const std::vector<SequenceFrame> frames = [] {
-    std::vector<SequenceFrame> out;
-    for (const synth::RenderedFrame& rendered :
-         synth::renderRoomWalk(kSequenceSeed, kSequenceFrames, synth::SensorModel::kinect)) {
-      SequenceFrame frame;
-      frame.width = rendered.intrinsics.width;
-      frame.height = rendered.intrinsics.height;
-      frame.xyz.reserve(rendered.points.size() * 3);
-      for (const Eigen::Vector3f& p : rendered.points) frame.xyz.insert(frame.xyz.end(), {p.x(), p.y(), p.z()});
-      out.push_back(std::move(frame));
-    }
-    return out;
-  }();
+const std::vector<synth::RenderedFrame>& renderedSequence() {
+  static const std::vector<synth::RenderedFrame> frames =
+      synth::renderRoomWalk(kSequenceSeed, kSequenceFrames, synth::SensorModel::kinect);
   return frames;
+}
+
+// A rendered frame's points, read in place (an Eigen::Vector3f is three floats).
+PointGrid gridOf(const synth::RenderedFrame& frame) {
+  static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float));
+  return PointGrid{frame.points.data()->data(), 3, frame.intrinsics.width, frame.intrinsics.height};
 }
 
 double median(std::vector<double> values) {
@@ -63,7 +44,7 @@ double median(std::vector<double> values) {
 }
 
 void runHeadStart(benchmark::State& state) {
-  const std::vector<SequenceFrame>& frames = renderedSequence();
+  const std::vector<synth::RenderedFrame>& frames = renderedSequence();
   Segmenter cold_segmenter, warm_segmenter;
   Segmenter::Options cold, warm;
   cold.measure_phases = warm.measure_phases = true;
@@ -73,7 +54,7 @@ void runHeadStart(benchmark::State& state) {
   using Clock = std::chrono::steady_clock;
   std::size_t next = 0, round = 0;
   for (auto _ : state) {
-    const PointGrid grid = frames[next].grid();
+    const PointGrid grid = gridOf(frames[next]);
     const auto timeOne = [&](Segmenter& segmenter, const Segmenter::Options& options, std::vector<double>& times,
                              PhaseTimes& phases) {
       const Clock::time_point start = Clock::now();

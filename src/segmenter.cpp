@@ -109,7 +109,7 @@ struct Segmenter::Workspace {
   std::vector<PlaneSums> cluster_sums;
   RegionBuilder regions;
   PreviousFrame previous;
-  NoiseModel segment_noise;  // the segmented grid's noise (smoothed: less than the raw frame's)
+
   // The frame's grid (sub-sampled when s > 1), its angular pitch and noise model, and every
   // buffer reset for it. With `reuse_noise`, the previous frame's noise models stand in for
   // the two measurements (raw and smoothed): the noise belongs to the sensor, not the scene.
@@ -124,7 +124,7 @@ struct Segmenter::Workspace {
     // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
     // Kinect). A noise model the user gives describes the raw data: no smoothing then; nor on
     // exact depths rounded to a lattice (roundingOnly).
-    segment_noise = noise;
+    NoiseModel segment_noise = noise;
     frame.source = &filled;
     if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch) && !roundingOnly(noise)) {
       frame.source = &smoothing.smooth(filled, noise);
@@ -154,23 +154,21 @@ struct Segmenter::Workspace {
     const int stride = std::max(1, kSeedStride / params.subsampling);
     const int offset = stride / 2;
     Seed seed;
-    // Tests the candidate at (x, y) with `seeds` and floods from it if it is a seed.
-    const auto tryCandidate = [&](const SeedSelector& seeds, int x, int y) {
-      const std::size_t pixel =
-          static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
-      if (buffer.label(pixel) != 0) return;
-      ++result.stats.seed_candidates;
-      if (seeds.test(grid, x, y, seed) != SeedVerdict::kAccepted) return;
-      ++result.stats.seeds;
-      const std::int32_t label = static_cast<std::int32_t>(segments.size());
-      segments.emplace_back();
-      PhaseTimer timer(timed, flooding);
-      result.stats.pixels_taken_over +=
-          flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
-    };
     for (const SeedSelector* seeds : {&selector, &fine_selector}) {
       for (int y = offset; y < grid.height; y += stride) {
-        for (int x = offset; x < grid.width; x += stride) tryCandidate(*seeds, x, y);
+        for (int x = offset; x < grid.width; x += stride) {
+          const std::size_t pixel =
+              static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
+          if (buffer.label(pixel) != 0) continue;
+          ++result.stats.seed_candidates;
+          if (seeds->test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
+          ++result.stats.seeds;
+          const std::int32_t label = static_cast<std::int32_t>(segments.size());
+          segments.emplace_back();
+          PhaseTimer timer(timed, flooding);
+          result.stats.pixels_taken_over +=
+              flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
+        }
       }
     }
     if (timed) {
@@ -286,7 +284,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   previous.height = full.height;
   previous.frames_since_noise = reuse_noise ? previous.frames_since_noise + 1 : 0;
   previous.noise = result_.noise;
-  previous.segment_noise = ws.segment_noise;
+  previous.segment_noise = frame.tolerances.noise();
   return result_;
 }
 

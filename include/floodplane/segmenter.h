@@ -95,8 +95,9 @@ class Segmenter {
     /// which saves the two noise measurements, about a sixth of a Kinect frame's time; it is
     /// measured again every kNoiseRefreshFrames frames, and whenever the last estimate rested
     /// on too few flat patches. A cold start on the first frame, after setParams, after a
-    /// failed call, when the size changed, and when Params fix the noise. Planes are those of a cold start up to the
-    /// frame-to-frame scatter of the noise estimate (see bench/README.md, "Head start").
+    /// failed call, when the size changed, and when Params fix the noise. Planes are those of
+    /// a cold start up to the frame-to-frame scatter of the noise estimate (see
+    /// bench/README.md, "Head start").
     bool head_start = false;
   };
 

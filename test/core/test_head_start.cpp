@@ -14,34 +14,24 @@
 namespace floodplane {
 namespace {
 
+// A rendered frame and which of its pixels have a return (for the metrics).
 struct WalkFrame {
-  std::vector<float> xyz;  // x y z per pixel
-  std::vector<std::uint32_t> truth;
+  synth::RenderedFrame rendered;
   std::vector<std::uint8_t> valid;
-  int width = 0;
-  int height = 0;
+  // Its points, read in place (an Eigen::Vector3f is three floats).
   PointGrid grid() const {
-    PointGrid g;
-    g.data = xyz.data();
-    g.width = width;
-    g.height = height;
-    g.stride = 3;
-    return g;
+    static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float));
+    return PointGrid{rendered.points.data()->data(), 3, rendered.intrinsics.width, rendered.intrinsics.height};
   }
 };
 
 // Frames 0 .. n-1 of random scene `seed`'s walk with the Kinect model.
 std::vector<WalkFrame> renderWalk(std::uint64_t seed, int frames) {
   std::vector<WalkFrame> walk;
-  for (const synth::RenderedFrame& rendered : synth::renderRoomWalk(seed, frames, synth::SensorModel::kinect)) {
+  for (synth::RenderedFrame& rendered : synth::renderRoomWalk(seed, frames, synth::SensorModel::kinect)) {
     WalkFrame frame;
-    frame.width = rendered.intrinsics.width;
-    frame.height = rendered.intrinsics.height;
-    for (const Eigen::Vector3f& p : rendered.points) {
-      frame.xyz.insert(frame.xyz.end(), {p.x(), p.y(), p.z()});
-      frame.valid.push_back(std::isfinite(p.z()) ? 1 : 0);
-    }
-    frame.truth = rendered.labels;
+    for (const Eigen::Vector3f& p : rendered.points) frame.valid.push_back(std::isfinite(p.z()) ? 1 : 0);
+    frame.rendered = std::move(rendered);
     walk.push_back(std::move(frame));
   }
   return walk;
@@ -73,8 +63,8 @@ TEST(HeadStart, AgreesWithColdStartsOnRenderedWalks) {
       }
       EXPECT_TRUE(warm_result.stats.head_start);
       agreement += eval::evaluateSegmentation(cold_result.labels, warm_result.labels, frame.valid).mean_iou;
-      cold_truth += eval::evaluateSegmentation(frame.truth, cold_result.labels, frame.valid).mean_iou;
-      warm_truth += eval::evaluateSegmentation(frame.truth, warm_result.labels, frame.valid).mean_iou;
+      cold_truth += eval::evaluateSegmentation(frame.rendered.labels, cold_result.labels, frame.valid).mean_iou;
+      warm_truth += eval::evaluateSegmentation(frame.rendered.labels, warm_result.labels, frame.valid).mean_iou;
       ++frames;
     }
   }
@@ -122,10 +112,9 @@ TEST(HeadStart, TakesThePreviousFramesNoiseModel) {
   segmenter.setParams(Params());
   EXPECT_FALSE(segmenter.segment(walk[2].grid(), headStart()).stats.head_start) << "after setParams";
   EXPECT_TRUE(segmenter.segment(walk[2].grid(), headStart()).stats.head_start);
-  WalkFrame cropped = walk[2];
+  PointGrid cropped = walk[2].grid();
   cropped.height -= 10;
-  cropped.xyz.resize(static_cast<std::size_t>(cropped.width) * cropped.height * 3);
-  EXPECT_FALSE(segmenter.segment(cropped.grid(), headStart()).stats.head_start) << "after a change of size";
+  EXPECT_FALSE(segmenter.segment(cropped, headStart()).stats.head_start) << "after a change of size";
 }
 
 // Without the option, a Segmenter that segmented other frames before gives exactly what a new
