@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <vector>
 
@@ -18,71 +20,108 @@ namespace floodplane {
 /// (a chi-square test against the noise model across the surface) and its larger principal
 /// curvature is that of the curved things in rooms (radii below half a metre): a real wall
 /// bent by a few millimetres over metres, or by a depth camera's calibration, stays a plane.
+///
+/// Two touching planes are judged as one surface too (curvedPair, facet_pairs.h). So that
+/// this costs nothing per point, a plane's sums are its points' moments up to the fourth order
+/// in x, y and z, from which the quadratic's sums in any frame follow exactly: the plane's own,
+/// or that of its union with a neighbour.
 class PlanarityTest {
  public:
   /// Starts the sums for planes 1..fits.size() (fits[k - 1] is plane k).
   void reset(const std::vector<PlaneFit>& fits);
   /// Adds an inlier of plane k.
   void add(std::uint32_t k, const Vec3& point);
+  /// Whether plane k has enough sampled points to show a bend at all.
+  bool judgeable(std::uint32_t k) const;
   /// Whether plane k bends more than its noise explains.
   bool curved(std::uint32_t k, const Tolerances& tolerances) const;
   /// The larger principal curvature of plane k's quadratic [1/m].
   double curvature(std::uint32_t k) const;
+  /// Whether planes k and l, whose union's plane is `joint`, are two facets of one curved
+  /// surface: their union is curved as curved() judges a plane, and one smooth quadratic
+  /// explains it better than k and l each by a plane of its own (residual sums of squares
+  /// along the union's normal, six parameters either way), where at a crease the two planes
+  /// fit better.
+  bool curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances) const;
+
+  /// The number of monomials x^a y^b z^c with a + b + c <= 4.
+  static constexpr int kMonomials = 35;
 
  private:
+  // A frame on a plane: w along its normal.
   struct Frame {
-    Vec3 centroid, u, v, w;  // the plane's frame: w its normal
+    Eigen::Vector3d centroid, u, v, w;
   };
+  static Frame frameOf(const PlaneFit& fit);
+  // The quadratic's sums in one frame.
   struct Sums {
     double moments[17] = {};  // the distinct entries of sum m m^T, m = (1, u, v, u^2, uv, v^2), but the count
     double rhs[6] = {};       // sum m w
+    double ww = 0.0;          // sum w^2
     double count = 0.0;
+    Sums& operator+=(const Sums& o);
   };
-  // Plane k's quadratic fit: the sum of squares it explains beyond the plane, and its larger
-  // principal curvature [1/m].
+  // Plane k's sums in `frame`.
+  Sums sumsIn(std::uint32_t k, const Frame& frame) const;
+  // The quadratic fit of a sample: the sum of squares it explains beyond the plane, its larger
+  // principal curvature [1/m], and the residual sums of squares of the sample about its best
+  // plane and about the quadratic.
   struct Quadric {
     double explained = 0.0, curvature = 0.0;
+    double plane_residual = 0.0, residual = 0.0;
   };
-  Quadric fitQuadric(std::uint32_t k) const;
+  static Quadric fitQuadric(const Sums& s);
+  // Whether sums `s` of points about the plane `fit` bend beyond the noise (see curved()).
+  static bool bends(const Sums& s, const Quadric& q, const PlaneFit& fit, const Tolerances& tolerances);
 
-  std::vector<Frame> frames_;
-  std::vector<Sums> sums_;
+  std::vector<Vec3> origins_;  // per plane: its centroid, the origin of its moments
+  // Per plane: the sums of x^a y^b z^c over its sampled points (relative to its origin), in
+  // the order of kMonomials: by degree, then by falling a, then falling b.
+  std::vector<double> moments_;
   std::vector<PlaneFit> fits_;
 };
 
 // Inline: it runs for every sampled inlier of every plane, from region output.
 inline void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
-  const Frame& f = frames_[k - 1];
-  const Vec3 d = point - f.centroid;
-  const double u = d.dot(f.u), v = d.dot(f.v), w = d.dot(f.w);
-  const double uu = u * u, uv = u * v, vv = v * v;
-  Sums& s = sums_[k - 1];
-  // The distinct products of m m^T (see kMoment): the same sums as of every entry, each
-  // once (1 * u^2 and u * u are one product).
-  s.moments[0] += u;
-  s.moments[1] += v;
-  s.moments[2] += uu;
-  s.moments[3] += uv;
-  s.moments[4] += vv;
-  s.moments[5] += u * uu;
-  s.moments[6] += u * uv;
-  s.moments[7] += u * vv;
-  s.moments[8] += v * uu;
-  s.moments[9] += v * uv;
-  s.moments[10] += v * vv;
-  s.moments[11] += uu * uu;
-  s.moments[12] += uu * uv;
-  s.moments[13] += uu * vv;
-  s.moments[14] += uv * uv;
-  s.moments[15] += uv * vv;
-  s.moments[16] += vv * vv;
-  s.rhs[0] += w;
-  s.rhs[1] += u * w;
-  s.rhs[2] += v * w;
-  s.rhs[3] += uu * w;
-  s.rhs[4] += uv * w;
-  s.rhs[5] += vv * w;
-  s.count += 1.0;
+  const Vec3 d = point - origins_[k - 1];
+  const double x = d.x, y = d.y, z = d.z;
+  const double xx = x * x, xy = x * y, xz = x * z, yy = y * y, yz = y * z, zz = z * z;
+  double* m = moments_.data() + static_cast<std::size_t>(k - 1) * kMonomials;
+  m[0] += 1.0;
+  m[1] += x;
+  m[2] += y;
+  m[3] += z;
+  m[4] += xx;
+  m[5] += xy;
+  m[6] += xz;
+  m[7] += yy;
+  m[8] += yz;
+  m[9] += zz;
+  m[10] += xx * x;
+  m[11] += xx * y;
+  m[12] += xx * z;
+  m[13] += xy * y;
+  m[14] += xy * z;
+  m[15] += xz * z;
+  m[16] += yy * y;
+  m[17] += yy * z;
+  m[18] += yz * z;
+  m[19] += zz * z;
+  m[20] += xx * xx;
+  m[21] += xx * xy;
+  m[22] += xx * xz;
+  m[23] += xx * yy;
+  m[24] += xx * yz;
+  m[25] += xx * zz;
+  m[26] += xy * yy;
+  m[27] += xy * yz;
+  m[28] += xy * zz;
+  m[29] += xz * zz;
+  m[30] += yy * yy;
+  m[31] += yy * yz;
+  m[32] += yy * zz;
+  m[33] += yz * zz;
+  m[34] += zz * zz;
 }
 
 }  // namespace floodplane

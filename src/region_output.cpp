@@ -303,6 +303,17 @@ bool RegionBuilder::dropCurvedPlanes(const PointGrid& full, const RenumberedLabe
   samplePlanarity(full, labels, planarity_);
   curved_.assign(list.size() + 1, false);
   for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
+  // Touching planes judged as one surface: the facets of a curved one are curved together.
+  // (A pair of planes both dropped already has nothing to add.)
+  judgeable_.assign(list.size() + 1, false);
+  for (std::uint32_t k = 1; k <= list.size(); ++k) judgeable_[k] = planarity_.judgeable(k);
+  facet_pairs_.find(full, labels, list, fits_, judgeable_);
+  for (const auto& [k, l] : facet_pairs_.pairs()) {
+    if (curved_[k] && curved_[l]) continue;
+    PlaneSums joint = list[k - 1].sums;
+    joint.merge(list[l - 1].sums);
+    if (planarity_.curvedPair(k, l, joint.fit(), tolerances)) curved_[k] = curved_[l] = true;
+  }
   return candidates_.drop(curved_);
 }
 

@@ -8,6 +8,7 @@
 
 #include "tolerances.h"
 #include "distance_function.h"
+#include "facet_pairs.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
@@ -64,9 +65,10 @@ class RegionBuilder {
   // best-fitting one within the tolerance, else 0.
   void labelMixedCell(const PointGrid& full, std::size_t row_start, int u_begin, int u_end, std::size_t gx,
                       std::uint32_t* out_row) const;
-  // Beyond the paper: the planarity test (planarity.h) on the final planes; drops the curved
-  // ones (a cylinder's, a ball's or a person's facets). Returns whether any was dropped (the
-  // labels then need renumbering by remap()).
+  // Beyond the paper: the planarity test (planarity.h) on the final planes, alone and in
+  // touching pairs (facet_pairs.h); drops the curved ones (a cylinder's, a ball's or a
+  // person's facets). Returns whether any was dropped (the labels then need renumbering by
+  // remap()).
   bool dropCurvedPlanes(const PointGrid& full, const RenumberedLabels& labels, const Tolerances& tolerances);
   // Adds the interior pixels of the planes to `test`.
   void samplePlanarity(const PointGrid& full, const RenumberedLabels& labels, PlanarityTest& test);
@@ -92,8 +94,9 @@ class RegionBuilder {
   const HoleFilling* holes_ = nullptr;
   PlanarityTest planarity_;
   std::vector<PlaneFit> fits_;
-  std::vector<bool> curved_;
+  std::vector<bool> curved_, judgeable_;
   std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
+  FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;
 };
 

@@ -145,8 +145,9 @@ bool anyLabelDiffers(const Label* labels, Label value) {
 /// Which of the four labels from `labels` on differ from the four from `other` on, neither of
 /// the two being 0: bit j for label j. With `other` the next label (labels + 1) or the one
 /// below (labels + width), the pixels where a border between two segments starts.
-inline int segmentBorderLanes(const std::int32_t* labels, const std::int32_t* other) {
-  const auto load = [](const std::int32_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+template <class Label>
+int segmentBorderLanes(const Label* labels, const Label* other) {
+  const auto load = [](const Label* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
   const __m128i zero = _mm_setzero_si128();
   const __m128i a = load(labels), b = load(other);
   const __m128i unlabelled = _mm_or_si128(_mm_cmpeq_epi32(a, zero), _mm_cmpeq_epi32(b, zero));

@@ -1,5 +1,7 @@
 // Beyond the paper: the planarity test. A noisy plane is kept, a wall bent by a sensor's
-// calibration is kept, patches of a column and of a ball are rejected.
+// calibration is kept, patches of a column and of a ball are rejected; two touching strips of
+// a column, each flat within the noise, are one curved surface, and two faces meeting at a
+// crease are not.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -119,6 +121,82 @@ TEST(PlanarityTest, ReportsTheCurvatureOfTheSurface) {
   for (const Eigen::Vector3d& p : points) test.add(1, Vec3{float(p.x()), float(p.y()), float(p.z())});
   // A quadratic over 100 degrees of a circle of radius 0.2 m: about 1 / 0.2 m.
   EXPECT_NEAR(test.curvature(1), 5.0, 1.5);
+}
+
+// Two touching surfaces, as RegionBuilder::dropCurvedPlanes judges a facet pair: whether they
+// are one curved surface, and whether their union, as one plane, fails the single test. Each alone must
+// pass the test: that is what the pair test is for.
+struct PairVerdict {
+  bool curved_pair = false, union_bends = false;
+};
+PairVerdict judgePair(const std::vector<Eigen::Vector3d>& first, const std::vector<Eigen::Vector3d>& second,
+                      const Tolerances& tolerances) {
+  const auto vec = [](const Eigen::Vector3d& p) { return Vec3{float(p.x()), float(p.y()), float(p.z())}; };
+  PlaneSums a, b;
+  for (const Eigen::Vector3d& p : first) a.add(vec(p));
+  for (const Eigen::Vector3d& p : second) b.add(vec(p));
+  PlaneSums joint = a;
+  joint.merge(b);
+  PlanarityTest test;
+  test.reset({a.fit(), b.fit(), joint.fit()});
+  for (const Eigen::Vector3d& p : first) {
+    test.add(1, vec(p));
+    test.add(3, vec(p));
+  }
+  for (const Eigen::Vector3d& p : second) {
+    test.add(2, vec(p));
+    test.add(3, vec(p));
+  }
+  EXPECT_FALSE(test.curved(1, tolerances));
+  EXPECT_FALSE(test.curved(2, tolerances));
+  return {test.curvedPair(1, 2, joint.fit(), tolerances), test.curved(3, tolerances)};
+}
+
+constexpr double kColumnRadius = 0.25;
+
+// A point of an upright column (axis 2.25 m away) at `degrees` of arc from the side facing
+// the camera, `b` in [0, 1] up its 60 cm.
+Eigen::Vector3d onColumn(double degrees, double b) {
+  const double angle = degrees * kPi / 180.0;
+  return {kColumnRadius * std::sin(angle), (b - 0.5) * 0.6, 2.0 + kColumnRadius * (1.0 - std::cos(angle))};
+}
+
+// The strip of the column between `from` and `to` degrees: a facet as the flood cuts it, its
+// sagitta within a Kinect's noise band.
+std::function<Eigen::Vector3d(double, double)> columnStrip(double from, double to) {
+  return [from, to](double a, double b) { return onColumn(from + a * (to - from), b); };
+}
+
+// The flat face between the column's edges at `from` and `to` degrees (the chord).
+std::function<Eigen::Vector3d(double, double)> chord(double from, double to) {
+  return [from, to](double a, double b) {
+    Eigen::Vector3d point = onColumn(from, b) + a * (onColumn(to, b) - onColumn(from, b));
+    return point;
+  };
+}
+
+TEST(PlanarityTest, TwoFacetsOfAColumnAreOneCurvedSurface) {
+  // Kinect-like noise (exact strips are curved each on its own).
+  for (const unsigned seed : {11u, 12u, 13u}) {
+    EXPECT_TRUE(judgePair(sample(columnStrip(-14, 0), 40, 0.0019, seed),
+                          sample(columnStrip(0, 14), 40, 0.0019, seed + 100), tolerancesFor(0.0019))
+                    .curved_pair)
+        << seed;
+  }
+}
+
+TEST(PlanarityTest, TwoFacesMeetingAtACreaseAreNotACurvedSurface) {
+  // Two flat faces, each the chord of 30 degrees of the column, meeting at 30 degrees: the
+  // union bends as much as two facets of the column do, but two planes fit it better than any
+  // smooth quadratic.
+  for (const unsigned seed : {11u, 12u, 13u}) {
+    for (const double noise : {0.0019, 0.0}) {
+      const PairVerdict verdict = judgePair(sample(chord(-30, 0), 40, noise, seed),
+                                            sample(chord(0, 30), 40, noise, seed + 100), tolerancesFor(noise));
+      EXPECT_TRUE(verdict.union_bends) << seed << " " << noise;  // what the pair test has to tell apart
+      EXPECT_FALSE(verdict.curved_pair) << seed << " " << noise;
+    }
+  }
 }
 
 }  // namespace
