@@ -5,7 +5,7 @@
 
 #include "distance_function.h"
 #include "segment_borders.h"
-#include "simd.h"
+#include "label_borders.h"
 
 namespace floodplane {
 
@@ -31,8 +31,6 @@ void FacetPairs::find(const PointGrid& grid, const RenumberedLabels& labels, con
   }
   if (!any) return;
 
-  const std::size_t width = static_cast<std::size_t>(grid.width);
-  const std::size_t height = static_cast<std::size_t>(grid.height);
   // Pixels i and j = i + 1 or i + width, of two different planes (the image's numbers differ,
   // neither is 0).
   const auto touch = [&](std::size_t i, std::size_t j) {
@@ -47,37 +45,7 @@ void FacetPairs::find(const PointGrid& grid, const RenumberedLabels& labels, con
     else
       touching_.push_back({key, 1});
   };
-  const auto differ = [&](std::size_t i, std::size_t j) {
-    const std::uint32_t a = labels.image[i], b = labels.image[j];
-    return a != b && a != 0 && b != 0;
-  };
-  for (std::size_t y = 0; y < height; ++y) {
-    const std::size_t row = y * width;
-    const bool has_below = y + 1 < height;
-    std::size_t x = 0;
-#if FLOODPLANE_SIMD
-    // Four pixels at a time: the lanes where a border starts to the right or below, then only
-    // those (the right neighbour of the fourth must lie in this row).
-    if (has_below) {
-      const std::uint32_t* row_labels = labels.image + row;
-      for (; x + 4 < width; x += 4) {
-        const int right = segmentBorderLanes(row_labels + x, row_labels + x + 1);
-        const int below = segmentBorderLanes(row_labels + x, row_labels + x + width);
-        for (int lanes = right | below; lanes != 0; lanes &= lanes - 1) {
-          const int lane = __builtin_ctz(static_cast<unsigned>(lanes));
-          const std::size_t i = row + x + static_cast<std::size_t>(lane);
-          if (right & (1 << lane)) touch(i, i + 1);
-          if (below & (1 << lane)) touch(i, i + width);
-        }
-      }
-    }
-#endif
-    for (; x < width; ++x) {
-      const std::size_t i = row + x;
-      if (x + 1 < width && differ(i, i + 1)) touch(i, i + 1);
-      if (has_below && differ(i, i + width)) touch(i, i + width);
-    }
-  }
+  forEachLabelBorder(grid, labels.image, touch);
   std::sort(touching_.begin(), touching_.end(), [](const Touch& a, const Touch& b) { return a.key < b.key; });
   for (std::size_t i = 0; i < touching_.size();) {
     std::size_t j = i;

@@ -39,8 +39,8 @@ class FacetPairs {
 
  private:
   struct Touch {
-    std::uint64_t key;     // low << 32 | high
-    std::uint32_t count;   // neighbouring pixel pairs
+    std::uint64_t key;    // low << 32 | high
+    std::uint32_t count;  // neighbouring pixel pairs
   };
   std::vector<Touch> touching_;  // per stretch of one border in the scan
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
