@@ -11,6 +11,7 @@
 #include "plane_merging.h"
 #include "relabelling.h"
 #include "region_output.h"
+#include "leftover_seeds.h"
 #include "seed_selection.h"
 #include "segment_borders.h"
 
@@ -100,6 +101,7 @@ struct Segmenter::Workspace {
   DistanceBuffer buffer;
   SeedSelector selector;
   SeedSelector fine_selector;  // the second pass's smaller seed cube
+  LeftoverSeeds leftover;      // the third pass's: regions no seed reached
   PlaneFlood flood;
   std::vector<Segment> segments;
   std::vector<SegmentEdge> edges;
@@ -170,6 +172,19 @@ struct Segmenter::Workspace {
               flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
         }
       }
+    }
+    // Regions of unclaimed points large enough to be a plane: faces narrower than any seed
+    // cross (LeftoverSeeds).
+    const std::size_t min_pixels =
+        frame.tolerances.minInliers() / static_cast<std::size_t>(params.subsampling * params.subsampling);
+    for (const Seed& leftover_seed : leftover.find(grid, buffer, frame.tolerances, min_pixels)) {
+      if (buffer.label(leftover_seed.index) != 0) continue;  // an earlier one's flood took it
+      ++result.stats.seeds;
+      const std::int32_t label = static_cast<std::int32_t>(segments.size());
+      segments.emplace_back();
+      PhaseTimer timer(timed, flooding);
+      result.stats.pixels_taken_over +=
+          flood.grow(grid, leftover_seed, label, params, frame.tolerances, buffer, segments, edges);
     }
     if (timed) {
       result.phases.flood_fill += flooding;
