@@ -155,6 +155,15 @@ struct Segmenter::Workspace {
     const PointGrid& grid = frame.grid;
     const int stride = std::max(1, kSeedStride / params.subsampling);
     const int offset = stride / 2;
+    // A new segment flooded from an accepted seed.
+    const auto floodFrom = [&](const Seed& accepted) {
+      ++result.stats.seeds;
+      const std::int32_t label = static_cast<std::int32_t>(segments.size());
+      segments.emplace_back();
+      PhaseTimer timer(timed, flooding);
+      result.stats.pixels_taken_over +=
+          flood.grow(grid, accepted, label, params, frame.tolerances, buffer, segments, edges);
+    };
     Seed seed;
     for (const SeedSelector* seeds : {&selector, &fine_selector}) {
       for (int y = offset; y < grid.height; y += stride) {
@@ -163,13 +172,7 @@ struct Segmenter::Workspace {
               static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
           if (buffer.label(pixel) != 0) continue;
           ++result.stats.seed_candidates;
-          if (seeds->test(grid, x, y, seed) != SeedVerdict::kAccepted) continue;
-          ++result.stats.seeds;
-          const std::int32_t label = static_cast<std::int32_t>(segments.size());
-          segments.emplace_back();
-          PhaseTimer timer(timed, flooding);
-          result.stats.pixels_taken_over +=
-              flood.grow(grid, seed, label, params, frame.tolerances, buffer, segments, edges);
+          if (seeds->test(grid, x, y, seed) == SeedVerdict::kAccepted) floodFrom(seed);
         }
       }
     }
@@ -178,13 +181,7 @@ struct Segmenter::Workspace {
     const std::size_t min_pixels =
         frame.tolerances.minInliers() / static_cast<std::size_t>(params.subsampling * params.subsampling);
     for (const Seed& leftover_seed : leftover.find(grid, buffer, frame.tolerances, min_pixels)) {
-      if (buffer.label(leftover_seed.index) != 0) continue;  // an earlier one's flood took it
-      ++result.stats.seeds;
-      const std::int32_t label = static_cast<std::int32_t>(segments.size());
-      segments.emplace_back();
-      PhaseTimer timer(timed, flooding);
-      result.stats.pixels_taken_over +=
-          flood.grow(grid, leftover_seed, label, params, frame.tolerances, buffer, segments, edges);
+      if (buffer.label(leftover_seed.index) == 0) floodFrom(leftover_seed);  // else an earlier one's flood took it
     }
     if (timed) {
       result.phases.flood_fill += flooding;

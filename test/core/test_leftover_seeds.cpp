@@ -17,9 +17,7 @@ namespace {
 constexpr int kWidth = 60, kHeight = 40;
 
 // Exact depths (no noise): the tolerances of exact data.
-Tolerances exactTolerances() {
-  return Tolerances(Params(), NoiseModel(), 1.0 / test::kPinholeFocal, kWidth * kHeight);
-}
+Tolerances exactTolerances() { return Tolerances(Params(), NoiseModel(), 1.0 / test::kPinholeFocal, kWidth * kHeight); }
 
 // Every pixel claimed by segment 1 but columns [first, last).
 DistanceBuffer claimedBut(int first, int last) {

@@ -165,6 +165,22 @@ TEST(SegmenterSurfaces, TheStripsOfAWideColumnAreNotPlanes) {
   }
 }
 
+// A shelf board reaching out 30 cm from a wall, its top 30 cm below eye level and
+// `half_width` either side of the view's centre: the wall (id 1), the board's top (2) and its
+// front edge (3), `thickness` high, `front` metres away.
+std::vector<ScenePlane> shelfBoard(double front, double thickness, double half_width) {
+  const ScenePlane wall = test::frontalPlane(front + 0.3, 1);
+  const ScenePlane top =
+      planeThrough({0.0, 0.3, 0.0}, {0.0, -1.0, 0.0}, 2, [front, half_width](const Eigen::Vector3d& p) {
+        return p.z() >= front && p.z() <= front + 0.3 && std::abs(p.x()) < half_width;
+      });
+  ScenePlane edge = test::frontalPlane(front, 3);
+  edge.contains = [thickness, half_width](const Eigen::Vector3d& p) {
+    return p.y() >= 0.3 && p.y() <= 0.3 + thickness && std::abs(p.x()) < half_width;
+  };
+  return {wall, top, edge};
+}
+
 // Exact data: a shelf board 2 cm thick, its front edge 1.5 or 2 m away and 3-4 pixels high. No
 // seed cross fits on it (before LeftoverSeeds its best IoU was 0.09 and 0), but the region the
 // floods leave there is flat: it seeds its own flood. At 1.5 m the top's flood, seen at a
@@ -172,16 +188,7 @@ TEST(SegmenterSurfaces, TheStripsOfAWideColumnAreNotPlanes) {
 TEST(SegmenterSurfaces, FindsAnEdgeNarrowerThanAnySeedCross) {
   for (const double front : {1.5, 2.0}) {
     SCOPED_TRACE(testing::Message() << "edge at " << front << " m");
-    const double thickness = 0.02;
-    const ScenePlane wall = test::frontalPlane(front + 0.3, 1);
-    const ScenePlane top = planeThrough({0.0, 0.3, 0.0}, {0.0, -1.0, 0.0}, 2, [front](const Eigen::Vector3d& p) {
-      return p.z() >= front && p.z() <= front + 0.3 && std::abs(p.x()) < 0.6;
-    });
-    ScenePlane edge = test::frontalPlane(front, 3);
-    edge.contains = [thickness](const Eigen::Vector3d& p) {
-      return p.y() >= 0.3 && p.y() <= 0.3 + thickness && std::abs(p.x()) < 0.6;
-    };
-    const RenderedGrid scene = test::render(camera(), {wall, top, edge}, kinectNoise(false), 26);
+    const RenderedGrid scene = test::render(camera(), shelfBoard(front, 0.02, 0.6), kinectNoise(false), 26);
     Segmenter segmenter(defaults());
     const Segmentation& result = segmenter.segment(scene.grid());
     EXPECT_GT(bestIoU(scene, result.labels, 1), 0.9);
@@ -199,15 +206,7 @@ TEST(SegmenterSurfaces, FindsTheFrontEdgeOfAShelfBoard) {
     SCOPED_TRACE(sensorName(noisy));
     const double thickness = noisy ? 0.05 : 0.03;
     const double front = noisy ? 1.0 : 1.5;
-    const ScenePlane wall = test::frontalPlane(front + 0.3, 1);
-    const ScenePlane top = planeThrough({0.0, 0.3, 0.0}, {0.0, -1.0, 0.0}, 2, [front](const Eigen::Vector3d& p) {
-      return p.z() >= front && p.z() <= front + 0.3 && std::abs(p.x()) < 0.5;
-    });
-    ScenePlane edge = test::frontalPlane(front, 3);
-    edge.contains = [thickness](const Eigen::Vector3d& p) {
-      return p.y() >= 0.3 && p.y() <= 0.3 + thickness && std::abs(p.x()) < 0.5;
-    };
-    const RenderedGrid scene = test::render(camera(), {wall, top, edge}, kinectNoise(noisy), 25);
+    const RenderedGrid scene = test::render(camera(), shelfBoard(front, thickness, 0.5), kinectNoise(noisy), 25);
     Segmenter segmenter(defaults());
     const Segmentation& result = segmenter.segment(scene.grid());
     EXPECT_GT(bestIoU(scene, result.labels, 1), 0.9);
