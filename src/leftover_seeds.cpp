@@ -45,7 +45,7 @@ const std::vector<Seed>& LeftoverSeeds::find(const PointGrid& grid, const Distan
       sums.add(p);
       const double range_sq = p.squaredNorm();
       const double reach = kNeighbourFootprints * tolerances.footprint(std::sqrt(range_sq)) +
-                           3.0 * depthSigma(tolerances.noise(), range_sq);
+                           noiseDeviations(tolerances.noise(), kPointDeviations, range_sq);
       const float reach_sq = static_cast<float>(reach * reach);
       const std::size_t x = i % width;
       const std::size_t neighbours[4] = {x > 0 ? i - 1 : i, x + 1 < width ? i + 1 : i, i >= width ? i - width : i,
@@ -65,11 +65,12 @@ const std::vector<Seed>& LeftoverSeeds::find(const PointGrid& grid, const Distan
     if (!fit.valid) continue;
     // Most points within the plane's band: a flat region, not a curved one or clutter.
     const double range = fit.centroid.norm();
-    const double incidence = std::abs(fit.normal.dot(fit.centroid)) / range;
+    const double incidence = viewIncidence(fit);
     // Not a surface seen edge-on: the band along the outline of every curved surface (a
     // column's, a ball's) fits the plane tangent there as well as a flat face does.
     if (!(incidence >= kSmallestIncidenceCosine)) continue;
-    const double band = 3.0 * depthSigma(tolerances.noise(), range * range) * incidence + tolerances.planeFloor(range);
+    const double band =
+        noiseDeviations(tolerances.noise(), kPointDeviations, range * range) * incidence + tolerances.planeFloor(range);
     std::size_t inliers = 0, nearest = members_.front();
     double nearest_sq = std::numeric_limits<double>::infinity();
     for (const std::size_t i : members_) {

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "plane_sums.h"
+
 namespace floodplane {
 
 namespace {
@@ -195,7 +197,7 @@ bool PlanarityTest::bends(const Sums& s, const Quadric& q, const PlaneFit& fit, 
   if (s.count < kSmallestSample) return false;
   // The noise across the surface: along the rays, projected on the normal.
   const double range = fit.centroid.norm();
-  const double incidence = range > 0.0 ? std::abs(fit.normal.dot(fit.centroid)) / range : 1.0;
+  const double incidence = viewIncidence(fit);
   const double across = std::max(depthSigma(tolerances.noise(), range * range) * incidence,
                                  kFootprintFloor * tolerances.footprint(range));
   return q.explained > kSignificance * across * across && q.curvature > kSmallestCurvature;

@@ -24,6 +24,13 @@ inline bool facesSensor(const Eigen::Vector3d& normal, const Eigen::Vector3d& po
   return range > 0.0 && std::abs(normal.dot(point)) >= kMinIncidenceCosine * range;
 }
 
+/// The cosine of the angle between a fitted plane's normal and the viewing ray to its
+/// centroid (1: seen face-on; 0: edge-on). 1 for a centroid at the sensor, where there is no ray.
+inline double viewIncidence(const PlaneFit& fit) {
+  const double range = fit.centroid.norm();
+  return range > 0.0 ? std::abs(fit.normal.dot(fit.centroid)) / range : 1.0;
+}
+
 /// Standard deviation of a fitted normal's direction [rad]: the residual variance over the
 /// number of points times their spread along the plane's narrower in-plane axis. Infinite
 /// when the points do not span a plane clearly (second eigenvalue under 4x the first: a line,
