@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # pcd_segment's batch throughput with -j 1 against -j N (default: every core), rounds of the
 # two alternating, and a byte-for-byte comparison of their outputs (issue 16's batch target:
 # on 2 cores a folder of 200 frames at least 1.8x faster than -j 1).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """What the Python benchmarks share: the machine description printed before the figures,
 medians, and the project's default paths (the build tree's package and apps)."""
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The frames every benchmark runs on: the real 640x480 frames in ../shared/data/real (when
 // present) and the project's scenes rendered at any resolution.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // bench_segmentation: floodplane against PCL's OMPS on the real frames and the project's
 // scenes (issue 8's targets). Prints the configuration first; see bench/README.md.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The full comparison of bench/README.md: floodplane at sub-sampling 1 and 2 against PCL's OMPS
 # and RANSAC and Open3D's RANSAC, each baseline at its default and its tuned values
 # (bench/tuned_baselines.json), on the bundled scenes and on the random family's report split.

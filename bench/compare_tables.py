@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The tables of a pcd_compare report, from its JSON (`pcd_compare --json`): the means per
 method (over every file, then one table per sensor model), the mean IoU per file (the best in
 bold), every file and method, floodplane by sub-sampling factor (Table III) and floodplane's

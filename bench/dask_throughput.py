@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Throughput of floodplane.distributed.segment_files on a dask LocalCluster of 1 and of 2
 worker processes (one thread each) over the same frames, runs of both alternating, and a
 check that every output is pcd_segment's, byte for byte. Each worker reads, segments and

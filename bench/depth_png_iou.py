@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Does a depth PNG give the planes its point cloud gives? Each bundled scene (rendered by the
 build: build/data/rendered/*.pcd, exact and Kinect-noise sensors) is converted into a 16-bit
 depth PNG (pcd_to_depth_png.py) and pcd_segment segments both. Reported per scene: the mean

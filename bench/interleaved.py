@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Before/after timing of two builds of bench_segmentation on a shared, noisy machine: the two
 binaries run one after the other, alternating which goes first, for several rounds; each
 benchmark's median over the rounds is compared. Prints a line per benchmark (median before,

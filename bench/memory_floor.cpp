@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The least any pixel-accurate segmentation of a frame costs on this machine: one pass that
 // reads every point and writes a label per pixel, with no other work (issue 16's 1 ms target
 // is measured against it). Two ways:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // floodplane: FloodFillPlaneSegmentation::segmentAndRefine with the paper's defaults, one
 // segmenter reused across iterations as in a camera loop (its buffers are allocated once).
 #include <benchmark/benchmark.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // PCL OrganizedMultiPlaneSegmentation with IntegralImageNormalEstimation, the settings of the
 // paper's Sec. IV, shared with pcd_compare (apps/common/omps_run.h). Normal estimation is part
 // of the timed call, since OMPS cannot run without it.

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Converts a rendered scene (pcd_synth's <scene>.<sensor>.pcd and .planes.json) into the
 depth image a camera would have given: a 16-bit PNG of z in units of 1/depth_scale metres
 (0 = no return), and the scene camera's intrinsics. Prints "fx,fy,cx,cy" for --intrinsics.

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """What calling floodplane from Python costs: on each frame, Segmenter.segment from Python
 (perf_counter around the call: argument checks, the GIL released and taken back, the result's
 copy of the labels and planes) against the core's C++ call inside it (Segmenter::segment,

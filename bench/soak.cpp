@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Soak run (issue 7): 10 000 segmentations of varied clouds in one process, as a camera loop
 // running for minutes. The segmenter reuses its per-frame buffers, so resident memory must
 // stay flat once every frame size has been seen; the counters report it at the first and the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Issue 28's head start: each frame of a rendered walk (pcd_synth --sequence, Kinect noise)
 // segmented cold and with a head start from the previous frame (Segmenter::Options::head_start),
 // the two interleaved frame by frame in one run (which goes first alternates) so that the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The noise estimation alone (noise_estimation.h) on the real frames and on one scene at every
 // frame size of floodplane/s1/size. It fits about a thousand patches whatever the frame's size
 // (kPatchesPerFrame), so it is a fixed cost per call: this measures how large.

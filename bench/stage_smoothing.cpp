@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The depth smoothing alone (depth_smoothing.h), four points at a time (SSE2) against the
 // widest loop the CPU runs (eight, AVX), on the real frames with the noise the segmenter
 // measures on each. The two give the same floats (DepthSmoothing tests); this is their speed.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The tracker alone (floodplane/plane_tracker.h): PlaneTracker::update and relabel on the three
 // consecutive real Kinect frames (frame_20121214T14225*), segmented once beforehand and fed
 // over and over in order, as a camera loop with tracking on pays them per frame. Issue 28's

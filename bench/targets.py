@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Issue 16's speed targets from one run of bench_segmentation: every figure of the table comes
 from the same run (one thread; on a shared machine only figures of one run compare), printed
 as Markdown with the machine and, per target, the figure and whether it is met.

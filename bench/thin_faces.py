@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Thin faces (issue 26): are the 2 cm faces of boards found? Renders the boards family
 (`pcd_synth --random N --family boards`: 2-5 boards 2 cm thick standing, hung, leaning, lying
 and sticking out of the walls of a bare room, seen obliquely from 0.8-3.5 m) with the sensor

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Plane tracking against ground truth (issue 28): renders a walking camera's sequence per seed
 with `pcd_synth --sequence`, segments each with `pcd_segment --track` (the label field of its
 outputs holds track ids) and prints, per seed and over all, the id switches, lost planes and

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Tunes the baselines of pcd_compare (PCL's OMPS and sequential RANSAC, Open3D's sequential
 RANSAC) for each sensor model, and writes the values that `pcd_compare --tuned` reads.
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Checks that every C++ file of the project is formatted as the project's .clang-format says
 # (Debian 12's clang-format 14, from scripts/install_deps.sh). Lists the files that are not and
 # fails; `scripts/check_format.sh --fix` formats them in place instead.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the build tree's floodplane into a temporary prefix, then configures, builds and
 # runs examples/consumer against it: the PCL drop-in, the PCL-free core, and every installed
 # header compiled on its own. Usage: scripts/check_install.sh <build-dir>

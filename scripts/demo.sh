@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # From a fresh clone to results: installs what is missing (Debian packages), builds what the
 # demo needs (Release, no tests), renders the bundled scenes and compares floodplane with PCL's
 # RANSAC and OMPS on them. Prints the summary table and where the side-by-side pictures are.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs what floodplane needs from Debian 12's packages. As root it installs them;
 # otherwise it prints the command to run and fails, so nothing half-happens.
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs dependencies, builds floodplane with its tests and its Python module (for Debian's
 # /usr/bin/python3, which has the packages install_deps.sh adds) and runs them all. The
 # benchmarks (bench/, -DFLOODPLANE_BUILD_BENCHMARKS=ON) are not tests and are not built here:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Sec. III-B: the distance function of the flood (Eqs. 1-3), as one test that every stage
 // which lets a pixel join a plane calls (the flood, the relabelling's neighbour edges,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Explicit instantiations of FloodFillPlaneSegmentation for PCL's common point types, so
 // that users compile none of its template code. For other point types, include
 // floodplane/impl/flood_fill_plane_segmentation.hpp (or define PCL_NO_PRECOMPILE).

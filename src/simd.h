@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The one SIMD switch of the core. Loops that take four neighbouring pixels of a row at once
 // are written with the small types below, so that no other file uses intrinsics. The CMake

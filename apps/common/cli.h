@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The command-line handling every floodplane app shares: --version, and what --help, --version
 // and a bad command line print and exit with.

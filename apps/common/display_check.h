@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Whether 3-D views can be drawn here. Debian 12's VTK 9.1 is built for X11 alone (no OSMesa,
 // no EGL), so even its off-screen rendering needs an X display with OpenGL (GLX): a desktop's,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // PCL's OrganizedMultiPlaneSegmentation as pcd_compare and the benchmarks run it: the settings
 // of the paper's Sec. IV, the outputs of segmentAndRefine kept between calls, and the one safe

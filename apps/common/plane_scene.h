@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the 3-D views of a segmentation show, and from where: the points with a colour label
 // each, a marker per plane (centroid, normal, size, outline), and the cameras. Plain data and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #include "common/plane_view.h"
 
 #include <pcl/visualization/pcl_visualizer.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The 3-D views of a segmentation (PCL's visualizer, VTK): the points coloured by plane as in
 // the label PNG (no plane: grey), each plane's normal as a white arrow from its centroid as

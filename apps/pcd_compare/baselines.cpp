@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The tunable baselines of method.h: one table of their parameters, and the tuned values' file.
 
 #include <nlohmann/json.hpp>

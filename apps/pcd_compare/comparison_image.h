@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The side-by-side picture of one scene, ground truth | ransac | omps | floodplane: as label
 // images (--png) or rendered in 3-D from the oblique camera of common/plane_view.h (--png3d).

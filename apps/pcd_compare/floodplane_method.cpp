@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // floodplane itself, through its PCL drop-in class, as a user would call it.
 
 #include "floodplane/flood_fill_plane_segmentation.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One input as pcd_compare compares it: the frame's points, the ground-truth labels when the
 // file has a `label` field, and which pixels the metrics count.

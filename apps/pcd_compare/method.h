@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The segmentation methods pcd_compare runs: their common interface and how each is made. Each
 // method lives in its own file so that the heavy PCL headers (sample consensus, OMPS, normal

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // PCL's OrganizedMultiPlaneSegmentation with integral-image normals, as in PCL's own
 // organized segmentation demo (its settings and the one safe call in common/omps_run.h).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Open3D's plane RANSAC (geometry::PointCloud::SegmentPlane), run sequentially as PCL's is:
 // the best plane, its inliers taken away, again, until a plane has too few inliers. The only
 // file that includes Open3D's headers.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_compare: runs floodplane, PCL's sequential RANSAC and OMPS and Open3D's sequential RANSAC
 // on organized PCD files and reports their runtime and, where a file carries ground-truth
 // labels, their accuracy (the project's metrics.md, floodplane_eval). This file is the driver:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // PCL's sequential RANSAC baseline: find the best plane, take its inliers away, repeat.
 
 #include <pcl/ModelCoefficients.h>

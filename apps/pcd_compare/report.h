@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // pcd_compare's report: one JSON document (ordered as it was filled: files and methods in run
 // order), which the driver fills scene by scene and --json writes; the means derived from it;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // --poses of pcd_segment --track: the camera pose of every input, read from a JSON file (as
 // pcd_synth --sequence writes <scene>.poses.json), and the camera motions the tracker takes

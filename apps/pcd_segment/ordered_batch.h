@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Runs the items of a batch on several threads and reports their results on the calling
 // thread in item order, so that a parallel run prints, and fails, exactly as a serial one.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Where pcd_segment's outputs go. No PCL here: plain paths, so the rules can be tested
 // without running a segmentation.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_segment: segments organized PCD files and 16-bit depth PNG images into planes and
 // writes the labels (PCD, and optionally PNG and a JSON report). Argument parsing and file
 // I/O only; the segmentation is floodplane::FloodFillPlaneSegmentation.

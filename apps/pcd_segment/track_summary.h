@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // tracks.json of pcd_segment --track: every track of the sequence, with the files it was first
 // and last seen in. No PCL here: the tracker's records in, JSON out.

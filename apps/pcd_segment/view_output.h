@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // pcd_segment's 3-D outputs: the snapshot (an image rendered off screen) and the window of
 // --view, both drawn by common/plane_view.h from the segmentation's planar regions.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_synth: renders scene files, or procedurally generated scenes, into organized PCD clouds
 // with ground-truth plane labels. Argument parsing and file output only; the scenes and the
 // rendering are floodplane_synth.

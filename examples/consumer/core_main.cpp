@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Segments a synthetic room corner with the PCL-free core: a plain x y z grid in, a label per
 // pixel and the planes out. Links floodplane::core only.
 #include <floodplane/segmenter.h>

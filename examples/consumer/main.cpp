@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Segments a synthetic room corner (floor, back wall, side wall) and prints its planes:
 // the drop-in use of floodplane in place of pcl::OrganizedMultiPlaneSegmentation.
 #include <floodplane/flood_fill_plane_segmentation.h>

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Segments a 16-bit depth PNG (a Kinect's, a RealSense's, the TUM RGB-D benchmark's) into
 planes and prints them; optionally writes the labelled points as a PCD file.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How the extension reports bad input: the Python exception that fits, with a message that
 // names the function and the argument. Every function throws (pybind11::error_already_set),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One input file to one label file, as pcd_segment does it: the same reader, the same
 // segmentation (with refinement, the sensor moved to the origin), the same output file

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The compiled part of the floodplane package (imported as floodplane._floodplane; the
 // package's __init__.py is the public face).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // floodplane::Params from Python keyword arguments whose names are the struct's field names,
 // and back. One table of the fields, so that the names, the conversions and the messages

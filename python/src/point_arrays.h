@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // numpy arrays in and out: an (H, W, 3) array as the core's PointGrid (in place when its
 // memory already has the grid's layout), depth images as points, labels as uint32.

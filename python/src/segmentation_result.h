@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The result of one segmentation as Python sees it: a copy of the core's Segmentation (which
 // the Segmenter overwrites on its next call), its labels as a read-only numpy view, its planes

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // floodplane.Segmenter: the core's Segmenter (its buffers kept between calls), segmenting
 // numpy arrays and files without holding the GIL.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // floodplane.Tracker: the core's PlaneTracker over Segmentation results, giving planes ids that
 // persist from frame to frame; floodplane.Track: one of its tracks.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Segmentation quality against ground truth, exactly as the project's metrics definition
 // (metrics.md) gives it: per-plane IoU, mean and weighted IoU (the paper's Table I), the Hoover

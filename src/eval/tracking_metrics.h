@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Plane tracking quality against ground truth (issue 28): whether a ground-truth plane keeps
 // one track id over a sequence of frames. Fed frame by frame, in order, with the ground-truth

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A depth camera's pinhole model: how a depth image's pixels become 3-D points. One function
 // does the back-projection for every depth input (pcd_segment's PNG files, the Python

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reading depth images stored as 16-bit single-channel PNG files (Kinect, RealSense, the TUM
 // RGB-D benchmark): the raw depth units of every pixel, 0 where the sensor saw nothing.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Which files a batch tool reads: the command line's files, and the input files inside the
 // directories it names. Plain paths, no PCL, so the rules can be tested without reading a file.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One organized frame read from an input file, in the point types the apps segment. Every
 // input kind (organized PCD files, 16-bit depth PNG images) is read into this one type, so the

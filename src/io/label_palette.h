@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Colours for label images: label 0 (no plane) near-black, every other label a bright colour
 // well separated from the labels numbered near it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The labelled cloud the tools write for a segmented frame: the input's points (and colour,
 // when it has some), grid and sensor pose, with each point's plane label.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The parameters and the noise model as the apps report them (JSON, and one line of text):
 // written once for pcd_segment, pcd_compare and the benchmarks. Unset (scale-free) lengths

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Saving point clouds as PCD files, atomically. The only floodplane file that includes
 // pcl/io/pcd_io.h is the matching .cpp, which keeps that heavy header out of every caller.

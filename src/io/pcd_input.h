@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reading any organized PCD file with x y z fields, with the checks that keep PCL's reader
 // from crashing or exhausting memory on a truncated or corrupt file.

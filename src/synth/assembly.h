@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // An object of a generated scene built in its own frame (z up, standing on z = 0, its
 // footprint centred on the origin): its primitives, footprint, the surfaces other objects can

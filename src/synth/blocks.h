@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Polyhedral blocks of the kind in the SegComp structured-light images: boxes, wedges, roof
 // and arch blocks whose top faces meet at shallow angles (10-30 degrees), chamfered boxes,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Random scanner scenes: polyhedral blocks on a table about 1 m from the structured-light
 // scanner, as in the SegComp structured-light images (see scene_generator.h).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Random boards scenes: 2 cm boards standing, hung, leaning, lying and sticking out of the walls
 // of a bare room, seen obliquely so that their 2 cm edges show (see scene_generator.h).
 

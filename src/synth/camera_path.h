@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A camera carried through a scene: the poses of a hand-held depth camera walking at a
 // person's pace, turning smoothly, nodding a little, never nearer than a clearance to any

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Checking a generated camera pose: what a small preview render through the scene's camera
 // shows, and how far the camera is from every surface. The scene generators draw poses until

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A depth sensor's calibration warp: what a real scanner's or depth camera's calibration
 // leaves behind (a lens or projector model almost, not exactly, right), a depth error that

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Keeping generated objects apart: the footprints of objects on a flat support (the floor, a
 // table top) as rectangles turned about the vertical, tested for overlap by the separating

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The furniture of generated rooms, each built in its own frame (see assembly.h), with its
 // parameter ranges in metres. Objects that stand against a wall have their back on the plane

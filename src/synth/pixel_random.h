@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The renderer's random numbers: one small generator per pixel, seeded from the render seed
 // and the pixel's row-major index.

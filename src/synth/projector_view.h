@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The structured-light scanner's projector: which surface points it lights. A point seen by
 // the camera is lit when it lies inside the projector's field, the surface there faces the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scene generators' random numbers: a stream of draws fixed by (seed, stream), the same on
 // every platform (our own generator and arithmetic, never the standard distributions, whose

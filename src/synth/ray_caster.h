@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene turned into camera-frame surfaces, with its ground-truth planes, ready to cast rays.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Random rooms: a shell with openings, furniture of one of three kinds placed without
 // overlaps, and a camera aimed at one of the objects (see scene_generator.h).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The shell of a generated room: a floor of width x depth (x from 0 to width, y from 0 to
 // depth, z up), four walls of the room's height, sometimes a ceiling, and openings in the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A camera walking through a generated room, rendered frame by frame: pcd_synth --random 1
 // --seed S --sequence N without the files, for the benchmarks and tests of a stream of frames.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The structured-light scanner model: a close-range triangulation scanner of the kind the
 // SegComp structured-light data sets were taken with (objects on a table about 1 m away): a

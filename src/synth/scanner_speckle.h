@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Speckle along the structured-light scanner's depth discontinuities and shadow edges
 // (ScannerParams::speckle). Where the pattern falls on an edge, a camera pixel sees parts of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A scene as authored: a camera and a list of primitives, all in one world frame (metres).
 // data/scenes/README.md describes the JSON form; scene_file.h reads it.

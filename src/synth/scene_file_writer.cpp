@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Writing scenes as JSON that parseScene reads back into the same scene, number for number:
 // nlohmann::json prints the shortest decimal that reads back as the same double, and poses
 // are written as matrices ("rotation": {"matrix": ...}) rather than angles, which would not

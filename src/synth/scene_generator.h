@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Random scenes with ground truth, one pair per seed: a room for the depth camera (sensor
 // models none and kinect) and a table of polyhedral blocks for the structured-light scanner;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One surface, one ground-truth id over a sequence of frames. The renderer gives coplanar faces
 // that touch in a frame's image the label of the smallest id among them (one continuous flat

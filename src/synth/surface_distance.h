@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Distances from a point to the surfaces of scene primitives (world frame), for placing
 // cameras: no surface nearer than the sensor's minimum range, never inside a solid.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Scene surfaces in the camera frame, ready for ray casting. Every ray starts at the camera
 // centre (the origin) with a direction whose z is 1, so the ray parameter t is the depth z.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-B's relabelling: union-find and the splitting of a label into its 4-connected
 // pieces after later floods took pixels from it.
 #include <gtest/gtest.h>

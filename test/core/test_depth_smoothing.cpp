@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Beyond the paper: the edge-preserving 3 x 3 mean before segmenting. It divides independent
 // noise by about three on a surface, keeps a depth step's two sides apart and holes as holes.
 #include <gtest/gtest.h>

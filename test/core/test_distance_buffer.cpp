@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Eq. 4: the per-pixel owner and plane distance, and the rule that a flood takes a pixel only
 // when its plane fits the pixel better than the current owner's.
 #include <gtest/gtest.h>

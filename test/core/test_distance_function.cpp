@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-B: the distance functions of the flood (Eqs. 2, 3) and the membership test of
 // Eq. 1 with range-dependent tolerances (depth noise, Eq. 8 spacing).
 #include <gtest/gtest.h>

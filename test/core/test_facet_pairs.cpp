@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The candidate facet pairs (FacetPairs): planes that touch along enough pixel pairs whose
 // points are 3-D neighbours, with normals close enough to be facets of one curved surface.
 // Whether a pair is one surface is the planarity test's (test_planarity.cpp).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The PCL-facing class: OMPS's interface and meaning, agreement with PCL, bad input.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Segmenter::Options::head_start on walks rendered as pcd_synth --sequence renders them
 // (Kinect noise, report seeds): the head start's results against cold starts of the same
 // frames, and what it takes from the previous frame (its noise model).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Beyond the paper: bridging small holes. A surface that lost a third of its returns pixel by
 // pixel (a scanner on a dark surface) is filled in on the plane and found whole; depth steps
 // and wide holes (shadows) are left alone; filled pixels are never labelled.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Seeds for what the seed lattice leaves (LeftoverSeeds): a region of unclaimed points that
 // fits a plane seeds a flood with that plane; a curved or a small region does not.
 #include <gtest/gtest.h>

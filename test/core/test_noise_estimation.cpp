@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Self-calibration: the depth noise measured on the frame recovers the noise a scene was
 // rendered with (sigma(r) = sigma_0 + c r^2 along the rays), finds none on exact data, and
 // finds the step of quantized depths.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Beyond the paper: pieces of one plane cut apart by something in front of it are joined when
 // every pixel of the gap between them is in front of the plane, on it, or has no return; never
 // across pixels behind it (two coplanar tables with the floor between them stay two).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Beyond the paper: the planarity test. A noisy plane is kept, a wall bent by a sensor's
 // calibration is kept, patches of a column and of a ball are rejected; two touching strips of
 // a column, each flat within the noise, are one curved surface, and two faces meeting at a

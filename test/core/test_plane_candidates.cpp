@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The candidate planes' numbering: renumbering by size, regrouping, dropping, and the deferred
 // renumbering that region output reads the labels through after refinement.
 #include <gtest/gtest.h>

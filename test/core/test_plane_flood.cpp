@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-A, III-B: one flood from a hand-made seed over hand-made grids. Eq. 2 (plane
 // distance) and Eq. 3 (Euclidean neighbours) each stop it on their own, Eq. 4 takes pixels from
 // another segment only when they fit better (by the takeover margin between estimates of one

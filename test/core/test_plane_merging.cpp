@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-D: the merge test of Eq. 9 between two segments and the best-first agglomerative
 // merging of the segment graph.
 #include <gtest/gtest.h>

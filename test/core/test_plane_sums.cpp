@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The running sums behind every plane fit (Sec. III-B refits, Sec. III-D merges): adding,
 // removing and merging points, and the least-squares plane they give.
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // PlaneTracker: track ids over a stream of segmentations, built by hand on small grids.
 #include <gtest/gtest.h>
 

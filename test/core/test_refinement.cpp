@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Refinement (segmentAndRefine's counterpart): each plane grows, breadth first, into the
 // unlabelled pixels next to it that fit it under its own thresholds; a margin pixel next to
 // several planes goes to the one that explains it best; pixels no plane explains, holes and

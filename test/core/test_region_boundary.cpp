@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The contours of the output (OMPS's boundary indices): Moore-neighbour tracing of a labelled
 // region's outer boundary.
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The last stage: from merged segments to the planes a user gets. Clusters smaller than
 // min_inliers (counted at full resolution) are dropped, planes are numbered by size (largest
 // first, 1..K), labels come back at full resolution after sub-sampling, pixel by pixel, and the

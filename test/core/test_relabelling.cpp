@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-B, after the floods: the relabelling of segments that Eq. 4 takeovers cut apart.
 // Hand-made label images (string art) over a pinhole grid: a segment cut in two becomes two
 // segments with the sums of their own pixels, one still connected stays whole, crumbs are

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // findInRow and findUnlabelledNextToLabelled: the label scans' four-at-a-time searches must
 // find what a pixel-by-pixel loop finds, wherever in a block the answer lies and however the
 // row ends.

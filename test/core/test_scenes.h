@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Tiny ray-cast scenes with known planes for the core's tests: a pinhole camera at the
 // origin (x right, y down, z forward) looking at bounded planes. Header-only on purpose:

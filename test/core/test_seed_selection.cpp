@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-C: seed selection. Each discontinuity test on a scene built to trip it alone.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The borders between segments (SegmentBorders): one pass over the segment image collects,
 // per pair of touching segments, the pixel pairs across their border, from which the merge
 // test reads the step between them (MergeCriterion::continuous).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Properties of FloodFillPlaneSegmentation that must hold for any input, checked over random
 // and odd organized clouds: the invariants of segmentAndRefine's outputs, determinism across
 // copies and reused instances, robustness to holes, degenerate grid shapes, very large and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The whole pipeline on ray-cast scenes whose planes are known.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Beyond the paper, through the whole pipeline with default (self-calibrating) parameters,
 // on exact and on Kinect-like data: shallow creases, planes cut apart by something in front
 // of them, coplanar planes that are apart, curved surfaces and thin faces.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sec. III-A: the span flood fill finds exactly the 4-connected region and examines each
 // pixel about once, where a four-neighbour fill examines it four times.
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Every length tolerance of the method at a range r: the paper's fixed lengths where Params sets
 // them, otherwise derived from the depth noise sigma(r) = sigma_0 + c r^2 and the pixel
 // footprint alpha r; kPointDeviations (3) of the noise widen every one of them.

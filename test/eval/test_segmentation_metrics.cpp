@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Segmentation metrics on hand-drawn label grids whose answers can be counted by eye.
 // Grids are written one string per row: a digit is a label, '.' is label 0; in a mask, 'x'
 // marks a pixel whose ground-truth point is NaN.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tracking metrics on hand-made label sequences whose answers can be counted by eye. A frame
 // is one string of labels for the ground truth and one for the track ids: a digit is a label,
 // '.' is label 0; in a mask, 'x' marks a pixel whose ground-truth point is NaN.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: the input bytes as a PCD file (header and body) through the frame reader. A
 // broken file must give std::runtime_error; a file that loads must be a consistent frame.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: the input bytes as a depth PNG through the frame reader (decoding and
 // back-projection). A broken or non-depth PNG must give std::runtime_error; an image that
 // loads must be a consistent frame whose points follow the pinhole model.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target (issue 7): input bytes -> an organized cloud up to 64 x 64 and parameters,
 // then segmentAndRefine, then the invariants every output must satisfy. Any violation
 // aborts, so libFuzzer reports it with the input that caused it.

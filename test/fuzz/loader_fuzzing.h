@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the file-loader fuzz targets share: the readers take a path, so each input is written
 // to one scratch file per process (in memory where /dev/shm exists), and a violated

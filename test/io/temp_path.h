@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A temporary file path unique to the running test and process: ctest runs tests of one
 // binary in parallel processes, so a fixed name lets one test overwrite another's file.

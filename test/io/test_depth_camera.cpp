@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The back-projection of depth images: the pinhole formula, zero as no return, and the
 // checks of the intrinsics.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Reading 16-bit depth PNG files: the exact units of every pixel, and a clear one-line error
 // (never a crash, never a huge allocation) for a PNG that is not a depth image and for a
 // broken file. These run under AddressSanitizer in CI.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Which files a batch reads: the command line's files, and the input files in its directories.
 
 #include "io/input_files.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Reading input frames: what an organized PCD file gives, and a clear one-line error (never a
 // crash, never a huge allocation) for every kind of bad file. These run under AddressSanitizer
 // in CI, which would see PCL reading past a truncated file.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures of the Python tests: synthetic scenes with known planes, the project's data
 (real frames, rendered scenes) when present, the pcd_segment binary, and a small PNG writer
 for the files floodplane itself does not write (8-bit, colour)."""

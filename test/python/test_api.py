@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The Python API over numpy arrays: what a segmentation gives, that every input layout gives
 the same labels, that C-ordered float32 input is read in place, that the Segmenter's keywords
 are Params' fields, and that segmenting releases the GIL."""

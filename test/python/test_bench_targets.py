@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """bench/targets.py, the table of issue 16's speed targets, on made-up benchmark results: each
 target's verdict follows its figure, and a run without the benchmarks it needs is an error."""
 

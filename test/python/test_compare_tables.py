@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """bench/compare_tables.py, pcd_compare's tables and CSV from its JSON, on a made-up report of
 known figures (two files, two sensor models, floodplane, OMPS and floodplane at sub-sampling 2
 and 4), on bad input, and against the tables pcd_compare printed for the committed results."""

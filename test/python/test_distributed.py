@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """floodplane.distributed.segment_files on a LocalCluster of two worker processes: the
 workers write what segment_file (and so pcd_segment) writes, the summaries come back in
 input order, and a file that fails is reported while the others go on."""

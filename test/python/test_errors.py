@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Every kind of bad input raises the Python exception that fits, with a message naming the
 argument: TypeError for a wrong type or dtype, ValueError for a wrong shape or value, OSError
 (FileNotFoundError) for a file that cannot be read or written. Never a crash."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """examples/python/segment_depth_png.py runs on a depth PNG and prints its planes."""
 
 import os

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Reading and writing files from Python: PCD points and labels, 16-bit depth PNGs, and
 segment_file, which must write what pcd_segment writes, byte for byte."""
 

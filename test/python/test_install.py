@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """cmake --install puts a working package under <prefix>/lib/python3/dist-packages."""
 
 import os

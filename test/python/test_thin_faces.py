@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """bench/thin_faces.py, the thin-faces figures of issue 26: its one-to-one matching and scoring
 on hand-made frames (planes and segments under the size limit left out, NaN pixels ignored, a
 segment given to one plane only, best IoU first), the board face classes, and end to end: the

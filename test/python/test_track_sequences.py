@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """bench/track_sequences.py, the plane tracking figures of issue 28: its Python counting gives
 what src/eval/tracking_metrics.h defines on the hand-made sequences of
 test/eval/test_tracking_metrics.cpp, it reads text PCDs, a rendered sequence scored against

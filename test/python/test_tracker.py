@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """floodplane.Tracker: ids that persist over a stream of segmentations, relabelled label images,
 the tracks' records, the options as keywords, and a clear exception for every bad argument."""
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
 """bench/tune_baselines.py, the baselines' tuner: the coordinate descent on made-up score
 surfaces (no program), the checks of its inputs, the search and the output file with a stand-in
 pcd_compare whose scores are known, and a real tuning with pcd_compare on two small rendered

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Running an app's real binary from a test as a user would from a shell: its exit code and all
 // it says on stdout and stderr, with a fresh directory per test for its inputs and outputs.

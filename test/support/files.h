@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Whole files as bytes, for the tests that compare outputs byte for byte or write broken inputs.
 

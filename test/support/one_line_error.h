@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The readers' errors as the apps print them: a std::runtime_error that names the reason, on
 // one line.

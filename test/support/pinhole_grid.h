@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The organized grid the core's stage tests build their scenes on: width x height points
 // (three or four floats a point) seen through a pinhole of kPinholeFocal pixels, pixel (u, v)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // PNG files read and written with libpng's simplified API: independent of floodplane's own PNG
 // code, which the tests check with them.

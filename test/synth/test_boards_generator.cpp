@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The boards family (issue 26, thin faces): one seed, one scene, byte for byte; boards that are
 // boxes 2 cm thick along their own y, inside the room, of the kinds and ranges the header
 // names; every face of every board its own ground-truth plane, the edges told apart by

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The walking camera of pcd_synth --sequence: one pose per frame starting at the scene's own,
 // steps of a walking pace and turns of a walking person's rate, clearance from every surface
 // kept in random rooms, the leash and turn limit of scene files, determinism, the errors; the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The calibration warp (depth_warp.h): its peak and mean over the image, its dependence on the
 // seed alone, the same warp at another resolution, bad amplitudes; then rendered frames: the
 // points moved along their rays by exactly the warp, and a flat wall that with the warp

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Footprints of generated objects: overlap by the separating axis theorem, with a gap, and the
 // support's border.
 

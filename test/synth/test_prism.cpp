@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Prisms and polygons with holes against geometry worked out independently: every pixel of a
 // prism lies on the face its label names and inside the solid, each face's plane holds that
 // face's corners, faces turned away get no pixels, rays through a concave notch or a hole go on

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene renderer against geometry worked out by hand: the pinhole camera, a plane, a box,
 // a sphere and a cylinder in the exact model, the Kinect model's statistics and its bend,
 // determinism, quirks that change nothing while off, and every scene file in data/scenes.

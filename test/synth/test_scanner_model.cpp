@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The structured-light scanner model: its camera, noise, quantization and loss formulas one at
 // a time, then rendered frames checked against geometry worked out in the test: the noise
 // spread on a wall at 1 m, depths on the lattice, projector shadows and the projector's field,

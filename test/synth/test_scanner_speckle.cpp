@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Speckle along the scanner's depth discontinuities and shadow edges (scanner_speckle.h): a box
 // before a wall rendered with and without it. The band near the edges is worked out here from
 // two other renders (the exact depths, and the projector's shadow in a scanner frame that loses

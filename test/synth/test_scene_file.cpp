@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene file format: the keys added for prisms, holes and matrix rotations, clear errors
 // for bad values, and scenes written by sceneJson reading back into the same scene exactly.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The random scene family: one seed, one pair of scenes, byte for byte; different seeds,
 // different scenes; ground truth that holds for every pixel of the exact render (flat pixels on
 // their plane, unlabelled pixels on a sphere or a cylinder's side); cameras 0.5-6 m from the

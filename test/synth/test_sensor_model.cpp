@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The Kinect sensor model's pieces, one at a time: the axial noise formula, the disparity
 // lattice, the order of noise, quantization, range limits and dropouts. The statistics of
 // the whole model on a rendered plane are in test_renderer.cpp.

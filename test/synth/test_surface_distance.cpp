@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Distances from points to primitive surfaces and inside-the-solid tests, against values
 // worked out by hand: what the scene generators rely on to keep cameras 0.5 m clear of every
 // surface and out of every solid.

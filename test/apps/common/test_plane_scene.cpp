@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // What the 3-D views draw and from where, without drawing: the cameras (a point of the grid
 // projects onto its own pixel in the sensor view; the oblique view keeps the scene in sight)
 // and the plane markers made from labels.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_compare's methods as a library: Open3D's sequential RANSAC and floodplane at
 // sub-sampling 2 on small rendered scenes (planes found, labels in range, determinism, a cloud
 // that is mostly NaN), the baselines made from values by name, and the tuned values' file.

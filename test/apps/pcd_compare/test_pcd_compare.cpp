@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_compare end to end: the real binary on small rendered scenes, checking its exit codes,
 // its Markdown means, its JSON report, its images and its error reports.
 

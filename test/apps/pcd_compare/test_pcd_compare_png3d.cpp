@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_compare --png3d: the comparison's panels rendered in 3-D, under xvfb-run (Debian's VTK
 // draws through X11 only), checked against the scene's ground truth; and its one-line error
 // without a display. A machine that cannot render fails, saying why; it does not skip.

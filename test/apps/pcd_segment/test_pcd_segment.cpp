@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs the pcd_segment binary on clouds written at run time and checks what it writes and
 // says: its labels against the library's on the same cloud, its JSON against its PCD, and
 // one clear error line and exit code for every kind of bad input.

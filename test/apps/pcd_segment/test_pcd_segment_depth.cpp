@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_segment on 16-bit depth PNG images: the back-projected points and the library's labels
 // in the output, --intrinsics and --depth-scale, directories of depth images, and one clear
 // error for an 8-bit or colour PNG, a broken file and missing or bad intrinsics.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The rules pcd_segment applies before and after segmenting, without running it.
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_segment --track: its inputs as one sequence, track ids in the label field and the JSON,
 // tracks.json, a bad frame skipped, and -j refused; --poses, the camera motions from a poses
 // file, and its errors.

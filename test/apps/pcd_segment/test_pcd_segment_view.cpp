@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // pcd_segment's 3-D outputs. The snapshots are rendered for real, under xvfb-run (Debian's
 // xvfb: Debian's VTK draws through X11 only, off screen too), from a bundled scene, and the
 // images are checked against what the segmentation says: every plane in its palette colour,

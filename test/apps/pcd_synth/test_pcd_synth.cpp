@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs the pcd_synth binary with --random and checks what it writes and says: the outputs of
 // every seed and sensor, scenes made again one at a time byte for byte, saved scene files that
 // render the same frames, sequences of a walking camera (--sequence: every frame's files, the
