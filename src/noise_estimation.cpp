@@ -14,11 +14,6 @@ namespace floodplane {
 namespace {
 
 constexpr int kPatchSide = 5;
-// Patch points are this many pixels apart: real depth cameras' noise is correlated over
-// neighbouring pixels (a Kinect's disparity comes from a correlation window), so a patch of
-// adjacent pixels sees a fraction of the scatter that a plane shows over its extent (c = 0.001
-// on the real Kinect frames against 0.0015 at a spacing of 4, as the Kinect's published model).
-constexpr int kPatchSpacing = 4;
 constexpr int kPatchPoints = kPatchSide * kPatchSide;
 constexpr double kPatchDegreesOfFreedom = kPatchPoints - 3;  // a plane has three
 // About this many patches a frame: enough for a dozen range bins of 80, cheap (a few percent
@@ -143,12 +138,12 @@ double NoiseEstimator::latticeStep(std::size_t begin, std::size_t end) {
   return quantile(scratch_, 0.5);
 }
 
-void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0) {
+void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0, int spacing) {
   PlaneSums sums;
   float depths[kPatchPoints];
   int n = 0;
-  for (int y = y0; y < y0 + kPatchSide * kPatchSpacing; y += kPatchSpacing) {
-    for (int x = x0; x < x0 + kPatchSide * kPatchSpacing; x += kPatchSpacing) {
+  for (int y = y0; y < y0 + kPatchSide * spacing; y += spacing) {
+    for (int x = x0; x < x0 + kPatchSide * spacing; x += spacing) {
       const std::size_t i =
           static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
       const Vec3 p = Vec3::load(grid.point(i));
@@ -181,7 +176,7 @@ void NoiseEstimator::measurePatch(const PointGrid& grid, int x0, int y0) {
   patches_.push_back(patch);
 }
 
-NoiseModel NoiseEstimator::estimate(const PointGrid& grid) {
+NoiseModel NoiseEstimator::estimate(const PointGrid& grid, int spacing) {
   NoiseModel model;
   model.estimated = true;
   patches_.clear();
@@ -189,9 +184,9 @@ NoiseModel NoiseEstimator::estimate(const PointGrid& grid) {
   if (grid.width < kPatchSide || grid.height < kPatchSide) return model;
   const double area = static_cast<double>(grid.width) * static_cast<double>(grid.height);
   const int step = std::max(kPatchSide, static_cast<int>(std::sqrt(area / kPatchesPerFrame)));
-  const int span = kPatchSide * kPatchSpacing;
+  const int span = kPatchSide * spacing;
   for (int y = (grid.height % step) / 2; y + span <= grid.height; y += step)
-    for (int x = (grid.width % step) / 2; x + span <= grid.width; x += step) measurePatch(grid, x, y);
+    for (int x = (grid.width % step) / 2; x + span <= grid.width; x += step) measurePatch(grid, x, y, spacing);
   model.patches = patches_.size();
   if (patches_.size() < kMinimumPatches) return model;
 

@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 
+#include "block_grid.h"
 #include "depth_smoothing.h"
 #include "distance_buffer.h"
 #include "noise_estimation.h"
 #include "plane_flood.h"
 #include "plane_merging.h"
+#include "prepared_frame.h"
 #include "relabelling.h"
 #include "region_output.h"
 #include "leftover_seeds.h"
@@ -62,15 +64,6 @@ class PhaseTimer {
   Clock::time_point start_;
 };
 
-// What one frame is segmented with.
-struct Frame {
-  PointGrid grid;                     // the grid that is segmented (sub-sampled when s > 1)
-  float pitch = 0.f;                  // its angular pixel pitch [rad]
-  float full_pitch = 0.f;             // that of the full-resolution grid
-  Tolerances tolerances;              // the segmented grid's depth noise and every length derived from it
-  const PointGrid* source = nullptr;  // the full-resolution grid segmented: filled and smoothed
-};
-
 // What the floods leave, relabelled: a segment per pixel of the segmented grid (0 none), each
 // segment's sums and plane, and the pairs of segments that touch. Views of the workspace's
 // buffers.
@@ -95,7 +88,7 @@ struct PreviousFrame {
 }  // namespace
 
 struct Segmenter::Workspace {
-  std::vector<float> subsampled;  // x y z 0 of every s-th pixel when s > 1
+  BlockGrid blocks;  // s > 1
   std::vector<float> pitch_scratch;
   NoiseEstimator noise_estimator;
   HoleFilling holes;
@@ -114,27 +107,42 @@ struct Segmenter::Workspace {
   RegionBuilder regions;
   PreviousFrame previous;
 
-  // The frame's grid (sub-sampled when s > 1), its angular pitch and noise model, and every
-  // buffer reset for it. With `reuse_noise`, the previous frame's noise models stand in for
-  // the two measurements (raw and smoothed): the noise belongs to the sensor, not the scene.
-  Frame prepare(const PointGrid& full, const Params& params, bool reuse_noise, NoiseModel& noise) {
-    Frame frame;
+  // The frame as the stages segment it, and every buffer reset for it. With `reuse_noise`, the
+  // previous frame's noise models stand in for the measurements: the noise belongs to the
+  // sensor, not the scene.
+  PreparedFrame prepare(const PointGrid& full, const Params& params, bool reuse_noise, NoiseModel& noise) {
+    PreparedFrame frame;
     const int s = params.subsampling;
+    frame.measured = full;
+    frame.subsampling = s;
     frame.full_pitch = SeedSelector::estimateAngularPitch(full, pitch_scratch);
     frame.pitch = frame.full_pitch * static_cast<float>(s);
     noise = reuse_noise ? previous.noise : noiseModel(full, params);
-    const PointGrid& filled = holes.fill(full, Tolerances(params, noise, frame.full_pitch, full.size()));
-    // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
-    // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
-    // Kinect). A noise model the user gives describes the raw data: no smoothing then; nor on
-    // exact depths rounded to a lattice (roundingOnly).
+    frame.pixel_tolerances = Tolerances(params, noise, frame.full_pitch, full.size());
     NoiseModel segment_noise = noise;
-    frame.source = &filled;
-    if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch) && !roundingOnly(noise)) {
-      frame.source = &smoothing.smooth(filled, noise);
-      segment_noise = reuse_noise ? previous.segment_noise : noise_estimator.estimate(*frame.source);
+    if (s == 1) {
+      const PointGrid& filled = holes.fill(full, frame.pixel_tolerances);
+      // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
+      // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
+      // Kinect). A noise model the user gives describes the raw data: no smoothing then; nor
+      // on exact depths rounded to a lattice (roundingOnly).
+      frame.grid = filled;
+      if (params.estimatesNoise() && !negligibleAgainstPixels(noise, frame.full_pitch) && !roundingOnly(noise)) {
+        frame.grid = smoothing.smooth(filled, noise);
+        segment_noise = reuse_noise ? previous.segment_noise : noise_estimator.estimate(frame.grid);
+      }
+    } else {
+      // Coarse to fine: the frame read once into s x s blocks, whose means are segmented (their
+      // averaging is the smoothing), with the noise of those means.
+      blocks.read(full, s);
+      frame.blocks = &blocks;
+      if (params.estimatesNoise()) {
+        const int spacing = std::max(1, NoiseEstimator::kPatchSpacing / s);
+        segment_noise = reuse_noise ? previous.segment_noise : noise_estimator.estimate(blocks.means(), spacing);
+      }
+      frame.grid = holes.fill(blocks.means(), Tolerances(params, segment_noise, frame.pitch, full.size()));
     }
-    frame.grid = sample(*frame.source, s);
+    frame.holes = &holes;
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(
@@ -151,7 +159,7 @@ struct Segmenter::Workspace {
   // Seed selection (Sec. III-C) interleaved with flooding (Sec. III-A, III-B), in scan order:
   // every candidate still unclaimed when the scan reaches it is tested, and a seed floods at
   // once.
-  SegmentImage seedAndFlood(const Frame& frame, const Params& params, bool timed, Segmentation& result) {
+  SegmentImage seedAndFlood(const PreparedFrame& frame, const Params& params, bool timed, Segmentation& result) {
     const Clock::time_point scan_start = timed ? Clock::now() : Clock::time_point();
     double flooding = 0.0;
     const PointGrid& grid = frame.grid;
@@ -193,13 +201,13 @@ struct Segmenter::Workspace {
   }
 
   // Sec. III-B, after the floods: segments that takeovers cut apart become one per piece.
-  void relabel(const Frame& frame, int subsampling, SegmentImage& image) {
+  void relabel(const PreparedFrame& frame, int subsampling, SegmentImage& image) {
     relabelling.run(frame.grid, subsampling, image.labels, image.segments, image.edges);
   }
 
   // Sec. III-D over the segment graph, and across the borders where a bent surface was cut:
   // the clusters of segments, each with its whole sums.
-  MergedSegments merge(const Frame& frame, const MergeCriterion& criterion, const SegmentImage& image) {
+  MergedSegments merge(const PreparedFrame& frame, const MergeCriterion& criterion, const SegmentImage& image) {
     borders.collect(frame.grid, image.labels, image.segments);
     merger.reset(image.segments.size());
     for (const SegmentEdge& edge : image.edges) merger.addEdge(edge.first, edge.second);
@@ -221,28 +229,6 @@ struct Segmenter::Workspace {
     model.sigma_constant = params.depth_noise_constant.value_or(0.0);
     model.sigma_quadratic = params.depth_noise_coefficient.value_or(0.0);
     return model;
-  }
-
-  // The grid to segment, every s-th pixel of every s-th row.
-  PointGrid sample(const PointGrid& full, int s) {
-    if (s == 1) return full;
-    PointGrid grid;
-    grid.width = (full.width + s - 1) / s;
-    grid.height = (full.height + s - 1) / s;
-    grid.stride = 4;  // as PCL's points: the flood reads four floats a point
-    subsampled.resize(grid.size() * 4);
-    float* out = subsampled.data();
-    for (int y = 0; y < full.height; y += s) {
-      for (int x = 0; x < full.width; x += s) {
-        const float* p = full.point(static_cast<std::size_t>(y) * full.width + x);
-        *out++ = p[0];
-        *out++ = p[1];
-        *out++ = p[2];
-        *out++ = 0.f;
-      }
-    }
-    grid.data = subsampled.data();
-    return grid;
   }
 };
 
@@ -271,7 +257,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   result_.stats.head_start = reuse_noise;
   // The pipeline: prepared frame -> segment image (seeds and floods, relabelled) -> clusters
   // (merged) -> planes (labels at full resolution, refined, checked).
-  Frame frame;
+  PreparedFrame frame;
   {
     PhaseTimer timer(timed, result_.phases.preparation);
     frame = ws.prepare(full, params_, reuse_noise, result_.noise);
@@ -290,8 +276,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   }
   {
     PhaseTimer timer(timed, result_.phases.region_output);
-    ws.regions.build(full, *frame.source, frame.grid, ws.holes, params_.subsampling, clusters, params_,
-                     frame.tolerances, frame.full_pitch, options.refine, result_);
+    ws.regions.build(frame, clusters, params_, options.refine, result_);
   }
   previous.valid = true;
   previous.width = full.width;

@@ -113,6 +113,18 @@ struct Float4 {
   static Float4 select(Mask4 mask, Float4 a, Float4 b) {
     return {_mm_or_ps(_mm_and_ps(mask.bits, a.v), _mm_andnot_ps(mask.bits, b.v))};
   }
+
+  // A point's four floats in one register (x y z w), for sums over points (block_grid.cpp).
+  /// (y, z, x, w): with *this, the products x y, y z, z x in one multiplication.
+  Float4 rotated() const { return {_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 0, 2, 1))}; }
+  /// Whether lanes 0-2 (x y z) are finite numbers.
+  bool firstThreeFinite() const { return (_mm_movemask_ps(_mm_cmpord_ps(_mm_sub_ps(v, v), _mm_setzero_ps())) & 7) == 7; }
+  /// Lane j.
+  float lane(int j) const {
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, v);
+    return lanes[j];
+  }
 };
 
 /// static_cast<float>(noiseDeviations(noise, k, double(range_sq))) lane by lane: the noise in

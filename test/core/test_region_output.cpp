@@ -26,14 +26,14 @@ constexpr float kPitch = static_cast<float>(1.0 / kFocal);
 
 using Grid = test::PinholeGrid;
 
-// What the merging hands over: a frame, the grid that was segmented (every s-th pixel of every
-// s-th row, four floats a point, as the segmenter samples it), a segment per sample
-// (segment(u, v) at the sample's full-resolution pixel), each segment its own cluster unless
-// `root` says otherwise, and each root's sums over its cluster's samples.
+// What the merging hands over: a frame, the grid that was segmented (s = 1: the frame; s > 1:
+// the means of its s x s blocks, as the segmenter reads them), a segment per point of that grid
+// (the segment of its pixels, none where they differ), each segment its own cluster
+// unless `root` says otherwise, and each root's sums over its cluster's points.
 struct Merged {
   Grid full;
   int s;
-  std::vector<float> sampled;
+  BlockGrid blocks;
   PointGrid segmented;
   std::vector<std::int32_t> labels;
   std::vector<std::int32_t> root;
@@ -53,20 +53,22 @@ struct Merged {
     params.subsampling = s;
     segmented = full.grid();
     if (s > 1) {
-      segmented.width = (full.width + s - 1) / s;
-      segmented.height = (full.height + s - 1) / s;
-      segmented.stride = 4;
-      for (int v = 0; v < full.height; v += s)
-        for (int u = 0; u < full.width; u += s) {
-          const float* p = &full.data[full.index(u, v) * full.stride];
-          sampled.insert(sampled.end(), {p[0], p[1], p[2], 0.f});
-        }
-      segmented.data = sampled.data();
+      blocks.read(full.grid(), s);
+      segmented = blocks.means();
     }
+    // A block takes the segment of its pixels where they all have one, none where it straddles
+    // two (as a flood leaves the block whose mean lies between two surfaces).
+    const auto blockSegment = [&](int gx, int gy) {
+      const std::int32_t first = segment(gx * s, gy * s);
+      for (int v = gy * s; v < std::min(gy * s + s, full.height); ++v)
+        for (int u = gx * s; u < std::min(gx * s + s, full.width); ++u)
+          if (segment(u, v) != first) return 0;
+      return first;
+    };
     std::int32_t count = 1;
     for (int gy = 0; gy < segmented.height; ++gy)
       for (int gx = 0; gx < segmented.width; ++gx) {
-        labels.push_back(segment(gx * s, gy * s));
+        labels.push_back(blockSegment(gx, gy));
         count = std::max(count, labels.back() + 1);
       }
     root.resize(static_cast<std::size_t>(count));
@@ -77,7 +79,7 @@ struct Merged {
   void mergeInto(std::int32_t a, std::int32_t b) { root[static_cast<std::size_t>(b)] = a; }
 
   const Segmentation& build(bool refine = false) { return buildWith(full.grid(), refine); }
-  // With `measured` as the caller's grid (full as the smoothed one).
+  // With `measured` as the caller's grid (at s = 1, full as the smoothed one).
   const Segmentation& buildWith(const PointGrid& measured, bool refine = false) {
     sums.assign(root.size(), PlaneSums());
     for (std::size_t i = 0; i < labels.size(); ++i)
@@ -88,8 +90,17 @@ struct Merged {
     merged.root = root.data();
     merged.sums = sums.data();
     merged.segment_count = root.size();
-    const Tolerances tolerances(params, {}, 1.0 / kFocal, full.data.size() / full.stride);
-    builder.build(measured, full.grid(), segmented, holes, s, merged, params, tolerances, kPitch, refine, out);
+    PreparedFrame frame;
+    frame.measured = measured;
+    frame.grid = segmented;
+    frame.subsampling = s;
+    frame.full_pitch = kPitch;
+    frame.pitch = kPitch * static_cast<float>(s);
+    frame.tolerances = Tolerances(params, {}, frame.pitch, full.data.size() / full.stride);
+    frame.pixel_tolerances = Tolerances(params, {}, kPitch, full.data.size() / full.stride);
+    frame.holes = &holes;
+    frame.blocks = s > 1 ? &blocks : nullptr;
+    builder.build(frame, merged, params, refine, out);
     return out;
   }
 

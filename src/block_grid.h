@@ -1,0 +1,79 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "floodplane/point_grid.h"
+#include "plane_sums.h"
+#include "vec3.h"
+
+namespace floodplane {
+
+/// Coarse to fine, the one full-resolution read (sub-sampling s > 1): the frame as a grid of
+/// s x s blocks, each with what every later stage needs of its pixels.
+/// - Its mean point, the average of its measured (finite) points: the point the seeds and
+///   floods see. Averaging s^2 points is the smoothing of the sub-sampled frame (Table III's
+///   every s-th pixel would throw the other s^2 - 1 away), and it bridges the pixel-sized
+///   holes of a scanner's dropped returns: a block is a hole only where all its pixels are.
+/// - How many of its pixels were measured, and their exact plane sums (count, sum P, sum P P^T,
+///   the last held as the scatter about the block's mean, which float keeps exact to its
+///   precision): a plane's sums are those of its blocks, added up, and a block's test against
+///   a plane costs O(1) (meanSquaredDistance).
+/// The right and bottom blocks are smaller where s does not divide the frame.
+///
+/// The frame is read once, block row by block row: the s image rows of a block row are summed,
+/// then read again for the scatter about each block's mean while they are still in the cache.
+/// Blocks without a hole are summed four floats (a PCL point) at a time without a test per
+/// pixel; the rare block with a hole is summed again pixel by pixel.
+class BlockGrid {
+ public:
+  /// Reads `full` into blocks of `factor` x `factor` pixels (factor >= 1). The means grid and
+  /// everything else stay valid until the next call.
+  void read(const PointGrid& full, int factor);
+
+  int factor() const { return factor_; }
+  /// The blocks' mean points, four floats a block (x y z 0), NaN where a block has no
+  /// measured point: the grid the seeds and floods segment.
+  const PointGrid& means() const { return means_; }
+  /// The number of measured pixels of block i.
+  std::uint32_t count(std::size_t i) const { return counts_[i]; }
+  /// Whether every pixel of block i was measured.
+  bool complete(std::size_t i) const { return counts_[i] == area(i); }
+  /// The number of pixels of block i (s^2 but at the frame's right and bottom edges).
+  std::uint32_t area(std::size_t i) const;
+  /// The plane sums of the measured points of block i.
+  PlaneSums sums(std::size_t i) const;
+  /// Adds the plane sums of block i to `sums`.
+  void addTo(std::size_t i, PlaneSums& sums) const;
+  /// The mean squared distance of the measured points of block i from the plane
+  /// normal . P + offset = 0 (unit normal): the scatter about the block's mean along the
+  /// normal plus the mean's own distance, squared.
+  double meanSquaredDistance(std::size_t i, const Vec3& normal, float offset) const;
+  /// The scatter of block i about its mean, sum (P - mean)(P - mean)^T, as xx yy zz xy yz zx.
+  const float* scatter(std::size_t i) const { return &moments_[8 * i]; }
+
+  /// The first full-resolution column and row of block (bx, by).
+  int firstColumn(int bx) const { return bx * factor_; }
+  int firstRow(int by) const { return by * factor_; }
+  /// The frame that was read.
+  int frameWidth() const { return frame_width_; }
+  int frameHeight() const { return frame_height_; }
+
+ private:
+  // The sums, means and scatters of the blocks of block row `by`.
+  void readRow(const PointGrid& full, int by);
+
+  int factor_ = 1;
+  int frame_width_ = 0;
+  int frame_height_ = 0;
+  PointGrid means_;
+  std::vector<float> mean_points_;      // x y z 0 per block
+  std::vector<float> moments_;          // per block: xx yy zz (unused) xy yz zx (unused)
+  std::vector<std::uint16_t> counts_;   // measured pixels per block
+  std::vector<std::uint8_t> has_hole_;  // per block of the current row: summed pixel by pixel
+};
+
+}  // namespace floodplane
