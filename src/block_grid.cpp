@@ -6,11 +6,16 @@
 #include <cmath>
 #include <limits>
 
+#include "depth_noise.h"
 #include "simd.h"
 
 namespace floodplane {
 
 namespace {
+
+// Neighbouring points of one surface are at most this many pixel footprints apart in depth (a
+// surface seen at 75 degrees from its normal: tan 75 = 3.7), as HoleFilling bridges.
+constexpr double kNeighbourFootprints = 4.0;
 
 bool finitePoint(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
@@ -19,10 +24,12 @@ struct Span {
   int u_begin, u_end, v_begin, v_end;
 };
 
-// The sum of a block's measured points and their number, pixel by pixel in raster order.
-void sumPixelByPixel(const PointGrid& full, const Span& span, float sum[3], std::uint32_t& count) {
+// The sum of a block's measured points, their number and the spread of their depths, pixel by
+// pixel in raster order.
+void sumPixelByPixel(const PointGrid& full, const Span& span, float sum[3], std::uint32_t& count, float& spread) {
   sum[0] = sum[1] = sum[2] = 0.f;
   count = 0;
+  float smallest = std::numeric_limits<float>::infinity(), largest = -smallest;
   for (int v = span.v_begin; v < span.v_end; ++v) {
     const std::size_t row = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
     for (int u = span.u_begin; u < span.u_end; ++u) {
@@ -31,9 +38,12 @@ void sumPixelByPixel(const PointGrid& full, const Span& span, float sum[3], std:
       sum[0] += p[0];
       sum[1] += p[1];
       sum[2] += p[2];
+      smallest = std::min(smallest, p[2]);
+      largest = std::max(largest, p[2]);
       ++count;
     }
   }
+  spread = count ? largest - smallest : 0.f;
 }
 
 // The scatter of a block's measured points about `mean`, pixel by pixel, into `out` (xx yy zz
@@ -80,6 +90,8 @@ void BlockGrid::read(const PointGrid& full, int factor) {
   mean_points_.resize(4 * blocks);
   moments_.resize(8 * blocks);
   counts_.resize(blocks);
+  depth_spread_.resize(blocks);
+  split_.assign(blocks, 0);
   for (int by = 0; by < means_.height; ++by) readRow(full, by);
   means_.data = mean_points_.data();
 }
@@ -110,14 +122,29 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
     // the pixel-by-pixel one, so both give the same bits.
     has_hole_.assign(static_cast<std::size_t>(width), 0);
     float* sums = &moments_[8 * first];  // the sums go where the scatters will: 8 floats a block
-    for (int bx = 0; bx < width; ++bx) Float4::broadcast(0.f).store(sums + 8 * bx);
+    row_extremes_.resize(8 * static_cast<std::size_t>(width));
+    float* extremes = row_extremes_.data();  // smallest, largest point of each block
+    const Float4 infinity = Float4::broadcast(std::numeric_limits<float>::infinity());
+    for (int bx = 0; bx < width; ++bx) {
+      Float4::broadcast(0.f).store(sums + 8 * bx);
+      infinity.store(extremes + 8 * bx);
+      (Float4::broadcast(0.f) - infinity).store(extremes + 8 * bx + 4);
+    }
     for (int v = v_begin; v < v_end; ++v) {
       const std::size_t row = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
       for (int bx = 0; bx < width; ++bx) {
         const Span b = span(bx);
         Float4 sum = Float4::load(sums + 8 * bx);
-        for (int u = b.u_begin; u < b.u_end; ++u) sum = sum + Float4::load(full.point(row + static_cast<std::size_t>(u)));
+        Float4 smallest = Float4::load(extremes + 8 * bx), largest = Float4::load(extremes + 8 * bx + 4);
+        for (int u = b.u_begin; u < b.u_end; ++u) {
+          const Float4 p = Float4::load(full.point(row + static_cast<std::size_t>(u)));
+          sum = sum + p;
+          smallest = Float4::min(smallest, p);
+          largest = Float4::max(largest, p);
+        }
         sum.store(sums + 8 * bx);
+        smallest.store(extremes + 8 * bx);
+        largest.store(extremes + 8 * bx + 4);
       }
     }
     for (int bx = 0; bx < width; ++bx) {
@@ -128,9 +155,10 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
       if (sum.firstThreeFinite()) {
         const Span b = span(bx);
         count = static_cast<std::uint32_t>((b.u_end - b.u_begin) * (b.v_end - b.v_begin));
+        depth_spread_[i] = extremes[8 * bx + 6] - extremes[8 * bx + 2];
       } else {
         has_hole_[static_cast<std::size_t>(bx)] = 1;
-        sumPixelByPixel(full, span(bx), total, count);
+        sumPixelByPixel(full, span(bx), total, count, depth_spread_[i]);
       }
       setMean(i, total, count);
     }
@@ -167,9 +195,90 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
     const std::size_t i = first + static_cast<std::size_t>(bx);
     float total[3];
     std::uint32_t count = 0;
-    sumPixelByPixel(full, span(bx), total, count);
+    sumPixelByPixel(full, span(bx), total, count, depth_spread_[i]);
     setMean(i, total, count);
     scatterPixelByPixel(full, span(bx), &mean_points_[4 * i], &moments_[8 * i]);
+  }
+}
+
+void BlockGrid::separateSurfaces(const PointGrid& full, const NoiseModel& pixel_noise, float angular_pitch) {
+  const int s = factor_;
+  std::vector<int>& stack = stack_;
+  std::vector<std::uint8_t>& kept = kept_;
+  for (int by = 0; by < means_.height; ++by) {
+    for (int bx = 0; bx < means_.width; ++bx) {
+      const std::size_t i =
+          static_cast<std::size_t>(by) * static_cast<std::size_t>(means_.width) + static_cast<std::size_t>(bx);
+      if (counts_[i] < 2) continue;
+      const Span b{bx * s, std::min(bx * s + s, full.width), by * s, std::min(by * s + s, full.height)};
+      const int w = b.u_end - b.u_begin, h = b.v_end - b.v_begin;
+      const auto at = [&](int k) {  // pixel k of the block, in raster order
+        return full.point(static_cast<std::size_t>(b.v_begin + k / w) * static_cast<std::size_t>(full.width) +
+                          static_cast<std::size_t>(b.u_begin + k % w));
+      };
+      // The block's first measured pixel, in raster order: the surface the block samples.
+      int first = 0;
+      while (!finitePoint(at(first))) ++first;
+      const float* reference = at(first);
+      const double range_sq = static_cast<double>(reference[0]) * reference[0] +
+                              static_cast<double>(reference[1]) * reference[1] +
+                              static_cast<double>(reference[2]) * reference[2];
+      // Two neighbouring pixels of one surface differ in depth by at most what a surface seen
+      // at up to 75 degrees from its normal spans over one footprint, plus the noise of both.
+      const float step = static_cast<float>(kNeighbourFootprints * angular_pitch * std::sqrt(range_sq) +
+                                            noiseDeviations(pixel_noise, kDifferenceDeviations, range_sq));
+      if (!(depth_spread_[i] > step)) continue;  // one surface, up to the noise
+      // The pixels connected to the first through such steps (4-neighbours).
+      kept.assign(static_cast<std::size_t>(w * h), 0);
+      kept[static_cast<std::size_t>(first)] = 1;
+      stack.assign(1, first);
+      std::uint32_t count = 1;
+      while (!stack.empty()) {
+        const int k = stack.back();
+        stack.pop_back();
+        const float depth = at(k)[2];
+        const int x = k % w, y = k / w;
+        const int neighbours[4] = {x > 0 ? k - 1 : -1, x + 1 < w ? k + 1 : -1, y > 0 ? k - w : -1, y + 1 < h ? k + w : -1};
+        for (const int j : neighbours) {
+          if (j < 0 || kept[static_cast<std::size_t>(j)]) continue;
+          const float* q = at(j);
+          if (!finitePoint(q) || !(std::abs(q[2] - depth) <= step)) continue;
+          kept[static_cast<std::size_t>(j)] = 1;
+          stack.push_back(j);
+          ++count;
+        }
+      }
+      if (count == counts_[i]) continue;  // every measured pixel on the first one's surface
+      split_[i] = 1;
+      counts_[i] = static_cast<std::uint16_t>(count);
+      float sum[3] = {0.f, 0.f, 0.f};
+      for (int k = 0; k < w * h; ++k) {
+        if (!kept[static_cast<std::size_t>(k)]) continue;
+        const float* p = at(k);
+        sum[0] += p[0];
+        sum[1] += p[1];
+        sum[2] += p[2];
+      }
+      float* mean = &mean_points_[4 * i];
+      const float n = static_cast<float>(count);
+      mean[0] = sum[0] / n;
+      mean[1] = sum[1] / n;
+      mean[2] = sum[2] / n;
+      float xx = 0.f, yy = 0.f, zz = 0.f, xy = 0.f, yz = 0.f, zx = 0.f;
+      for (int k = 0; k < w * h; ++k) {
+        if (!kept[static_cast<std::size_t>(k)]) continue;
+        const float* p = at(k);
+        const float dx = p[0] - mean[0], dy = p[1] - mean[1], dz = p[2] - mean[2];
+        xx += dx * dx;
+        yy += dy * dy;
+        zz += dz * dz;
+        xy += dx * dy;
+        yz += dy * dz;
+        zx += dz * dx;
+      }
+      float* out = &moments_[8 * i];
+      out[0] = xx, out[1] = yy, out[2] = zz, out[4] = xy, out[5] = yz, out[6] = zx;
+    }
   }
 }
 
@@ -195,6 +304,23 @@ void BlockGrid::addTo(std::size_t i, PlaneSums& sums) const {
   sums.sxy += c[4] + n * x * y;
   sums.syz += c[5] + n * y * z;
   sums.sxz += c[6] + n * z * x;
+}
+
+void BlockGrid::addMeanTo(std::size_t i, PlaneSums& sums) const {
+  const double n = counts_[i];
+  if (n == 0.0) return;
+  const float* mean = &mean_points_[4 * i];
+  const double x = mean[0], y = mean[1], z = mean[2];
+  sums.count += n;
+  sums.sx += n * x;
+  sums.sy += n * y;
+  sums.sz += n * z;
+  sums.sxx += n * x * x;
+  sums.syy += n * y * y;
+  sums.szz += n * z * z;
+  sums.sxy += n * x * y;
+  sums.syz += n * y * z;
+  sums.sxz += n * z * x;
 }
 
 double BlockGrid::meanSquaredDistance(std::size_t i, const Vec3& normal, float offset) const {

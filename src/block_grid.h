@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
+#include "floodplane/segmenter.h"
 #include "plane_sums.h"
 #include "vec3.h"
 
@@ -22,6 +23,12 @@ namespace floodplane {
 ///   the last held as the scatter about the block's mean, which float keeps exact to its
 ///   precision): a plane's sums are those of its blocks, added up, and a block's test against
 ///   a plane costs O(1) (meanSquaredDistance).
+/// - Where a block straddles two surfaces (an edge, a board in front of a wall, a face a few
+///   pixels wide), its mean would be a point of neither. separateSurfaces() keeps, in such a
+///   block, only the pixels on the surface of its first measured pixel (those connected to it
+///   through steps that one surface can make between neighbouring pixels): the block then
+///   samples that surface, as every s-th pixel would (Table III), less noisily. Such a block is `split`: the pixels it left out belong to another surface,
+///   so the full-resolution write decides its pixels one by one.
 /// The right and bottom blocks are smaller where s does not divide the frame.
 ///
 /// The frame is read once, block row by block row: the s image rows of a block row are summed,
@@ -33,6 +40,11 @@ class BlockGrid {
   /// Reads `full` into blocks of `factor` x `factor` pixels (factor >= 1). The means grid and
   /// everything else stay valid until the next call.
   void read(const PointGrid& full, int factor);
+  /// Keeps, in every block whose depths spread more than two neighbouring pixels of one surface
+  /// can differ (a steep surface's slope over one pixel footprint, `angular_pitch` times the
+  /// range, plus the noise `pixel_noise` of two pixels), the pixels connected to its first
+  /// measured pixel through such steps (see above).
+  void separateSurfaces(const PointGrid& full, const NoiseModel& pixel_noise, float angular_pitch);
 
   int factor() const { return factor_; }
   /// The blocks' mean points, four floats a block (x y z 0), NaN where a block has no
@@ -40,14 +52,19 @@ class BlockGrid {
   const PointGrid& means() const { return means_; }
   /// The number of measured pixels of block i.
   std::uint32_t count(std::size_t i) const { return counts_[i]; }
-  /// Whether every pixel of block i was measured.
+  /// Whether every pixel of block i was measured and is in its sums (the block is not split).
   bool complete(std::size_t i) const { return counts_[i] == area(i); }
+  /// Whether block i keeps only the pixels of one of the surfaces it straddles.
+  bool split(std::size_t i) const { return split_[i] != 0; }
   /// The number of pixels of block i (s^2 but at the frame's right and bottom edges).
   std::uint32_t area(std::size_t i) const;
   /// The plane sums of the measured points of block i.
   PlaneSums sums(std::size_t i) const;
   /// Adds the plane sums of block i to `sums`.
   void addTo(std::size_t i, PlaneSums& sums) const;
+  /// Adds block i's mean to `sums` as if each of its measured pixels were there: the sums of the
+  /// grid that is segmented, whose points scatter by the means' noise, counted in pixels.
+  void addMeanTo(std::size_t i, PlaneSums& sums) const;
   /// The mean squared distance of the measured points of block i from the plane
   /// normal . P + offset = 0 (unit normal): the scatter about the block's mean along the
   /// normal plus the mean's own distance, squared.
@@ -73,7 +90,12 @@ class BlockGrid {
   std::vector<float> mean_points_;      // x y z 0 per block
   std::vector<float> moments_;          // per block: xx yy zz (unused) xy yz zx (unused)
   std::vector<std::uint16_t> counts_;   // measured pixels per block
+  std::vector<float> depth_spread_;     // per block: its largest minus its smallest depth (z)
+  std::vector<std::uint8_t> split_;     // per block: separateSurfaces() left pixels out
   std::vector<std::uint8_t> has_hole_;  // per block of the current row: summed pixel by pixel
+  std::vector<float> row_extremes_;     // per block of the current row: smallest and largest point
+  std::vector<int> stack_;              // separateSurfaces' scratch
+  std::vector<std::uint8_t> kept_;      // separateSurfaces' scratch: per pixel of a block
 };
 
 }  // namespace floodplane

@@ -34,8 +34,11 @@ class FullResolutionWrite {
   /// Writes `labels` (frame size) from the block labels `block_labels` (the planes' current
   /// numbers, 0 none) of `blocks`, read from `frame`; each plane's `criteria[k - 1]` is its
   /// test at full resolution. The planes' sums and first pixels are set anew.
+  /// `centroids[k - 1]` is a point of plane k's inside (where two planes meet, which side each
+  /// is on tells which the rays see: see prefers()).
   void write(const PointGrid& frame, const BlockGrid& blocks, const RenumberedLabels& block_labels,
-             const std::vector<FloodCriterion>& criteria, PlaneCandidates& planes, std::vector<std::uint32_t>& labels);
+             const std::vector<FloodCriterion>& criteria, const std::vector<Vec3>& centroids, PlaneCandidates& planes,
+             std::vector<std::uint32_t>& labels);
 
  private:
   // How a block's pixels are decided.
@@ -52,8 +55,12 @@ class FullResolutionWrite {
   // Decides the pixels [u_begin, u_end) of full-resolution row `row_start` against a border
   // block's candidates.
   void decidePixels(const PointGrid& frame, std::size_t row_start, int u_begin, int u_end, const Block& block,
-                    const std::vector<FloodCriterion>& criteria, PlaneCandidates& planes,
-                    std::uint32_t* out_row) const;
+                    const std::vector<FloodCriterion>& criteria, const std::vector<Vec3>& centroids,
+                    PlaneCandidates& planes, std::uint32_t* out_row) const;
+  // Whether a pixel that fits planes a and b (its ray meets them at depth_a and depth_b, in
+  // units of its range; it lies distance_a and distance_b from them along the ray) is a's.
+  static bool prefers(std::uint32_t a, float depth_a, float distance_a, std::uint32_t b, float depth_b,
+                      float distance_b, const std::vector<FloodCriterion>& criteria, const std::vector<Vec3>& centroids);
 
   std::vector<Block> blocks_;  // one block row
 };

@@ -103,7 +103,7 @@ class Refiner {
     labels_[pixel] = k;
     PlaneCandidate& plane = planes_[k];
     if (blocks_)
-      blocks_->addTo(pixel, plane.sums);
+      blocks_->addMeanTo(pixel, plane.sums);
     else
       plane.sums.add(Vec3::load(full_.point(pixel)));
     if (pixel < plane.first_pixel) plane.first_pixel = pixel;

@@ -23,7 +23,7 @@ namespace floodplane {
 /// one row ahead of the scan (which reads the rows above and below the pixel it looks at).
 /// `queue` is scratch space.
 /// Pixels `holes` filled in are never labelled. With `blocks` (sub-sampling s > 1, `full` is
-/// then their means) a block that joins a plane adds its pixels' sums, not its mean.
+/// then their means) a block that joins a plane adds its mean once for each of its pixels.
 void refinePlanes(const PointGrid& full, const HoleFilling& holes, const BlockGrid* blocks,
                   std::vector<std::uint32_t>& labels, PlaneCandidates& planes, bool renumber_first,
                   std::vector<std::size_t>& queue);

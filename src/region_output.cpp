@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <cstdio>
+#include <cstdlib>
 
 #include "refinement.h"
 #include "row_search.h"
@@ -17,6 +19,9 @@ namespace {
 
 // About this many pixels of a plane take part in its planarity test (see samplePlanarity).
 constexpr double kPlanaritySamples = 4000.0;
+// A plane's inner blocks give the plane its border pixels are decided with when they hold at
+// least this many pixels.
+constexpr double kInnerPixels = 64.0;
 
 }  // namespace
 
@@ -58,7 +63,7 @@ void RegionBuilder::build(const PreparedFrame& frame, const MergedSegments& merg
   if (occlusion_merging_.run(frame.grid, candidates_.labels(labels), candidates_,
                              MergeCriterion(params, frame.tolerances), frame.tolerances, frame.pitch))
     candidates_.composeRenumbering();
-  if (dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
+  if (!std::getenv("FP_NOPLAN") && dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
   if (blocks) {
     writeFullResolution(frame, params, out);
   } else {
@@ -84,13 +89,14 @@ void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSeg
   candidate_of_segment_.assign(merged.segment_count, 0);
   const BlockGrid* blocks = frame.blocks;
   if (blocks) {
-    // The clusters' sums of their blocks' measured pixels: the sizes min_inliers counts, and
-    // fits of the pixels, not of the block means (a cluster one block wide is a line of
-    // means, but a strip of pixels).
+    // The clusters' sums of their blocks' means, each counted as many times as it has
+    // measured pixels: the sizes min_inliers counts, and a scatter about the plane that the
+    // block grid's tolerances describe (the sums of the pixels themselves come with the
+    // full-resolution write).
     cluster_sums_.assign(merged.segment_count, PlaneSums());
     for (std::size_t i = 0; i < frame.grid.size(); ++i) {
       const std::int32_t segment = merged.labels[i];
-      if (segment != 0) blocks->addTo(i, cluster_sums_[static_cast<std::size_t>(merged.root[segment])]);
+      if (segment != 0) blocks->addMeanTo(i, cluster_sums_[static_cast<std::size_t>(merged.root[segment])]);
     }
   }
   // Refinement only adds pixels: drop small ones now. (A filled-in hole counts here, and
@@ -145,11 +151,40 @@ void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedS
 }
 
 void RegionBuilder::writeFullResolution(const PreparedFrame& frame, const Params& params, Segmentation& out) {
+  // Each plane decides its border pixels with the plane of its inner blocks: a block on a
+  // crease joins one plane's flood (its mean is near both), but its pixels bend that plane
+  // towards the other, which would take the other's pixels along the crease. A plane with too
+  // few inner blocks for a fit of its own (a strip a block or two wide) keeps the fit of all.
+  const RenumberedLabels labels = candidates_.labels(block_labels_);
+  const std::size_t planes = candidates_.list().size();
+  inner_sums_.assign(planes + 1, PlaneSums());
+  const PointGrid& grid = frame.grid;
+  const std::size_t width = static_cast<std::size_t>(grid.width);
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
+    for (std::size_t x = 1; x + 1 < width; ++x) {
+      const std::size_t i = y * width + x;
+      const std::uint32_t k = labels[i];
+      if (k == 0 || frame.blocks->split(i)) continue;
+      if (labels[i - 1] != k || labels[i + 1] != k || labels[i - width] != k || labels[i + width] != k) continue;
+      frame.blocks->addTo(i, inner_sums_[k]);
+    }
+  }
   criteria_.clear();
-  for (const PlaneCandidate& candidate : candidates_.list())
-    criteria_.push_back(planeCriterion(candidate.sums.fit(), frame.pixel_tolerances, frame.full_pitch));
-  full_resolution_.write(frame.measured, *frame.blocks, candidates_.labels(block_labels_), criteria_, candidates_,
-                         out.labels);
+  centroids_.clear();
+  for (std::uint32_t k = 1; k <= planes; ++k) {
+    const PlaneCandidate& candidate = candidates_.list()[k - 1];
+    PlaneFit fit = inner_sums_[k].fit();
+    if (!fit.valid || inner_sums_[k].count < kInnerPixels) fit = candidate.sums.fit();
+    criteria_.push_back(planeCriterion(fit, frame.pixel_tolerances, frame.full_pitch));
+    centroids_.push_back({static_cast<float>(fit.centroid.x()), static_cast<float>(fit.centroid.y()),
+                          static_cast<float>(fit.centroid.z())});
+  }
+  full_resolution_.write(frame.measured, *frame.blocks, labels, criteria_, centroids_, candidates_, out.labels);
+  if (std::getenv("FP_REFINE")) {
+    for (std::size_t k = 0; k < criteria_.size(); ++k) candidates_.list()[k].criterion = criteria_[k];
+    static HoleFilling none;
+    refinePlanes(frame.measured, none, nullptr, out.labels, candidates_, false, queue_);
+  }
   // The pixels decided one by one at the borders change the sizes a little: a plane may now
   // fall short of min_inliers or change places with one of about its size.
   if (candidates_.sortBySize(frame.tolerances.minInliers(), &params)) candidates_.renumberImage(out.labels);
@@ -178,32 +213,52 @@ void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const Renumbere
 
 void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const RenumberedLabels& labels,
                                     PlanarityTest& test) {
-  // Interior pixels only (no neighbour in another plane or none): the pixels along a plane's
+  // Interior points only (no neighbour in another plane or none): the points along a plane's
   // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
   // A neighbour without a return does not make a border: on a speckled surface there would be
   // no inside.
   //
-  // A large plane is sampled on a lattice (every s-th pixel of every s-th row) of about
-  // kPlanaritySamples pixels: its test is then still sensitive to a bend a tenth of the noise
-  // deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
-  const PointGrid& full = frame.grid;
+  // A large plane is sampled on a lattice (every s-th point of every s-th row) of about
+  // kPlanaritySamples measured pixels: its test is then still sensitive to a bend a tenth of
+  // the noise deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
+  // At sub-sampling s > 1 a sampled block adds its measured pixels, not its mean: the test
+  // judges what the sensor measured, with as many points as at full resolution (a strip of a
+  // column a few blocks wide has too few means to show its bend).
+  const PointGrid& grid = frame.grid;
+  const BlockGrid* blocks = frame.blocks;
   const std::vector<PlaneCandidate>& list = candidates_.list();
   strides_.assign(list.size() + 1, 1);
-  // The sums count measured pixels; a point of the grid stands for s^2 of them.
-  const double pixels_per_point = static_cast<double>(frame.subsampling) * frame.subsampling;
+  const double per_point = blocks && !std::getenv("FP_PIXPLAN") ? double(frame.subsampling) * frame.subsampling : 1.0;
   for (std::size_t k = 1; k <= list.size(); ++k) {
-    const double s = std::floor(std::sqrt(list[k - 1].sums.count / pixels_per_point / kPlanaritySamples));
+    const double s = std::floor(std::sqrt(list[k - 1].sums.count / per_point / kPlanaritySamples));
     strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
   }
-  const std::size_t width = static_cast<std::size_t>(full.width);
+  const std::size_t width = static_cast<std::size_t>(grid.width);
   const auto inside = [&](std::size_t j, std::uint32_t k) {
-    return labels[j] == k || !full.isFinite(j) || frame.holes->isFilled(j);
+    return labels[j] == k || !grid.isFinite(j) || frame.holes->isFilled(j);
+  };
+  const auto addPoint = [&](std::size_t i, std::uint32_t k) {
+    if (!blocks || !std::getenv("FP_PIXPLAN")) {
+      test.add(k, Vec3::load(grid.point(i)));
+      return;
+    }
+    if (blocks->split(i)) return;  // a block with another surface's pixels
+    const PointGrid& measured = frame.measured;
+    const int bx = static_cast<int>(i % width), by = static_cast<int>(i / width);
+    const int u_end = std::min(blocks->firstColumn(bx) + blocks->factor(), measured.width);
+    const int v_end = std::min(blocks->firstRow(by) + blocks->factor(), measured.height);
+    for (int v = blocks->firstRow(by); v < v_end; ++v)
+      for (int u = blocks->firstColumn(bx); u < u_end; ++u) {
+        const std::size_t pixel =
+            static_cast<std::size_t>(v) * static_cast<std::size_t>(measured.width) + static_cast<std::size_t>(u);
+        if (measured.isFinite(pixel)) test.add(k, Vec3::load(measured.point(pixel)));
+      }
   };
   // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
-  // up once. Points are added in raster order, as pixel by pixel.
-  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(full.height); ++y) {
+  // up once. Points are added in raster order of the grid.
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
     const std::size_t row = y * width;
-    forEachRunInRow(labels.image + row, 1, full.width - 2, [&](std::uint32_t image_label, int begin, int end) {
+    forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
       const std::uint32_t k = labels.number[image_label];
       if (k == 0 || y % strides_[k] != 0) return;
       const std::uint32_t s = strides_[k];
@@ -211,15 +266,14 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
       const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
       for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
         const std::size_t i = row + u;
-        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-          test.add(k, Vec3::load(full.point(i)));
+        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k)) addPoint(i, k);
       }
     });
   }
 }
 
 bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const RenumberedLabels& labels) {
-  const Tolerances& tolerances = frame.tolerances;
+  const Tolerances& tolerances = frame.blocks && std::getenv("FP_PIXPLAN") ? frame.pixel_tolerances : frame.tolerances;
   const std::vector<PlaneCandidate>& list = candidates_.list();
   if (list.empty()) return false;
   fits_.clear();
@@ -228,6 +282,10 @@ bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const Renumbere
   samplePlanarity(frame, labels, planarity_);
   curved_.assign(list.size() + 1, false);
   for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
+  if (std::getenv("FP_DEBUG"))
+    for (std::uint32_t k = 1; k <= list.size(); ++k)
+      std::fprintf(stderr, "plane %u count %.0f judgeable %d curved %d curvature %.3f noise %.5f fp %.5f\n", k, list[k - 1].sums.count,
+                   (int)planarity_.judgeable(k), (int)curved_[k], planarity_.curvature(k), tolerances.noise().sigma(1), tolerances.footprint(1));
   // Touching planes judged as one surface: the facets of a curved one are curved together.
   // (A pair of planes both dropped already has nothing to add.)
   judgeable_.assign(list.size() + 1, false);

@@ -78,6 +78,8 @@ class RegionBuilder {
   FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;
   std::vector<FloodCriterion> criteria_;  // the planes' tests at full resolution
+  std::vector<PlaneSums> inner_sums_;     // per plane: the sums of its inner blocks
+  std::vector<Vec3> centroids_;           // per plane: the centroid of its inner blocks
   FullResolutionWrite full_resolution_;
 };
 

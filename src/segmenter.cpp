@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "block_grid.h"
 #include "depth_smoothing.h"
@@ -89,6 +91,8 @@ struct PreviousFrame {
 
 struct Segmenter::Workspace {
   BlockGrid blocks;  // s > 1
+  HoleFilling old_holes;
+  std::vector<float> old_samples;
   std::vector<float> pitch_scratch;
   NoiseEstimator noise_estimator;
   HoleFilling holes;
@@ -117,7 +121,7 @@ struct Segmenter::Workspace {
     frame.subsampling = s;
     frame.full_pitch = SeedSelector::estimateAngularPitch(full, pitch_scratch);
     frame.pitch = frame.full_pitch * static_cast<float>(s);
-    noise = reuse_noise ? previous.noise : noiseModel(full, params);
+    noise = reuse_noise ? previous.noise : s == 1 || !params.estimatesNoise() ? noiseModel(full, params) : NoiseModel();
     frame.pixel_tolerances = Tolerances(params, noise, frame.full_pitch, full.size());
     NoiseModel segment_noise = noise;
     if (s == 1) {
@@ -133,17 +137,44 @@ struct Segmenter::Workspace {
       }
     } else {
       // Coarse to fine: the frame read once into s x s blocks, whose means are segmented (their
-      // averaging is the smoothing), with the noise of those means.
+      // averaging is the smoothing), with the noise of those means. The pixels' own noise
+      // follows from it: a mean of s^2 pixels of independent noise has 1/s of theirs (more
+      // where the noise is correlated, which widens the pixels' band).
       blocks.read(full, s);
       frame.blocks = &blocks;
       if (params.estimatesNoise()) {
         const int spacing = std::max(1, NoiseEstimator::kPatchSpacing / s);
         segment_noise = reuse_noise ? previous.segment_noise : noise_estimator.estimate(blocks.means(), spacing);
+        noise = segment_noise;
+        noise.sigma_constant *= s;
+        noise.sigma_quadratic *= s;
+        frame.pixel_tolerances = Tolerances(params, noise, frame.full_pitch, full.size());
       }
+      blocks.separateSurfaces(full, noise, frame.full_pitch);
       frame.grid = holes.fill(blocks.means(), Tolerances(params, segment_noise, frame.pitch, full.size()));
+      if (std::getenv("FP_OLDGRID")) {
+        noise = noiseModel(full, params);
+        frame.pixel_tolerances = Tolerances(params, noise, frame.full_pitch, full.size());
+        const PointGrid& filled = old_holes.fill(full, frame.pixel_tolerances);
+        const PointGrid& smoothed = smoothing.smooth(filled, noise);
+        segment_noise = noise_estimator.estimate(smoothed);
+        PointGrid g; g.width = (full.width + s - 1) / s; g.height = (full.height + s - 1) / s; g.stride = 4;
+        old_samples.resize(g.size() * 4);
+        float* out = old_samples.data();
+        for (int y = 0; y < full.height; y += s)
+          for (int x = 0; x < full.width; x += s) {
+            const float* p = smoothed.point(static_cast<std::size_t>(y) * full.width + x);
+            *out++ = p[0]; *out++ = p[1]; *out++ = p[2]; *out++ = 0.f;
+          }
+        g.data = old_samples.data();
+        frame.grid = holes.fill(g, Tolerances(params, segment_noise, frame.pitch, full.size()));
+      }
     }
     frame.holes = &holes;
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
+    if (std::getenv("FP_DEBUG"))
+      std::fprintf(stderr, "s=%d raw sigma(1)=%.5f sigma(3)=%.5f step %.5f | seg sigma(1)=%.5f sigma(3)=%.5f step %.5f patches %zu\n", s,
+                   noise.sigma(1), noise.sigma(3), noise.step(1), segment_noise.sigma(1), segment_noise.sigma(3), segment_noise.step(1), segment_noise.patches);
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(
         params, frame.tolerances,

@@ -21,6 +21,12 @@ class Tolerances {
   Tolerances(const Params& params, const NoiseModel& noise, double angular_pitch, std::size_t pixels);
 
   const NoiseModel& noise() const { return noise_; }
+  /// The same tolerances under another noise model.
+  Tolerances withNoise(const NoiseModel& noise) const {
+    Tolerances copy = *this;
+    copy.noise_ = noise;
+    return copy;
+  }
   /// The width of a pixel's footprint at range r [m].
   double footprint(double range) const { return angular_pitch_ * range; }
 
