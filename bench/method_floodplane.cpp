@@ -103,6 +103,9 @@ void registerFloodplane() {
   }
   // Fig. 5: time per phase (measuring adds a few clock reads per seed).
   for (const Frame& frame : realFrames()) add("floodplane/phases/real:" + frame.name, real(frame), 1, true);
+  for (int s : {2, 4})
+    for (const Frame& frame : realFrames())
+      add("floodplane/phases" + std::to_string(s) + "/real:" + frame.name, real(frame), s, true);
   for (const std::string& scene : sceneNames())
     add("floodplane/phases/scene:" + scene, rendered(scene, 640, 480), 1, true);
 }

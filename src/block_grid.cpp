@@ -68,6 +68,48 @@ void scatterPixelByPixel(const PointGrid& full, const Span& span, const float me
   out[4] = xy, out[5] = yz, out[6] = zx, out[7] = 0.f;
 }
 
+#if FLOODPLANE_SIMD
+// A full S x S block without a hole, four floats (one PCL point) at a time, its loops unrolled
+// by the compiler: the sum, the depth extremes and the scatter about the mean into `mean` and
+// `scatter` (as BlockGrid stores them); false, with nothing written, where the sum is not
+// finite (a hole: the caller goes pixel by pixel). `first` is the block's first point,
+// `row_step` the floats from one image row to the next, `step` from one point to the next.
+template <int S>
+bool readFullBlock(const float* first, std::size_t row_step, std::size_t step, float* mean, float* scatter,
+                   float& depth_spread) {
+  Float4 sum = Float4::broadcast(0.f);
+  Float4 smallest = Float4::broadcast(std::numeric_limits<float>::infinity());
+  Float4 largest = Float4::broadcast(0.f) - smallest;
+  for (int v = 0; v < S; ++v) {
+    for (int u = 0; u < S; ++u) {
+      const Float4 q =
+          Float4::load(first + static_cast<std::size_t>(v) * row_step + static_cast<std::size_t>(u) * step);
+      sum = sum + q;
+      smallest = Float4::min(smallest, q);
+      largest = Float4::max(largest, q);
+    }
+  }
+  if (!sum.firstThreeFinite()) return false;
+  depth_spread = largest.lane(2) - smallest.lane(2);
+  const Float4 centre = sum / Float4::broadcast(static_cast<float>(S * S));
+  centre.store(mean);
+  mean[3] = 0.f;
+  Float4 squares = Float4::broadcast(0.f), products = squares;
+  for (int v = 0; v < S; ++v) {
+    for (int u = 0; u < S; ++u) {
+      const Float4 d =
+          Float4::load(first + static_cast<std::size_t>(v) * row_step + static_cast<std::size_t>(u) * step) - centre;
+      squares = squares + d * d;
+      products = products + d * d.rotated();
+    }
+  }
+  squares.store(scatter);
+  products.store(scatter + 4);
+  scatter[3] = scatter[7] = 0.f;
+  return true;
+}
+#endif
+
 }  // namespace
 
 std::uint32_t BlockGrid::area(std::size_t i) const {
@@ -101,103 +143,52 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
   const int width = means_.width;
   const std::size_t first = static_cast<std::size_t>(by) * static_cast<std::size_t>(width);
   const int v_begin = by * s, v_end = std::min(v_begin + s, full.height);
-  const auto span = [&](int bx) {
-    return Span{bx * s, std::min(bx * s + s, full.width), v_begin, v_end};
-  };
+  const std::size_t frame_width = static_cast<std::size_t>(full.width);
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-  // A block's mean from its sum and count (NaN without a measured point).
-  const auto setMean = [&](std::size_t i, const float sum[3], std::uint32_t count) {
-    counts_[i] = static_cast<std::uint16_t>(count);
-    float* mean = &mean_points_[4 * i];
-    const float n = static_cast<float>(count);
-    mean[0] = count ? sum[0] / n : kNaN;
-    mean[1] = count ? sum[1] / n : kNaN;
-    mean[2] = count ? sum[2] / n : kNaN;
-    mean[3] = 0.f;
-  };
-#if FLOODPLANE_SIMD
-  if (fourPixelsAtATime(full)) {
-    // Every block's points added four floats at a time, row by row; a block whose sum is not
-    // finite has a hole, and is summed again pixel by pixel. The order of the additions is
-    // the pixel-by-pixel one, so both give the same bits.
-    has_hole_.assign(static_cast<std::size_t>(width), 0);
-    float* sums = &moments_[8 * first];  // the sums go where the scatters will: 8 floats a block
-    row_extremes_.resize(8 * static_cast<std::size_t>(width));
-    float* extremes = row_extremes_.data();  // smallest, largest point of each block
-    const Float4 infinity = Float4::broadcast(std::numeric_limits<float>::infinity());
-    for (int bx = 0; bx < width; ++bx) {
-      Float4::broadcast(0.f).store(sums + 8 * bx);
-      infinity.store(extremes + 8 * bx);
-      (Float4::broadcast(0.f) - infinity).store(extremes + 8 * bx + 4);
-    }
-    for (int v = v_begin; v < v_end; ++v) {
-      const std::size_t row = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
-      for (int bx = 0; bx < width; ++bx) {
-        const Span b = span(bx);
-        Float4 sum = Float4::load(sums + 8 * bx);
-        Float4 smallest = Float4::load(extremes + 8 * bx), largest = Float4::load(extremes + 8 * bx + 4);
-        for (int u = b.u_begin; u < b.u_end; ++u) {
-          const Float4 p = Float4::load(full.point(row + static_cast<std::size_t>(u)));
-          sum = sum + p;
-          smallest = Float4::min(smallest, p);
-          largest = Float4::max(largest, p);
-        }
-        sum.store(sums + 8 * bx);
-        smallest.store(extremes + 8 * bx);
-        largest.store(extremes + 8 * bx + 4);
-      }
-    }
-    for (int bx = 0; bx < width; ++bx) {
-      const std::size_t i = first + static_cast<std::size_t>(bx);
-      const Float4 sum = Float4::load(sums + 8 * bx);
-      float total[3] = {sum.lane(0), sum.lane(1), sum.lane(2)};
-      std::uint32_t count = 0;
-      if (sum.firstThreeFinite()) {
-        const Span b = span(bx);
-        count = static_cast<std::uint32_t>((b.u_end - b.u_begin) * (b.v_end - b.v_begin));
-        depth_spread_[i] = extremes[8 * bx + 6] - extremes[8 * bx + 2];
-      } else {
-        has_hole_[static_cast<std::size_t>(bx)] = 1;
-        sumPixelByPixel(full, span(bx), total, count, depth_spread_[i]);
-      }
-      setMean(i, total, count);
-    }
-    // The scatters about the means, from the rows just read.
-    for (int bx = 0; bx < width; ++bx) Float4::broadcast(0.f).store(sums + 8 * bx), Float4::broadcast(0.f).store(sums + 8 * bx + 4);
-    for (int v = v_begin; v < v_end; ++v) {
-      const std::size_t row = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
-      for (int bx = 0; bx < width; ++bx) {
-        if (has_hole_[static_cast<std::size_t>(bx)]) continue;
-        const Span b = span(bx);
-        const Float4 mean = Float4::load(&mean_points_[4 * (first + static_cast<std::size_t>(bx))]);
-        Float4 squares = Float4::load(sums + 8 * bx), products = Float4::load(sums + 8 * bx + 4);
-        for (int u = b.u_begin; u < b.u_end; ++u) {
-          const Float4 d = Float4::load(full.point(row + static_cast<std::size_t>(u))) - mean;
-          squares = squares + d * d;
-          products = products + d * d.rotated();
-        }
-        squares.store(sums + 8 * bx);
-        products.store(sums + 8 * bx + 4);
-      }
-    }
-    for (int bx = 0; bx < width; ++bx) {
-      float* out = sums + 8 * bx;
-      if (has_hole_[static_cast<std::size_t>(bx)]) {
-        scatterPixelByPixel(full, span(bx), &mean_points_[4 * (first + static_cast<std::size_t>(bx))], out);
-      } else {
-        out[3] = out[7] = 0.f;
-      }
-    }
-    return;
-  }
-#endif
   for (int bx = 0; bx < width; ++bx) {
     const std::size_t i = first + static_cast<std::size_t>(bx);
+    const Span span{bx * s, std::min(bx * s + s, full.width), v_begin, v_end};
+    float* mean = &mean_points_[4 * i];
+    float* scatter = &moments_[8 * i];
+#if FLOODPLANE_SIMD
+    if (fourPixelsAtATime(full) && span.u_end - span.u_begin == s && span.v_end - span.v_begin == s) {
+      // Block by block, four floats (one PCL point) at a time (readFullBlock); the rows of a
+      // block row stay in the cache from one block to the next. A block with a hole goes pixel
+      // by pixel below; the additions come in the same order either way, so both give the
+      // same bits.
+      const float* p =
+          full.point(static_cast<std::size_t>(v_begin) * frame_width + static_cast<std::size_t>(span.u_begin));
+      const std::size_t row_step = frame_width * full.stride;
+      bool read = false;
+      switch (s) {
+        case 2:
+          read = readFullBlock<2>(p, row_step, full.stride, mean, scatter, depth_spread_[i]);
+          break;
+        case 4:
+          read = readFullBlock<4>(p, row_step, full.stride, mean, scatter, depth_spread_[i]);
+          break;
+        case 8:
+          read = readFullBlock<8>(p, row_step, full.stride, mean, scatter, depth_spread_[i]);
+          break;
+        default:
+          break;
+      }
+      if (read) {
+        counts_[i] = static_cast<std::uint16_t>(s * s);
+        continue;
+      }
+    }
+#endif
     float total[3];
     std::uint32_t count = 0;
-    sumPixelByPixel(full, span(bx), total, count, depth_spread_[i]);
-    setMean(i, total, count);
-    scatterPixelByPixel(full, span(bx), &mean_points_[4 * i], &moments_[8 * i]);
+    sumPixelByPixel(full, span, total, count, depth_spread_[i]);
+    counts_[i] = static_cast<std::uint16_t>(count);
+    const float n = static_cast<float>(count);
+    mean[0] = count ? total[0] / n : kNaN;
+    mean[1] = count ? total[1] / n : kNaN;
+    mean[2] = count ? total[2] / n : kNaN;
+    mean[3] = 0.f;
+    scatterPixelByPixel(full, span, mean, scatter);
   }
 }
 
@@ -238,7 +229,8 @@ void BlockGrid::separateSurfaces(const PointGrid& full, const NoiseModel& pixel_
         stack.pop_back();
         const float depth = at(k)[2];
         const int x = k % w, y = k / w;
-        const int neighbours[4] = {x > 0 ? k - 1 : -1, x + 1 < w ? k + 1 : -1, y > 0 ? k - w : -1, y + 1 < h ? k + w : -1};
+        const int neighbours[4] = {x > 0 ? k - 1 : -1, x + 1 < w ? k + 1 : -1, y > 0 ? k - w : -1,
+                                   y + 1 < h ? k + w : -1};
         for (const int j : neighbours) {
           if (j < 0 || kept[static_cast<std::size_t>(j)]) continue;
           const float* q = at(j);
@@ -329,8 +321,8 @@ double BlockGrid::meanSquaredDistance(std::size_t i, const Vec3& normal, float o
   const float* mean = &mean_points_[4 * i];
   const float* c = &moments_[8 * i];
   const double nx = normal.x, ny = normal.y, nz = normal.z;
-  const double scatter = nx * nx * c[0] + ny * ny * c[1] + nz * nz * c[2] +
-                         2.0 * (nx * ny * c[4] + ny * nz * c[5] + nz * nx * c[6]);
+  const double scatter =
+      nx * nx * c[0] + ny * ny * c[1] + nz * nz * c[2] + 2.0 * (nx * ny * c[4] + ny * nz * c[5] + nz * nx * c[6]);
   const double distance = nx * mean[0] + ny * mean[1] + nz * mean[2] + offset;
   return std::max(0.0, scatter / n) + distance * distance;
 }

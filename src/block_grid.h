@@ -27,14 +27,14 @@ namespace floodplane {
 ///   pixels wide), its mean would be a point of neither. separateSurfaces() keeps, in such a
 ///   block, only the pixels on the surface of its first measured pixel (those connected to it
 ///   through steps that one surface can make between neighbouring pixels): the block then
-///   samples that surface, as every s-th pixel would (Table III), less noisily. Such a block is `split`: the pixels it left out belong to another surface,
-///   so the full-resolution write decides its pixels one by one.
+///   samples that surface, as every s-th pixel would (Table III), less noisily. Such a block is `split`: the pixels it
+///   left out belong to another surface, so the full-resolution write decides its pixels one by one.
 /// The right and bottom blocks are smaller where s does not divide the frame.
 ///
-/// The frame is read once, block row by block row: the s image rows of a block row are summed,
-/// then read again for the scatter about each block's mean while they are still in the cache.
-/// Blocks without a hole are summed four floats (a PCL point) at a time without a test per
-/// pixel; the rare block with a hole is summed again pixel by pixel.
+/// The frame is read once, block by block: a block's pixels are summed, then read again for
+/// their scatter about the mean while they are in the cache. Blocks without a hole are summed
+/// four floats (a PCL point) at a time without a test per pixel; a block with a hole is summed
+/// again pixel by pixel.
 class BlockGrid {
  public:
   /// Reads `full` into blocks of `factor` x `factor` pixels (factor >= 1). The means grid and
@@ -87,15 +87,13 @@ class BlockGrid {
   int frame_width_ = 0;
   int frame_height_ = 0;
   PointGrid means_;
-  std::vector<float> mean_points_;      // x y z 0 per block
-  std::vector<float> moments_;          // per block: xx yy zz (unused) xy yz zx (unused)
-  std::vector<std::uint16_t> counts_;   // measured pixels per block
-  std::vector<float> depth_spread_;     // per block: its largest minus its smallest depth (z)
-  std::vector<std::uint8_t> split_;     // per block: separateSurfaces() left pixels out
-  std::vector<std::uint8_t> has_hole_;  // per block of the current row: summed pixel by pixel
-  std::vector<float> row_extremes_;     // per block of the current row: smallest and largest point
-  std::vector<int> stack_;              // separateSurfaces' scratch
-  std::vector<std::uint8_t> kept_;      // separateSurfaces' scratch: per pixel of a block
+  std::vector<float> mean_points_;     // x y z 0 per block
+  std::vector<float> moments_;         // per block: xx yy zz (unused) xy yz zx (unused)
+  std::vector<std::uint16_t> counts_;  // measured pixels per block
+  std::vector<float> depth_spread_;    // per block: its largest minus its smallest depth (z)
+  std::vector<std::uint8_t> split_;    // per block: separateSurfaces() left pixels out
+  std::vector<int> stack_;             // separateSurfaces' scratch
+  std::vector<std::uint8_t> kept_;     // separateSurfaces' scratch: per pixel of a block
 };
 
 }  // namespace floodplane

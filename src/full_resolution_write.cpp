@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdlib>
-#include <cstdio>
+
+#include "simd.h"
 
 namespace floodplane {
 
@@ -32,30 +32,57 @@ void FullResolutionWrite::classifyRow(const BlockGrid& blocks, const RenumberedL
   const PointGrid& grid = blocks.means();
   const int width = grid.width, height = grid.height;
   blocks_.resize(static_cast<std::size_t>(width));
+  // The labels of the block rows above, at and below `by`, read once: kEmpty for a block
+  // without a measured pixel, which borders nothing (a hole next to a plane has no pixel to
+  // decide), and beyond the grid's edge.
+  const auto rowLabels = [&](int y, std::vector<std::uint32_t>& row) {
+    row.assign(static_cast<std::size_t>(width) + 2, kEmpty);
+    if (y < 0 || y >= height) return;
+    const std::size_t first = static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = first + static_cast<std::size_t>(x);
+      const std::uint32_t k = block_labels[i];
+      row[static_cast<std::size_t>(x) + 1] = k == 0 && blocks.count(i) == 0 ? kEmpty : k;
+    }
+  };
+  rowLabels(by - 1, above_);
+  rowLabels(by, row_);
+  rowLabels(by + 1, below_);
+  const std::size_t first = static_cast<std::size_t>(by) * static_cast<std::size_t>(width);
   for (int bx = 0; bx < width; ++bx) {
-    const std::size_t i = static_cast<std::size_t>(by) * static_cast<std::size_t>(width) + static_cast<std::size_t>(bx);
-    const std::uint32_t k = block_labels[i];
+    const std::size_t i = first + static_cast<std::size_t>(bx);
     Block& block = blocks_[static_cast<std::size_t>(bx)];
     block.candidate_count = 0;
+    const std::uint32_t k = block_labels[i];
+    const std::size_t x = static_cast<std::size_t>(bx) + 1;
+    const std::uint32_t around[9] = {above_[x - 1], above_[x],     above_[x + 1], row_[x - 1],  row_[x],
+                                     row_[x + 1],   below_[x - 1], below_[x],     below_[x + 1]};
     bool uniform = true;
-    for (int y = std::max(0, by - 1); y <= std::min(height - 1, by + 1); ++y) {
-      for (int x = std::max(0, bx - 1); x <= std::min(width - 1, bx + 1); ++x) {
-        const std::uint32_t l =
-            block_labels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
-        uniform = uniform && l == k;
-        if (l == 0) continue;
-        const auto end = block.candidates.begin() + block.candidate_count;
-        if (std::find(block.candidates.begin(), end, l) == end) block.candidates[block.candidate_count++] = l;
+    for (const std::uint32_t l : around) {
+      if (l == kEmpty || l == k) continue;
+      uniform = false;
+      if (l == 0) continue;
+      const auto end = block.candidates.begin() + block.candidate_count;
+      if (std::find(block.candidates.begin(), end, l) == end) block.candidates[block.candidate_count++] = l;
+    }
+    if (uniform) {
+      if (k == 0) {
+        block.kind = Kind::kNone;
+      } else if (!blocks.split(i) && insideBand(blocks, i, criteria[k - 1])) {
+        block.kind = Kind::kInside;
+        block.plane = k;
+      } else {
+        block.kind = Kind::kBorder;
+        block.candidates[0] = k;
+        block.candidate_count = 1;
       }
+      continue;
     }
-    if (block.candidate_count == 0) {
-      block.kind = Kind::kNone;
-    } else if (!std::getenv("FP_TESTALL") && uniform && !blocks.split(i) && insideBand(blocks, i, criteria[k - 1])) {
-      block.kind = Kind::kInside;
-      block.plane = k;
-    } else {
-      block.kind = Kind::kBorder;
+    if (k != 0) {
+      const auto end = block.candidates.begin() + block.candidate_count;
+      if (std::find(block.candidates.begin(), end, k) == end) block.candidates[block.candidate_count++] = k;
     }
+    block.kind = block.candidate_count == 0 ? Kind::kNone : Kind::kBorder;
   }
 }
 
@@ -97,6 +124,57 @@ void FullResolutionWrite::decidePixels(const PointGrid& frame, std::size_t row_s
   }
 }
 
+void FullResolutionWrite::decideForOnePlane(const PointGrid& frame, std::size_t row_start, int u_begin, int u_end,
+                                            std::uint32_t k, const std::vector<FloodCriterion>& criteria,
+                                            PlaneCandidates& planes, std::uint32_t* out_row) const {
+  // decidePixels for a block with one plane around (a plane's edge next to no plane, the
+  // commonest border): four pixels at a time where the frame has four floats a point, with
+  // the scalar code's operations in its order lane by lane; only the order in which the
+  // points reach the sums differs.
+  const FloodCriterion& plane = criteria[k - 1];
+  PlaneCandidate& candidate = planes[k];
+  int u = u_begin;
+#if FLOODPLANE_SIMD
+  if (fourPixelsAtATime(frame)) {
+    LaneSums lanes;
+    const Float4 offset_sq = Float4::broadcast(plane.offset * plane.offset);
+    for (; u + 4 <= u_end; u += 4) {
+      const std::size_t pixel = row_start + static_cast<std::size_t>(u);
+      const PointLanes q = PointLanes::load(frame, pixel);
+      const Float4 range_sq = q.squaredNorm();
+      const Float4 dot = q.dot(plane.normal);
+      const Float4 plane_range_sq = offset_sq * range_sq / (dot * dot);
+      Float4 distance;
+      // A hole (NaN) fails: its distance is NaN.
+      const Mask4 fits = plane.fitsPlane(q, Float4::min(plane_range_sq, range_sq), distance);
+      fits.storeLabels(out_row + u, k);
+      lanes.add(q, fits);
+      if (candidate.first_pixel == kNoPixel && fits.any())
+        candidate.first_pixel = pixel + static_cast<std::size_t>(fits.firstSet());
+    }
+    lanes.addTo(candidate.sums);
+  }
+#endif
+  for (; u < u_end; ++u) {
+    const std::size_t pixel = row_start + static_cast<std::size_t>(u);
+    const float* p = frame.point(pixel);
+    bool fits = false;
+    if (finitePoint(p)) {
+      const Vec3 q = Vec3::load(p);
+      const float range_sq = q.squaredNorm();
+      const float dot = plane.normal.dot(q);
+      const float plane_range_sq = plane.offset * plane.offset * range_sq / (dot * dot);
+      float distance = 0.f;
+      fits = plane.fitsPlane(q, nearerRangeSq(plane_range_sq, range_sq), distance);
+      if (fits) {
+        candidate.sums.add(q);
+        if (candidate.first_pixel == kNoPixel) candidate.first_pixel = pixel;
+      }
+    }
+    out_row[u] = fits ? k : 0u;
+  }
+}
+
 bool FullResolutionWrite::prefers(std::uint32_t a, float depth_a, float distance_a, std::uint32_t b, float depth_b,
                                   float distance_b, const std::vector<FloodCriterion>& criteria,
                                   const std::vector<Vec3>& centroids) {
@@ -129,15 +207,14 @@ void FullResolutionWrite::write(const PointGrid& frame, const BlockGrid& blocks,
   const int s = blocks.factor();
   const PointGrid& grid = blocks.means();
   const std::size_t frame_width = static_cast<std::size_t>(frame.width);
-  std::size_t n_inside = 0, n_border = 0, n_none = 0;
   for (int by = 0; by < grid.height; ++by) {
     classifyRow(blocks, block_labels, criteria, by);
-    for (const Block& b : blocks_) (b.kind == Kind::kInside ? n_inside : b.kind == Kind::kBorder ? n_border : n_none)++;
     const std::size_t first_block = static_cast<std::size_t>(by) * static_cast<std::size_t>(grid.width);
     // A block inside a plane adds its sums once.
     for (int bx = 0; bx < grid.width; ++bx) {
       const Block& block = blocks_[static_cast<std::size_t>(bx)];
-      if (block.kind == Kind::kInside) blocks.addTo(first_block + static_cast<std::size_t>(bx), planes[block.plane].sums);
+      if (block.kind == Kind::kInside)
+        blocks.addTo(first_block + static_cast<std::size_t>(bx), planes[block.plane].sums);
     }
     const int v_end = std::min(blocks.firstRow(by) + s, frame.height);
     for (int v = blocks.firstRow(by); v < v_end; ++v) {
@@ -167,13 +244,15 @@ void FullResolutionWrite::write(const PointGrid& frame, const BlockGrid& blocks,
             break;
           }
           case Kind::kBorder:
-            decidePixels(frame, row_start, u_begin, u_end, block, criteria, centroids, planes, out_row);
+            if (block.candidate_count == 1)
+              decideForOnePlane(frame, row_start, u_begin, u_end, block.candidates[0], criteria, planes, out_row);
+            else
+              decidePixels(frame, row_start, u_begin, u_end, block, criteria, centroids, planes, out_row);
             break;
         }
       }
     }
   }
-  if (std::getenv("FP_DEBUG")) std::fprintf(stderr, "blocks inside %zu border %zu none %zu\n", n_inside, n_border, n_none);
 }
 
 }  // namespace floodplane

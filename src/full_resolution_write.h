@@ -46,7 +46,7 @@ class FullResolutionWrite {
   struct Block {
     Kind kind;
     std::uint8_t candidate_count;
-    std::uint32_t plane;                  // kInside: its plane
+    std::uint32_t plane;                      // kInside: its plane
     std::array<std::uint32_t, 9> candidates;  // kBorder: the planes around, distinct
   };
   // Classifies the blocks of block row `by` into blocks_.
@@ -57,12 +57,19 @@ class FullResolutionWrite {
   void decidePixels(const PointGrid& frame, std::size_t row_start, int u_begin, int u_end, const Block& block,
                     const std::vector<FloodCriterion>& criteria, const std::vector<Vec3>& centroids,
                     PlaneCandidates& planes, std::uint32_t* out_row) const;
+  // decidePixels for a block with plane k alone around it.
+  void decideForOnePlane(const PointGrid& frame, std::size_t row_start, int u_begin, int u_end, std::uint32_t k,
+                         const std::vector<FloodCriterion>& criteria, PlaneCandidates& planes,
+                         std::uint32_t* out_row) const;
   // Whether a pixel that fits planes a and b (its ray meets them at depth_a and depth_b, in
   // units of its range; it lies distance_a and distance_b from them along the ray) is a's.
   static bool prefers(std::uint32_t a, float depth_a, float distance_a, std::uint32_t b, float depth_b,
-                      float distance_b, const std::vector<FloodCriterion>& criteria, const std::vector<Vec3>& centroids);
+                      float distance_b, const std::vector<FloodCriterion>& criteria,
+                      const std::vector<Vec3>& centroids);
 
-  std::vector<Block> blocks_;  // one block row
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;  // classifyRow: a block with no measured pixel
+  std::vector<Block> blocks_;                           // one block row
+  std::vector<std::uint32_t> above_, row_, below_;      // classifyRow's block labels, one row each
 };
 
 }  // namespace floodplane

@@ -31,8 +31,9 @@ class PlanarityTest {
  public:
   /// Starts the sums for planes 1..fits.size() (fits[k - 1] is plane k).
   void reset(const std::vector<PlaneFit>& fits);
-  /// Adds an inlier of plane k.
-  void add(std::uint32_t k, const Vec3& point);
+  /// Adds an inlier of plane k; with a `weight`, as that many inliers at `point` (a block's
+  /// mean standing for its pixels).
+  void add(std::uint32_t k, const Vec3& point, double weight = 1.0);
   /// Whether plane k has enough sampled points to show a bend at all.
   bool judgeable(std::uint32_t k) const;
   /// Whether plane k bends more than its noise explains.
@@ -84,46 +85,20 @@ class PlanarityTest {
 };
 
 // Inline: it runs for every sampled inlier of every plane, from region output.
-inline void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
+inline void PlanarityTest::add(std::uint32_t k, const Vec3& point, double weight) {
   const Vec3 d = point - origins_[k - 1];
   const double x = d.x, y = d.y, z = d.z;
   const double xx = x * x, xy = x * y, xz = x * z, yy = y * y, yz = y * z, zz = z * z;
+  const double values[kMonomials] = {1.0,     x,       y,       z,       xx,      xy,      xz,      yy,      yz,
+                                     zz,      xx * x,  xx * y,  xx * z,  xy * y,  xy * z,  xz * z,  yy * y,  yy * z,
+                                     yz * z,  zz * z,  xx * xx, xx * xy, xx * xz, xx * yy, xx * yz, xx * zz, xy * yy,
+                                     xy * yz, xy * zz, xz * zz, yy * yy, yy * yz, yy * zz, yz * zz, zz * zz};
   double* m = moments_.data() + static_cast<std::size_t>(k - 1) * kMonomials;
-  m[0] += 1.0;
-  m[1] += x;
-  m[2] += y;
-  m[3] += z;
-  m[4] += xx;
-  m[5] += xy;
-  m[6] += xz;
-  m[7] += yy;
-  m[8] += yz;
-  m[9] += zz;
-  m[10] += xx * x;
-  m[11] += xx * y;
-  m[12] += xx * z;
-  m[13] += xy * y;
-  m[14] += xy * z;
-  m[15] += xz * z;
-  m[16] += yy * y;
-  m[17] += yy * z;
-  m[18] += yz * z;
-  m[19] += zz * z;
-  m[20] += xx * xx;
-  m[21] += xx * xy;
-  m[22] += xx * xz;
-  m[23] += xx * yy;
-  m[24] += xx * yz;
-  m[25] += xx * zz;
-  m[26] += xy * yy;
-  m[27] += xy * yz;
-  m[28] += xy * zz;
-  m[29] += xz * zz;
-  m[30] += yy * yy;
-  m[31] += yy * yz;
-  m[32] += yy * zz;
-  m[33] += yz * zz;
-  m[34] += zz * zz;
+  if (weight == 1.0) {
+    for (int i = 0; i < kMonomials; ++i) m[i] += values[i];
+  } else {
+    for (int i = 0; i < kMonomials; ++i) m[i] += weight * values[i];
+  }
 }
 
 }  // namespace floodplane

@@ -6,8 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <cstdio>
-#include <cstdlib>
 
 #include "refinement.h"
 #include "row_search.h"
@@ -19,9 +17,8 @@ namespace {
 
 // About this many pixels of a plane take part in its planarity test (see samplePlanarity).
 constexpr double kPlanaritySamples = 4000.0;
-// A plane's inner blocks give the plane its border pixels are decided with when they hold at
-// least this many pixels.
-constexpr double kInnerPixels = 64.0;
+// The depth smoothing's gain on the noise of independent pixels (a 3 x 3 mean: 1/3).
+constexpr double kSmoothingGain = 2.0;
 
 }  // namespace
 
@@ -29,6 +26,7 @@ constexpr double kInnerPixels = 64.0;
 
 void RegionBuilder::build(const PreparedFrame& frame, const MergedSegments& merged, const Params& params, bool refine,
                           Segmentation& out) {
+  params_ = params;
   const std::uint32_t min_inliers = frame.tolerances.minInliers();
   const bool blocks = frame.blocks != nullptr;
   std::vector<std::uint32_t>& labels = blocks ? block_labels_ : out.labels;
@@ -63,7 +61,7 @@ void RegionBuilder::build(const PreparedFrame& frame, const MergedSegments& merg
   if (occlusion_merging_.run(frame.grid, candidates_.labels(labels), candidates_,
                              MergeCriterion(params, frame.tolerances), frame.tolerances, frame.pitch))
     candidates_.composeRenumbering();
-  if (!std::getenv("FP_NOPLAN") && dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
+  if (dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
   if (blocks) {
     writeFullResolution(frame, params, out);
   } else {
@@ -173,18 +171,16 @@ void RegionBuilder::writeFullResolution(const PreparedFrame& frame, const Params
   centroids_.clear();
   for (std::uint32_t k = 1; k <= planes; ++k) {
     const PlaneCandidate& candidate = candidates_.list()[k - 1];
+    const PlaneFit whole = candidate.sums.fit();
     PlaneFit fit = inner_sums_[k].fit();
-    if (!fit.valid || inner_sums_[k].count < kInnerPixels) fit = candidate.sums.fit();
+    // The inner blocks of a strip a few blocks wide are a line: their plane turns freely about it.
+    if (!(normalUncertainty(fit, inner_sums_[k].count) <= 2.0 * normalUncertainty(whole, candidate.sums.count)))
+      fit = whole;
     criteria_.push_back(planeCriterion(fit, frame.pixel_tolerances, frame.full_pitch));
     centroids_.push_back({static_cast<float>(fit.centroid.x()), static_cast<float>(fit.centroid.y()),
                           static_cast<float>(fit.centroid.z())});
   }
   full_resolution_.write(frame.measured, *frame.blocks, labels, criteria_, centroids_, candidates_, out.labels);
-  if (std::getenv("FP_REFINE")) {
-    for (std::size_t k = 0; k < criteria_.size(); ++k) candidates_.list()[k].criterion = criteria_[k];
-    static HoleFilling none;
-    refinePlanes(frame.measured, none, nullptr, out.labels, candidates_, false, queue_);
-  }
   // The pixels decided one by one at the borders change the sizes a little: a plane may now
   // fall short of min_inliers or change places with one of about its size.
   if (candidates_.sortBySize(frame.tolerances.minInliers(), &params)) candidates_.renumberImage(out.labels);
@@ -211,8 +207,7 @@ void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const Renumbere
   }
 }
 
-void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const RenumberedLabels& labels,
-                                    PlanarityTest& test) {
+void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const RenumberedLabels& labels, PlanarityTest& test) {
   // Interior points only (no neighbour in another plane or none): the points along a plane's
   // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
   // A neighbour without a return does not make a border: on a speckled surface there would be
@@ -228,31 +223,24 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
   const BlockGrid* blocks = frame.blocks;
   const std::vector<PlaneCandidate>& list = candidates_.list();
   strides_.assign(list.size() + 1, 1);
-  const double per_point = blocks && !std::getenv("FP_PIXPLAN") ? double(frame.subsampling) * frame.subsampling : 1.0;
+  // The lattice counts points of the grid, the sums measured pixels: at s > 1 a sampled block
+  // stands for its pixels, so that the test has about kPlanaritySamples pixels' worth of points.
   for (std::size_t k = 1; k <= list.size(); ++k) {
-    const double s = std::floor(std::sqrt(list[k - 1].sums.count / per_point / kPlanaritySamples));
+    const double s = std::floor(std::sqrt(list[k - 1].sums.count / kPlanaritySamples));
     strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
   }
   const std::size_t width = static_cast<std::size_t>(grid.width);
   const auto inside = [&](std::size_t j, std::uint32_t k) {
     return labels[j] == k || !grid.isFinite(j) || frame.holes->isFilled(j);
   };
+  // At s > 1 a block's mean stands for its measured pixels (weighted by their number): the
+  // test then has as many points as at full resolution, at the means' places.
   const auto addPoint = [&](std::size_t i, std::uint32_t k) {
-    if (!blocks || !std::getenv("FP_PIXPLAN")) {
+    if (!blocks) {
       test.add(k, Vec3::load(grid.point(i)));
-      return;
+    } else if (!blocks->split(i)) {  // a split block's other pixels belong elsewhere
+      test.add(k, Vec3::load(grid.point(i)), blocks->count(i));
     }
-    if (blocks->split(i)) return;  // a block with another surface's pixels
-    const PointGrid& measured = frame.measured;
-    const int bx = static_cast<int>(i % width), by = static_cast<int>(i / width);
-    const int u_end = std::min(blocks->firstColumn(bx) + blocks->factor(), measured.width);
-    const int v_end = std::min(blocks->firstRow(by) + blocks->factor(), measured.height);
-    for (int v = blocks->firstRow(by); v < v_end; ++v)
-      for (int u = blocks->firstColumn(bx); u < u_end; ++u) {
-        const std::size_t pixel =
-            static_cast<std::size_t>(v) * static_cast<std::size_t>(measured.width) + static_cast<std::size_t>(u);
-        if (measured.isFinite(pixel)) test.add(k, Vec3::load(measured.point(pixel)));
-      }
   };
   // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
   // up once. Points are added in raster order of the grid.
@@ -273,7 +261,18 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
 }
 
 bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const RenumberedLabels& labels) {
-  const Tolerances& tolerances = frame.blocks && std::getenv("FP_PIXPLAN") ? frame.pixel_tolerances : frame.tolerances;
+  // At s > 1 the test's points stand for measured pixels (samplePlanarity): their noise is the
+  // pixels', over the pixels' footprint. The test's significance was set at s = 1 on the
+  // smoothed frame, whose neighbouring points share their noise, so that a bend shows in more
+  // points than independent ones would show it: the pixels' noise counts kSmoothingGain times
+  // less.
+  Tolerances tolerances = frame.tolerances;
+  if (frame.blocks) {
+    NoiseModel noise = frame.pixel_tolerances.noise();
+    noise.sigma_constant /= kSmoothingGain;
+    noise.sigma_quadratic /= kSmoothingGain;
+    tolerances = frame.pixel_tolerances.withNoise(noise);
+  }
   const std::vector<PlaneCandidate>& list = candidates_.list();
   if (list.empty()) return false;
   fits_.clear();
@@ -282,10 +281,6 @@ bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const Renumbere
   samplePlanarity(frame, labels, planarity_);
   curved_.assign(list.size() + 1, false);
   for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
-  if (std::getenv("FP_DEBUG"))
-    for (std::uint32_t k = 1; k <= list.size(); ++k)
-      std::fprintf(stderr, "plane %u count %.0f judgeable %d curved %d curvature %.3f noise %.5f fp %.5f\n", k, list[k - 1].sums.count,
-                   (int)planarity_.judgeable(k), (int)curved_[k], planarity_.curvature(k), tolerances.noise().sigma(1), tolerances.footprint(1));
   // Touching planes judged as one surface: the facets of a curved one are curved together.
   // (A pair of planes both dropped already has nothing to add.)
   judgeable_.assign(list.size() + 1, false);

@@ -66,6 +66,7 @@ class RegionBuilder {
   // s > 1: the labels at full resolution, the planes' exact sums, sizes and order.
   void writeFullResolution(const PreparedFrame& frame, const Params& params, Segmentation& out);
 
+  Params params_;
   PlaneCandidates candidates_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k]
   std::vector<std::uint32_t> block_labels_;          // s > 1: the label image of the blocks

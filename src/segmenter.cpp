@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "block_grid.h"
 #include "depth_smoothing.h"
@@ -91,8 +89,6 @@ struct PreviousFrame {
 
 struct Segmenter::Workspace {
   BlockGrid blocks;  // s > 1
-  HoleFilling old_holes;
-  std::vector<float> old_samples;
   std::vector<float> pitch_scratch;
   NoiseEstimator noise_estimator;
   HoleFilling holes;
@@ -152,29 +148,9 @@ struct Segmenter::Workspace {
       }
       blocks.separateSurfaces(full, noise, frame.full_pitch);
       frame.grid = holes.fill(blocks.means(), Tolerances(params, segment_noise, frame.pitch, full.size()));
-      if (std::getenv("FP_OLDGRID")) {
-        noise = noiseModel(full, params);
-        frame.pixel_tolerances = Tolerances(params, noise, frame.full_pitch, full.size());
-        const PointGrid& filled = old_holes.fill(full, frame.pixel_tolerances);
-        const PointGrid& smoothed = smoothing.smooth(filled, noise);
-        segment_noise = noise_estimator.estimate(smoothed);
-        PointGrid g; g.width = (full.width + s - 1) / s; g.height = (full.height + s - 1) / s; g.stride = 4;
-        old_samples.resize(g.size() * 4);
-        float* out = old_samples.data();
-        for (int y = 0; y < full.height; y += s)
-          for (int x = 0; x < full.width; x += s) {
-            const float* p = smoothed.point(static_cast<std::size_t>(y) * full.width + x);
-            *out++ = p[0]; *out++ = p[1]; *out++ = p[2]; *out++ = 0.f;
-          }
-        g.data = old_samples.data();
-        frame.grid = holes.fill(g, Tolerances(params, segment_noise, frame.pitch, full.size()));
-      }
     }
     frame.holes = &holes;
     frame.tolerances = Tolerances(params, segment_noise, frame.pitch, full.size());
-    if (std::getenv("FP_DEBUG"))
-      std::fprintf(stderr, "s=%d raw sigma(1)=%.5f sigma(3)=%.5f step %.5f | seg sigma(1)=%.5f sigma(3)=%.5f step %.5f patches %zu\n", s,
-                   noise.sigma(1), noise.sigma(3), noise.step(1), segment_noise.sigma(1), segment_noise.sigma(3), segment_noise.step(1), segment_noise.patches);
     selector.configure(params, frame.tolerances, 1.0, frame.pitch, frame.grid.width, frame.grid.height);
     fine_selector.configure(
         params, frame.tolerances,

@@ -74,6 +74,12 @@ struct Mask4 {
   __m128 bits;
 
   bool all() const { return _mm_movemask_ps(bits) == 0xf; }
+  bool any() const { return _mm_movemask_ps(bits) != 0; }
+  /// The first lane that is set (4 when none is).
+  int firstSet() const {
+    const unsigned m = static_cast<unsigned>(_mm_movemask_ps(bits));
+    return m ? __builtin_ctz(m) : 4;
+  }
   /// How many lanes are set from lane 0 up before the first that is not.
   int leadingLanes() const { return __builtin_ctz(~static_cast<unsigned>(_mm_movemask_ps(bits))); }
   /// How many lanes are set from lane 3 down before the first that is not.
@@ -118,7 +124,9 @@ struct Float4 {
   /// (y, z, x, w): with *this, the products x y, y z, z x in one multiplication.
   Float4 rotated() const { return {_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 0, 2, 1))}; }
   /// Whether lanes 0-2 (x y z) are finite numbers.
-  bool firstThreeFinite() const { return (_mm_movemask_ps(_mm_cmpord_ps(_mm_sub_ps(v, v), _mm_setzero_ps())) & 7) == 7; }
+  bool firstThreeFinite() const {
+    return (_mm_movemask_ps(_mm_cmpord_ps(_mm_sub_ps(v, v), _mm_setzero_ps())) & 7) == 7;
+  }
   /// Lane j.
   float lane(int j) const {
     alignas(16) float lanes[4];
@@ -228,6 +236,13 @@ class LaneSums {
     add(_mm_cvtps_pd(_mm_movehl_ps(p.x.v, p.x.v)), _mm_cvtps_pd(_mm_movehl_ps(p.y.v, p.y.v)),
         _mm_cvtps_pd(_mm_movehl_ps(p.z.v, p.z.v)));
     count_ += 4.0;
+  }
+  /// Adds the points of the lanes where `members` is set.
+  void add(const PointLanes& p, Mask4 members) {
+    const Float4 zero = Float4::broadcast(0.f);
+    add(PointLanes{Float4::select(members, p.x, zero), Float4::select(members, p.y, zero),
+                   Float4::select(members, p.z, zero)});
+    count_ -= 4.0 - static_cast<double>(__builtin_popcount(static_cast<unsigned>(_mm_movemask_ps(members.bits))));
   }
   void addTo(PlaneSums& sums) const {
     const auto total = [](__m128d a) { return _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a))); };

@@ -55,7 +55,9 @@ struct Frame {
     for (PlaneCandidate& plane : planes.list()) plane.criterion = planeCriterion(plane.sums.fit(), tolerances, kPitch);
   }
 
-  void refine(bool renumber_first = false) { refinePlanes(grid.grid(), holes, nullptr, labels, planes, renumber_first, queue); }
+  void refine(bool renumber_first = false) {
+    refinePlanes(grid.grid(), holes, nullptr, labels, planes, renumber_first, queue);
+  }
 
   std::vector<std::string> art() const {
     std::vector<std::string> rows;
