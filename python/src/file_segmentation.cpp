@@ -56,8 +56,7 @@ FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const st
        frame.xyz.height != static_cast<std::uint32_t>(*depth->height))) {
     throw InputFileError("the depth image is " + std::to_string(frame.xyz.width) + " x " +
                          std::to_string(frame.xyz.height) + ", the intrinsics are for " +
-                         std::to_string(*depth->width) + " x " + std::to_string(*depth->height) +
-                         " (width x height)");
+                         std::to_string(*depth->width) + " x " + std::to_string(*depth->height) + " (width x height)");
   }
   std::vector<float> shifted;
   const PointGrid grid = sensorFrameGrid(frame.xyz, shifted);

@@ -16,7 +16,8 @@ namespace py = pybind11;
 
 // The colour of each of `labels` (1-D uint32): (N, 3) uint8. floodplane.label_colors calls it
 // once per distinct label.
-py::array_t<std::uint8_t> colorTable(const py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>& labels) {
+py::array_t<std::uint8_t> colorTable(
+    const py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>& labels) {
   const auto count = static_cast<py::ssize_t>(labels.size());
   py::array_t<std::uint8_t> colors({count, py::ssize_t{3}});
   std::uint8_t* out = colors.mutable_data();

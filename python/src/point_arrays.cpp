@@ -211,7 +211,8 @@ DepthArray depthArrayFrom(py::handle depth, const std::string& where) {
   }
   out.real = kind == 'f';
   if (out.array.ndim() == 3 && out.array.shape(2) == 1) out.array = py::array(out.array.attr("squeeze")(2));
-  if (out.array.ndim() != 2) raiseValueError(where + " must have shape (H, W) or (H, W, 1), got " + shapeText(out.array));
+  if (out.array.ndim() != 2)
+    raiseValueError(where + " must have shape (H, W) or (H, W, 1), got " + shapeText(out.array));
   if (out.array.shape(0) > INT_MAX || out.array.shape(1) > INT_MAX)
     raiseValueError(where + " is too large: " + shapeText(out.array));
   return out;

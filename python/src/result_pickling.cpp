@@ -113,8 +113,8 @@ SegmentedPlane segmentedPlaneFrom(StateReader& reader) {
 }  // namespace
 
 py::tuple noiseState(const NoiseModel& n) {
-  return py::make_tuple(kStateFormat, n.sigma_constant, n.sigma_quadratic, n.step_constant, n.step_quadratic,
-                        n.patches, n.estimated);
+  return py::make_tuple(kStateFormat, n.sigma_constant, n.sigma_quadratic, n.step_constant, n.step_quadratic, n.patches,
+                        n.estimated);
 }
 
 NoiseModel noiseFromState(const py::tuple& state) {
@@ -193,7 +193,8 @@ SegmentationResult segmentationFromState(const py::tuple& state) {
   if (s->width < 0 || s->height < 0) reader.fail("a width and height >= 0");
   const py::handle labels = reader.raw();
   const auto planes = reader.next<py::list>();
-  s->labels = unsignedGrid(labels, s->height, s->width, planes.size(), "cannot unpickle floodplane.Segmentation: labels");
+  s->labels =
+      unsignedGrid(labels, s->height, s->width, planes.size(), "cannot unpickle floodplane.Segmentation: labels");
   const std::size_t pixels = s->labels.size();
   for (const py::handle plane : planes) {
     if (!py::isinstance<py::tuple>(plane)) {

@@ -103,13 +103,14 @@ std::string segmenterRepr(const SharedSegmenter& self) {
 }  // namespace
 
 void bindSegmenter(py::module_& m) {
-  py::class_<SharedSegmenter>(m, "Segmenter",
-                              "Plane segmentation of organized point clouds by seeded flood fill. The keywords are "
-                              "the fields of floodplane::Params; None (the default of the lengths) derives a "
-                              "value from the frame's noise. Keeps its buffers between calls: reuse one for a "
-                              "sequence of frames. Thread-safe (calls on one Segmenter take turns; use one per "
-                              "thread to run in parallel); the GIL is released while it segments. Pickles as its parameters: a "
-                              "copy starts cold (new buffers, no head start).")
+  py::class_<SharedSegmenter>(
+      m, "Segmenter",
+      "Plane segmentation of organized point clouds by seeded flood fill. The keywords are "
+      "the fields of floodplane::Params; None (the default of the lengths) derives a "
+      "value from the frame's noise. Keeps its buffers between calls: reuse one for a "
+      "sequence of frames. Thread-safe (calls on one Segmenter take turns; use one per "
+      "thread to run in parallel); the GIL is released while it segments. Pickles as its parameters: a "
+      "copy starts cold (new buffers, no head start).")
       .def(py::init([](const py::kwargs& keywords) {
              return std::make_unique<SharedSegmenter>(paramsFromKeywords(keywords, "Segmenter"));
            }),

@@ -181,6 +181,8 @@ def test_depth_pngs_with_a_camera_matrix(tmp_path, client):
     K = [[131.25, 0, 79.5], [0, 131.25, 59.5], [0, 0, 1]]
     result, = floodplane.distributed.segment_files(client, [path], tmp_path / "out", intrinsics=np.array(K))
     assert "error" not in result, result
-    np.testing.assert_array_equal(floodplane.read_labels_pcd(result["output"]), floodplane.segment_depth(depth, K).labels)
+    np.testing.assert_array_equal(floodplane.read_labels_pcd(result["output"]),
+                                  floodplane.segment_depth(depth, K).labels)
+    skewed = [[1, 1, 0], [0, 1, 0], [0, 0, 1]]
     with pytest.raises(ValueError, match="segment_files: intrinsics must be a pinhole camera matrix"):
-        floodplane.distributed.segment_files(client, [path], tmp_path / "out", intrinsics=[[1, 1, 0], [0, 1, 0], [0, 0, 1]])
+        floodplane.distributed.segment_files(client, [path], tmp_path / "out", intrinsics=skewed)

@@ -103,10 +103,12 @@ def test_none_restores_a_derived_length():
 @pytest.mark.parametrize("depth, error, message", [
     (np.zeros((4, 5), bool), TypeError, "depth must be an integer or floating-point array, got dtype bool"),
     (np.zeros((4, 5), np.complex64), TypeError, "got dtype complex64"),
-    (np.zeros((4, 5, 2), np.uint16), ValueError, r"depth must have shape \(H, W\) or \(H, W, 1\), got \(4, 5, 2\)"),
+    (np.zeros((4, 5, 2), np.uint16), ValueError,
+     r"depth must have shape \(H, W\) or \(H, W, 1\), got \(4, 5, 2\)"),
     (np.zeros((4,), np.uint16), ValueError, r"got \(4,\)"),
     (np.array([[1, 2], [3, -4]], np.int16), ValueError, "depth must not be negative, got -4 at row 1, column 1"),
-    (np.array([[1, 2], [-0.25, 4]], np.float32), ValueError, "depth must not be negative, got -0.25 at row 1, column 0"),
+    (np.array([[1, 2], [-0.25, 4]], np.float32), ValueError,
+     "depth must not be negative, got -0.25 at row 1, column 0"),
     (None, TypeError, "got NoneType"),
 ])
 def test_refuses_bad_depth_images(depth, error, message):
