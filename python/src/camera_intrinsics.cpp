@@ -4,6 +4,7 @@
 
 #include <pybind11/numpy.h>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdio>
@@ -18,8 +19,8 @@ namespace {
 namespace py = pybind11;
 
 const char* const kForms =
-    "fx, fy, cx, cy (four numbers or one sequence of them), a 3 x 3 matrix K, or an object with "
-    "intrinsic_matrix (Open3D's PinholeCameraIntrinsic)";
+    "fx, fy, cx, cy (four numbers or one sequence of them), a 3 x 3 matrix K (or its 9 values), or an object "
+    "with intrinsic_matrix (Open3D's PinholeCameraIntrinsic)";
 
 std::string number(double value) {
   char text[32];
@@ -134,8 +135,15 @@ Intrinsics intrinsicsFrom(py::handle intrinsics, const std::string& function) {
   if (values.ndim() != 1) {
     raiseValueError(where + " must be (fx, fy, cx, cy) or a 3 x 3 matrix K, got shape " + shapeText(values));
   }
+  // K's nine values row by row: ROS's CameraInfo.k (K in ROS 1).
+  if (values.shape(0) == 9) {
+    py::array_t<double> matrix({py::ssize_t{3}, py::ssize_t{3}});
+    std::copy_n(values.data(), 9, matrix.mutable_data());
+    return fromMatrix(matrix, where);
+  }
   if (values.shape(0) != 4) {
-    raiseValueError(where + " must be (fx, fy, cx, cy), got " + std::to_string(values.shape(0)) + " values");
+    raiseValueError(where + " must be (fx, fy, cx, cy) or the 9 values of K, got " + std::to_string(values.shape(0)) +
+                    " values");
   }
   Intrinsics out;
   out.fx = values.at(0);

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A depth camera's pinhole intrinsics in every form Python users hold them: four numbers
-// fx, fy, cx, cy; a 3 x 3 matrix K (OpenCV, ROS CameraInfo.K, RealSense); or any object
+// fx, fy, cx, cy; a 3 x 3 matrix K (OpenCV, RealSense) or its nine values row by row (ROS's
+// CameraInfo.k); or any object
 // with an `intrinsic_matrix` (Open3D's PinholeCameraIntrinsic), whose width and height, when
 // it has them, must then be the image's.
 

@@ -192,7 +192,8 @@ void bindFileFunctions(py::module_& m) {
         "(H, W) or (H, W, 1), of integer units (Kinect, RealSense, ROS 16UC1: millimetres) or floating point "
         "(Open3D's depth images, ROS 32FC1: metres); depth_scale is units per metre, by default 1000 for "
         "integers and 1 for floats. A depth of 0 (and a NaN or infinite one) is no return: NaN. intrinsics: "
-        "fx, fy, cx, cy [pixels], a sequence of those four, a 3 x 3 matrix K, or an object with "
+        "fx, fy, cx, cy [pixels], a sequence of those four, a 3 x 3 matrix K (or its 9 values row by row, as "
+        "ROS's CameraInfo.k), or an object with "
         "intrinsic_matrix such as Open3D's PinholeCameraIntrinsic (whose width and height must then be the "
         "image's). The same points as pcd_segment gives a depth PNG.");
   m.def("_pinhole", &pinholeTuple, py::arg("intrinsics"), py::arg("function"),

@@ -238,7 +238,7 @@ def test_segment_file_names_the_input_or_output_that_failed(tmp_path):
     floodplane.write_depth_png(str(depth), np.full((4, 5), 1000, np.uint16))
     with pytest.raises(OSError, match="needs the camera's intrinsics"):
         segmenter.segment_file(str(depth), str(tmp_path / "out.pcd"))
-    with pytest.raises(ValueError, match=r"intrinsics must be \(fx, fy, cx, cy\), got 3 values"):
+    with pytest.raises(ValueError, match=r"must be \(fx, fy, cx, cy\) or the 9 values of K, got 3 values"):
         segmenter.segment_file(str(depth), str(tmp_path / "out.pcd"), intrinsics=(1.0, 2.0, 3.0))
     with pytest.raises(ValueError, match="fx must be"):
         segmenter.segment_file(str(depth), str(tmp_path / "out.pcd"), intrinsics=(0.0, 2.0, 3.0, 4.0))

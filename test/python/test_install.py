@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
-"""cmake --install puts a working package where Debian's python3 looks for it:
+"""cmake --install puts a working package, with its stubs, where Debian's python3 looks for it:
 under the default prefix on the interpreter's own path (no PYTHONPATH); under any other
 prefix in the folder the install names ("floodplane: the Python package is in ..."), which
 the README tells users to add to PYTHONPATH. Each run imports it with a clean environment
@@ -52,7 +52,7 @@ def clean_python(program, cwd, pythonpath=None):
 
 def assert_complete_package(folder):
     files = sorted(p.name for p in (folder / "floodplane").iterdir())
-    for name in ("__init__.py", "distributed.py"):
+    for name in ("__init__.py", "__init__.pyi", "py.typed", "distributed.py", "open3d.py"):
         assert name in files, files
     assert any(name.startswith("_floodplane") and name.endswith(".so") for name in files), files
 
