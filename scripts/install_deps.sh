@@ -19,6 +19,7 @@ packages=(
   python3 python3-dev pybind11-dev python3-pybind11  # the Python module (Debian's interpreter)
   python3-numpy python3-pytest                 # its arrays and its tests
   python3-dask python3-distributed             # floodplane.distributed and its test cluster
+  python3-open3d                               # floodplane.open3d's tests (Open3D 0.16's Python module)
 )
 
 missing=()

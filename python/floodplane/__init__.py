@@ -10,11 +10,17 @@
         print(plane.label, plane.normal, plane.d, plane.inliers)
 
 The keyword parameters are the fields of the C++ floodplane::Params (PARAMETER_NAMES); the
-lengths default to None, which derives them from each frame's measured noise. Depth images:
-segment_depth(), depth_to_points(), read_depth_png(). Many files on a cluster:
-floodplane.distributed.segment_files(). A stream of frames: Tracker().update(result) gives
-each plane an id that persists from frame to frame.
+lengths default to None, which derives them from each frame's measured noise. Points at
+exactly (0, 0, 0), the "no depth" of Open3D, RealSense and many ROS drivers, are holes like
+NaN ones (zero_is_hole=False segments them as points). Depth images, integer units or float
+metres, (H, W) or (H, W, 1): segment_depth(), depth_to_points(), read_depth_png(); their
+intrinsics as fx, fy, cx, cy, a 3 x 3 K or Open3D's PinholeCameraIntrinsic. Results pickle.
+Many files on a cluster: floodplane.distributed.segment_files(). A stream of frames:
+Tracker().update(result) gives each plane an id that persists from frame to frame. Open3D in
+and out: floodplane.open3d (imported on its own; it needs Open3D).
 """
+
+import numpy as _numpy
 
 from ._floodplane import (
     PARAMETER_NAMES,
@@ -27,6 +33,7 @@ from ._floodplane import (
     Track,
     Tracker,
     __version__,
+    _label_color_table,
     depth_to_points,
     read_depth_png,
     read_labels_pcd,
@@ -47,6 +54,7 @@ __all__ = [
     "Tracker",
     "__version__",
     "depth_to_points",
+    "label_colors",
     "read_depth_png",
     "read_labels_pcd",
     "read_pcd",
@@ -58,22 +66,40 @@ __all__ = [
 ]
 
 
-def segment(points, **params):
+def segment(points, *, zero_is_hole=True, **params):
     """Segments points, an (H, W, 3) float32 or float64 array in metres (camera at the origin,
-    NaN = no return), with a new Segmenter(**params). Returns a Segmentation. To segment a
-    sequence of frames, keep one Segmenter: it reuses its buffers."""
-    return Segmenter(**params).segment(points)
+    NaN = no return), with a new Segmenter(**params). Points at exactly (0, 0, 0) are no return
+    too unless zero_is_hole=False. Returns a Segmentation. To segment a sequence of frames,
+    keep one Segmenter: it reuses its buffers."""
+    return Segmenter(**params).segment(points, zero_is_hole=zero_is_hole)
 
 
-def segment_depth(depth, fx, fy, cx, cy, depth_scale=1000.0, **params):
-    """Segments a depth image: depth (H, W) of integer units, depth_scale units per metre
-    (1000: millimetres; 5000: the TUM RGB-D benchmark), 0 = no return, seen by a pinhole
-    camera fx, fy, cx, cy [pixels]. The same as segment(depth_to_points(...), **params)."""
-    return segment(depth_to_points(depth, fx, fy, cx, cy, depth_scale), **params)
+def segment_depth(depth, intrinsics, fy=None, cx=None, cy=None, depth_scale=None, **params):
+    """Segments a depth image: segment_depth(depth, fx, fy, cx, cy) or segment_depth(depth, K).
+    depth is (H, W) or (H, W, 1), integer units (millimetres: Kinect, RealSense, ROS 16UC1)
+    or float (metres: Open3D, ROS 32FC1); depth_scale is units per metre (default 1000 for
+    integers, 1 for floats; 5000 for the TUM RGB-D benchmark's PNG files); 0, NaN and
+    infinity are no return. intrinsics: fx, fy, cx, cy [pixels], a 3 x 3 matrix K or an Open3D
+    PinholeCameraIntrinsic. The same as segment(depth_to_points(...), **params)."""
+    return segment(depth_to_points(depth, intrinsics, fy, cx, cy, depth_scale), **params)
 
 
 def segment_file(input, output, *, intrinsics=None, depth_scale=1000.0, **params):
     """Segments the file `input` and writes its labelled cloud to `output`, as pcd_segment
-    does (the same bytes): a PCD file, or a 16-bit depth PNG with intrinsics=(fx, fy, cx, cy).
-    Returns {'width', 'height', 'planes', 'ms'}."""
+    does (the same bytes): a PCD file, or a 16-bit depth PNG with intrinsics ((fx, fy, cx, cy),
+    a 3 x 3 K or an Open3D PinholeCameraIntrinsic). Returns {'width', 'height', 'planes', 'ms'}."""
     return Segmenter(**params).segment_file(input, output, intrinsics=intrinsics, depth_scale=depth_scale)
+
+
+def label_colors(labels):
+    """The colour of each label as pcd_segment's PNG files show it: uint8 (..., 3), R G B, for
+    an integer array of labels (0, no plane, near-black). For pictures of result.labels, or of
+    Tracker.relabel's track ids."""
+    labels = _numpy.asarray(labels)
+    if labels.dtype.kind not in "ui":
+        raise TypeError(f"label_colors: labels must be an integer array, got dtype {labels.dtype}")
+    if labels.size and (labels.min() < 0 or labels.max() > 0xFFFFFFFF):
+        raise ValueError("label_colors: labels must be in [0, 4294967295], got values in "
+                         f"[{labels.min()}, {labels.max()}]")
+    values, inverse = _numpy.unique(labels, return_inverse=True)
+    return _label_color_table(values.astype(_numpy.uint32))[inverse].reshape(labels.shape + (3,))

@@ -18,6 +18,7 @@ import os
 import threading
 
 from . import Segmenter
+from ._floodplane import _pinhole
 
 __all__ = ["output_path", "segment_files"]
 
@@ -78,8 +79,9 @@ def _segment_batch(inputs, outputs, params, intrinsics, depth_scale):
 
 
 def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0, batch_size=4, **params):
-    """Segments every file of `paths` (PCD files, or 16-bit depth PNGs with
-    intrinsics=(fx, fy, cx, cy) and depth_scale units per metre) on the workers of `client`,
+    """Segments every file of `paths` (PCD files, or 16-bit depth PNGs with intrinsics:
+    (fx, fy, cx, cy), a 3 x 3 K or an Open3D PinholeCameraIntrinsic, whose image size is not
+    checked here, and depth_scale units per metre) on the workers of `client`,
     a dask.distributed.Client, writing out_dir/<name>.labels.pcd for each. Each task takes
     `batch_size` files, which keeps the scheduler's share of the work small.
 
@@ -93,9 +95,8 @@ def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0
     if isinstance(batch_size, bool) or not isinstance(batch_size, int) or batch_size < 1:
         raise ValueError(f"segment_files: batch_size must be an integer >= 1, got {batch_size!r}")
     if intrinsics is not None:
-        intrinsics = tuple(float(value) for value in intrinsics)
-        if len(intrinsics) != 4:
-            raise ValueError(f"segment_files: intrinsics must be (fx, fy, cx, cy), got {len(intrinsics)} values")
+        # Plain numbers travel to the workers (Open3D's intrinsics do not pickle).
+        intrinsics = _pinhole(intrinsics, "segment_files")
     given = [os.fspath(path) for path in paths]
     # Absolute paths: the workers' working directory need not be the caller's.
     inputs = [os.path.abspath(path) for path in given]

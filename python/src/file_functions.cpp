@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "camera_intrinsics.h"
 #include "errors.h"
+#include "params_kwargs.h"
 #include "io/depth_png.h"
 #include "io/input_frame.h"
 #include "io/pcd_file.h"
@@ -58,18 +60,29 @@ void writeFile(const std::string& function, const std::string& path, Write&& wri
   if (!error.empty()) raiseFileError(FileAccess::write, function, "path", path, error);
 }
 
-py::array_t<float> readPcd(const std::filesystem::path& file) {
+py::object readPcd(const std::filesystem::path& file, bool colors) {
   const std::string path = file.string();
   const io::InputFrame frame = readFile("read_pcd", path, [&] { return io::readPcdFrame(path); });
   const auto& cloud = frame.xyz;
-  py::array_t<float> points({py::ssize_t{cloud.height}, py::ssize_t{cloud.width}, py::ssize_t{3}});
+  const py::ssize_t height = cloud.height;
+  const py::ssize_t width = cloud.width;
+  py::array_t<float> points({height, width, py::ssize_t{3}});
   float* out = points.mutable_data();
   for (const pcl::PointXYZ& p : cloud) {
     *out++ = p.x;
     *out++ = p.y;
     *out++ = p.z;
   }
-  return points;
+  if (!colors) return std::move(points);
+  if (!frame.xyzrgb) return py::make_tuple(points, py::none());
+  py::array_t<std::uint8_t> rgb({height, width, py::ssize_t{3}});
+  std::uint8_t* channel = rgb.mutable_data();
+  for (const pcl::PointXYZRGB& p : *frame.xyzrgb) {
+    *channel++ = p.r;
+    *channel++ = p.g;
+    *channel++ = p.b;
+  }
+  return py::make_tuple(points, rgb);
 }
 
 py::array_t<std::uint32_t> readLabelsPcd(const std::filesystem::path& file) {
@@ -131,22 +144,35 @@ void writeDepthPng(const std::filesystem::path& file, py::handle depth) {
   }
 }
 
-py::array_t<float> depthToPoints(py::handle depth, double fx, double fy, double cx, double cy, double depth_scale) {
-  const io::DepthCamera camera{fx, fy, cx, cy, depth_scale};
-  const std::string problem = camera.problem();
-  if (!problem.empty()) raiseValueError("depth_to_points: " + problem);
-  return pointsFromDepth(depth, camera, "depth_to_points: depth");
+py::array_t<float> depthToPoints(py::handle depth, py::handle intrinsics, py::handle fy, py::handle cx, py::handle cy,
+                                 py::handle depth_scale) {
+  const std::string function = "depth_to_points";
+  const DepthArray image = depthArrayFrom(depth, function + ": depth");
+  const Intrinsics pinhole = intrinsicsFrom(intrinsics, fy, cx, cy, function);
+  pinhole.checkImageSize(image.array.shape(1), image.array.shape(0), function);
+  const double scale =
+      depth_scale.is_none() ? defaultDepthScale(image) : toDouble(depth_scale, function + ": depth_scale");
+  const io::DepthCamera camera = pinhole.camera(scale, function);
+  return pointsFromDepth(image, camera, function + ": depth");
+}
+
+// fx, fy, cx, cy of any form of intrinsics, for what must travel as plain numbers
+// (floodplane.distributed's tasks).
+py::tuple pinholeTuple(py::handle intrinsics, const std::string& function) {
+  const Intrinsics pinhole = intrinsicsFrom(intrinsics, function);
+  return py::make_tuple(pinhole.fx, pinhole.fy, pinhole.cx, pinhole.cy);
 }
 
 }  // namespace
 
 void bindFileFunctions(py::module_& m) {
-  m.def("read_pcd", &readPcd, py::arg("path"),
+  m.def("read_pcd", &readPcd, py::arg("path"), py::kw_only(), py::arg("colors") = false,
         "Reads an organized PCD file (x y z as float or double): float32 (H, W, 3) in the file's coordinates, "
-        "NaN where there is no return. segment() takes the sensor to be at the origin; a file whose VIEWPOINT "
-        "puts it elsewhere (rare for camera frames) needs that translation subtracted first, or segment_file(), "
-        "which applies it as pcd_segment does. Raises OSError (FileNotFoundError) for a file that cannot be read "
-        "as an organized cloud.");
+        "NaN where there is no return. With colors=True, a pair (points, colors): colors uint8 (H, W, 3), R G B "
+        "of the file's rgb or rgba field, or None when it has none. segment() takes the sensor to be at the "
+        "origin; a file whose VIEWPOINT puts it elsewhere (rare for camera frames) needs that translation "
+        "subtracted first, or segment_file(), which applies it as pcd_segment does. Raises OSError "
+        "(FileNotFoundError) for a file that cannot be read as an organized cloud.");
   m.def("read_labels_pcd", &readLabelsPcd, py::arg("path"),
         "Reads the uint32 label field of an organized PCD file (pcd_segment's and write_labels_pcd's outputs, "
         "pcd_synth's ground truth): uint32 (H, W). Raises OSError when there is none.");
@@ -159,11 +185,19 @@ void bindFileFunctions(py::module_& m) {
         "broken file or a PNG that is not a depth image (8-bit, colour, alpha).");
   m.def("write_depth_png", &writeDepthPng, py::arg("path"), py::arg("depth"),
         "Writes depth (H, W), integers in [0, 65535], as a 16-bit greyscale PNG, atomically.");
-  m.def("depth_to_points", &depthToPoints, py::arg("depth"), py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"),
-        py::arg("depth_scale") = 1000.0,
-        "Back-projects a depth image (H, W) of integer units (depth_scale units per metre; 0 = no return) "
-        "through the pinhole camera fx, fy, cx, cy [pixels]: float32 (H, W, 3), NaN where the depth is 0. "
-        "The same points as pcd_segment gives a depth PNG.");
+  m.def("depth_to_points", &depthToPoints, py::arg("depth"), py::arg("intrinsics"), py::arg("fy") = py::none(),
+        py::arg("cx") = py::none(), py::arg("cy") = py::none(), py::arg("depth_scale") = py::none(),
+        "depth_to_points(depth, fx, fy, cx, cy, depth_scale=None) or depth_to_points(depth, intrinsics, "
+        "depth_scale=None): back-projects a depth image through a pinhole camera: float32 (H, W, 3). depth is "
+        "(H, W) or (H, W, 1), of integer units (Kinect, RealSense, ROS 16UC1: millimetres) or floating point "
+        "(Open3D's depth images, ROS 32FC1: metres); depth_scale is units per metre, by default 1000 for "
+        "integers and 1 for floats. A depth of 0 (and a NaN or infinite one) is no return: NaN. intrinsics: "
+        "fx, fy, cx, cy [pixels], a sequence of those four, a 3 x 3 matrix K (or its 9 values row by row, as "
+        "ROS's CameraInfo.k), or an object with "
+        "intrinsic_matrix such as Open3D's PinholeCameraIntrinsic (whose width and height must then be the "
+        "image's). The same points as pcd_segment gives a depth PNG.");
+  m.def("_pinhole", &pinholeTuple, py::arg("intrinsics"), py::arg("function"),
+        "(fx, fy, cx, cy) of any form of intrinsics; `function` names the caller in messages.");
 }
 
 }  // namespace floodplane::python

@@ -3,6 +3,7 @@
 #include "file_segmentation.h"
 
 #include <chrono>
+#include <string>
 #include <cstdint>
 #include <vector>
 
@@ -40,13 +41,22 @@ PointGrid sensorFrameGrid(const pcl::PointCloud<pcl::PointXYZ>& cloud, std::vect
 }  // namespace
 
 FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const std::string& output,
-                        const std::optional<io::DepthCamera>& camera) {
+                        const std::optional<DepthInput>& depth) {
+  std::optional<io::DepthCamera> camera;
+  if (depth) camera = depth->camera;
   if (camera && !camera->problem().empty()) throw std::invalid_argument(camera->problem());
   io::InputFrame frame;
   try {
     frame = io::loadInputFrame(input, camera);
   } catch (const std::runtime_error& error) {
     throw InputFileError(error.what());
+  }
+  if (depth && depth->width && depth->height && io::isDepthImagePath(input) &&
+      (frame.xyz.width != static_cast<std::uint32_t>(*depth->width) ||
+       frame.xyz.height != static_cast<std::uint32_t>(*depth->height))) {
+    throw InputFileError("the depth image is " + std::to_string(frame.xyz.width) + " x " +
+                         std::to_string(frame.xyz.height) + ", the intrinsics are for " +
+                         std::to_string(*depth->width) + " x " + std::to_string(*depth->height) + " (width x height)");
   }
   std::vector<float> shifted;
   const PointGrid grid = sensorFrameGrid(frame.xyz, shifted);

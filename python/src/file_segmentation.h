@@ -21,6 +21,13 @@ struct FileSummary {
   double ms = 0.0;  ///< the segmentation call alone
 };
 
+/// How to read a depth image: its camera and, when known, the image size it was made for.
+struct DepthInput {
+  io::DepthCamera camera;
+  std::optional<int> width;
+  std::optional<int> height;
+};
+
 /// The input file cannot be read as a frame (the reason, without the path).
 struct InputFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -30,10 +37,11 @@ struct OutputFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Reads `input` (PCD, or a depth PNG with `camera`), segments it with `segmenter` and writes
-/// `output`. Plain C++ (no Python), so that it runs without the GIL. Throws InputFileError,
-/// OutputFileError, std::invalid_argument for a camera with a problem().
+/// Reads `input` (PCD, or a depth PNG with `depth`), segments it with `segmenter` and writes
+/// `output`. Plain C++ (no Python), so that it runs without the GIL. Throws InputFileError
+/// (also for a depth image of another size than `depth` was made for), OutputFileError,
+/// std::invalid_argument for a camera with a problem().
 FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const std::string& output,
-                        const std::optional<io::DepthCamera>& camera);
+                        const std::optional<DepthInput>& depth);
 
 }  // namespace floodplane::python

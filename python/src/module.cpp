@@ -8,6 +8,7 @@
 
 #include "file_functions.h"
 #include "floodplane/version.h"
+#include "label_colors.h"
 #include "params_kwargs.h"
 #include "segmentation_result.h"
 #include "segmenter_binding.h"
@@ -21,4 +22,5 @@ PYBIND11_MODULE(_floodplane, m) {
   floodplane::python::bindSegmenter(m);
   floodplane::python::bindTracker(m);
   floodplane::python::bindFileFunctions(m);
+  floodplane::python::bindLabelColors(m);
 }

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "result_pickling.h"
+
 namespace floodplane::python {
 namespace {
 
@@ -34,6 +36,7 @@ void bindNoiseModel(py::module_& m) {
       .def_readonly("estimated", &NoiseModel::estimated, "True: measured on the frame; False: from the parameters")
       .def("sigma", &NoiseModel::sigma, py::arg("range"), "The noise standard deviation [m] at `range` metres.")
       .def("step", &NoiseModel::step, py::arg("range"), "The depth step [m] at `range` metres.")
+      .def(py::pickle(&noiseState, &noiseFromState))
       .def("__repr__", [](const NoiseModel& n) {
         return "NoiseModel(sigma_constant=" + std::to_string(n.sigma_constant) +
                ", sigma_quadratic=" + std::to_string(n.sigma_quadratic) +
@@ -55,6 +58,7 @@ void bindPhaseTimes(py::module_& m) {
       .def_readonly("region_output", &PhaseTimes::region_output)
       .def_readonly("pcl_conversion", &PhaseTimes::pcl_conversion)
       .def_property_readonly("total", &PhaseTimes::total)
+      .def(py::pickle(&phasesState, &phasesFromState))
       .def("__repr__", [](const PhaseTimes& t) {
         return "PhaseTimes(preparation=" + fixed(t.preparation, 3) + ", seed_selection=" + fixed(t.seed_selection, 3) +
                ", flood_fill=" + fixed(t.flood_fill, 3) + ", relabelling=" + fixed(t.relabelling, 3) +
@@ -72,6 +76,7 @@ void bindStats(py::module_& m) {
       .def_readonly("merges", &SegmentationStats::merges, "merges by Eq. 9")
       .def_readonly("head_start", &SegmentationStats::head_start,
                     "the noise model was the previous frame's (Segmenter.segment(head_start=True)), not measured")
+      .def(py::pickle(&statsState, &statsFromState))
       .def("__repr__", [](const SegmentationStats& s) {
         return "SegmentationStats(seed_candidates=" + std::to_string(s.seed_candidates) +
                ", seeds=" + std::to_string(s.seeds) + ", pixels_taken_over=" + std::to_string(s.pixels_taken_over) +
@@ -110,6 +115,7 @@ void bindPlane(py::module_& m) {
       .def_property_readonly(
           "first_pixel", [](const PlaneResult& p) { return p.plane.first_pixel; },
           "its first pixel in raster order (row * W + column)")
+      .def(py::pickle(&planeState, &planeFromState))
       .def("__repr__", [](const PlaneResult& p) {
         const PlaneFit& f = p.plane.fit;
         return "Plane(label=" + std::to_string(p.label) + ", normal=[" + fixed(f.normal.x(), 4) + ", " +
@@ -156,7 +162,9 @@ void bindSegmentationResult(py::module_& m) {
   bindPhaseTimes(m);
   bindStats(m);
   bindPlane(m);
-  py::class_<SegmentationResult>(m, "Segmentation", "The planes found in one frame.")
+  py::class_<SegmentationResult>(m, "Segmentation",
+                                 "The planes found in one frame. Pickles (with its planes, labels, noise, stats), "
+                                 "so that Dask and multiprocessing can move it.")
       .def_property_readonly("labels", &labelsView,
                              "uint32 (H, W), read-only: 0 no plane, k = planes[k - 1] (largest first)")
       .def_property_readonly("planes", &planeList, "the planes, largest first (list of Plane)")
@@ -175,6 +183,7 @@ void bindSegmentationResult(py::module_& m) {
       .def("boundary", &boundary, py::arg("plane"),
            "The outer boundary of planes[plane]: pixel indices (row * W + column), clockwise on screen, "
            "8-connected, starting at the plane's first pixel.")
+      .def(py::pickle(&segmentationState, &segmentationFromState))
       .def("__repr__", [](const SegmentationResult& r) {
         const Segmentation& s = *r.segmentation;
         return "<floodplane.Segmentation " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +

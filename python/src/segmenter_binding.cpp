@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "camera_intrinsics.h"
 #include "errors.h"
 #include "file_segmentation.h"
 #include "floodplane/segmenter.h"
@@ -34,8 +35,8 @@ struct SharedSegmenter {
 };
 
 SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool refine, bool measure_phases,
-                                bool head_start) {
-  const GridArray input = gridFromArray(points, "Segmenter.segment: points");
+                                bool head_start, bool zero_is_hole) {
+  const GridArray input = gridFromArray(points, "Segmenter.segment: points", zero_is_hole);
   auto copy = std::make_shared<Segmentation>();
   SegmentationResult result;
   {
@@ -55,27 +56,16 @@ SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool r
   return result;
 }
 
-std::optional<io::DepthCamera> cameraFrom(const std::optional<std::vector<double>>& intrinsics, double depth_scale,
-                                          const std::string& function) {
-  if (!intrinsics) return std::nullopt;
-  if (intrinsics->size() != 4) {
-    raiseValueError(function + ": intrinsics must be (fx, fy, cx, cy), got " + std::to_string(intrinsics->size()) +
-                    " values");
-  }
-  const std::vector<double>& k = *intrinsics;
-  const io::DepthCamera camera{k[0], k[1], k[2], k[3], depth_scale};
-  const std::string problem = camera.problem();
-  if (!problem.empty()) raiseValueError(function + ": " + problem);
-  return camera;
-}
-
 py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& input_file,
-                            const std::filesystem::path& output_file,
-                            const std::optional<std::vector<double>>& intrinsics, double depth_scale) {
+                            const std::filesystem::path& output_file, py::handle intrinsics, double depth_scale) {
   const std::string input = input_file.string();
   const std::string output = output_file.string();
   const std::string function = "Segmenter.segment_file";
-  const std::optional<io::DepthCamera> camera = cameraFrom(intrinsics, depth_scale, function);
+  std::optional<DepthInput> depth;
+  if (!intrinsics.is_none()) {
+    const Intrinsics pinhole = intrinsicsFrom(intrinsics, function);
+    depth = DepthInput{pinhole.camera(depth_scale, function), pinhole.width, pinhole.height};
+  }
   FileSummary summary;
   std::string read_error;
   std::string write_error;
@@ -83,7 +73,7 @@ py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& 
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(self.mutex);
     try {
-      summary = segmentFile(self.core, input, output, camera);
+      summary = segmentFile(self.core, input, output, depth);
     } catch (const OutputFileError& error) {
       write_error = error.what();
     } catch (const InputFileError& error) {
@@ -113,12 +103,14 @@ std::string segmenterRepr(const SharedSegmenter& self) {
 }  // namespace
 
 void bindSegmenter(py::module_& m) {
-  py::class_<SharedSegmenter>(m, "Segmenter",
-                              "Plane segmentation of organized point clouds by seeded flood fill. The keywords are "
-                              "the fields of floodplane::Params; None (the default of the lengths) derives a "
-                              "value from the frame's noise. Keeps its buffers between calls: reuse one for a "
-                              "sequence of frames. Thread-safe (calls on one Segmenter take turns; use one per "
-                              "thread to run in parallel); the GIL is released while it segments.")
+  py::class_<SharedSegmenter>(
+      m, "Segmenter",
+      "Plane segmentation of organized point clouds by seeded flood fill. The keywords are "
+      "the fields of floodplane::Params; None (the default of the lengths) derives a "
+      "value from the frame's noise. Keeps its buffers between calls: reuse one for a "
+      "sequence of frames. Thread-safe (calls on one Segmenter take turns; use one per "
+      "thread to run in parallel); the GIL is released while it segments. Pickles as its parameters: a "
+      "copy starts cold (new buffers, no head start).")
       .def(py::init([](const py::kwargs& keywords) {
              return std::make_unique<SharedSegmenter>(paramsFromKeywords(keywords, "Segmenter"));
            }),
@@ -128,19 +120,26 @@ void bindSegmenter(py::module_& m) {
           "params", [](const SharedSegmenter& self) { return paramsToDict(self.core.params()); },
           "every parameter as a dict (None: derived from the frame)")
       .def("segment", &segmentArray, py::arg("points"), py::kw_only(), py::arg("refine") = true,
-           py::arg("measure_phases") = false, py::arg("head_start") = false,
+           py::arg("measure_phases") = false, py::arg("head_start") = false, py::arg("zero_is_hole") = true,
            "Segments `points`, an (H, W, 3) float32 or float64 array in metres with the camera at the origin "
-           "(NaN: no return). Read in place when float32 with x y z adjacent, converted otherwise. `refine` grows "
-           "the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the result's "
-           "phases; `head_start` continues from the last frame this Segmenter segmented (a stream from one "
-           "sensor): its noise model is taken again instead of measured (anew every 30 frames); a cold start on "
-           "the first frame, after a size change or a failed call. Returns a Segmentation.")
+           "(NaN: no return). Read in place when float32 with x y z adjacent, converted otherwise. `zero_is_hole` "
+           "takes points at exactly (0, 0, 0), the \"no depth\" of Open3D, RealSense and many ROS drivers, for "
+           "no return as NaN is (in a copy; the array is not changed); False segments them as points. `refine` "
+           "grows the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the "
+           "result's phases; `head_start` continues from the last frame this Segmenter segmented (a stream from "
+           "one sensor): its noise model is taken again instead of measured (anew every 30 frames); a cold start "
+           "on the first frame, after a size change or a failed call. Returns a Segmentation.")
       .def("segment_file", &segmentFileSummary, py::arg("input"), py::arg("output"), py::kw_only(),
            py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0,
            "Segments the file `input` and writes its labelled cloud to `output` as pcd_segment does (the same "
-           "bytes). `input` is a PCD file, or a 16-bit depth PNG with intrinsics=(fx, fy, cx, cy) and depth_scale "
+           "bytes). `input` is a PCD file, or a 16-bit depth PNG with intrinsics ((fx, fy, cx, cy), a 3 x 3 K "
+           "or Open3D's PinholeCameraIntrinsic, whose width and height must be the image's) and depth_scale "
            "(units per metre). Returns {'width', 'height', 'planes', 'ms'}. Raises OSError for a file that cannot "
            "be read or written.")
+      .def(py::pickle([](const SharedSegmenter& self) { return paramsToDict(self.core.params()); },
+                      [](const py::dict& params) {
+                        return std::make_unique<SharedSegmenter>(paramsFromKeywords(params, "Segmenter"));
+                      }))
       .def("__repr__", &segmenterRepr);
 }
 

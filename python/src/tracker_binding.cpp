@@ -20,6 +20,7 @@
 #include "floodplane/plane_tracker.h"
 #include "params_kwargs.h"
 #include "point_arrays.h"
+#include "result_pickling.h"
 #include "segmentation_result.h"
 
 namespace floodplane::python {
@@ -211,6 +212,7 @@ void bindTrack(py::module_& m) {
       .def_property_readonly(
           "best_centroid", [](const PlaneTrack& t) -> Eigen::Vector3d { return t.best_centroid; },
           "mean of its inliers where it had the most (3,) [m]")
+      .def(py::pickle(&trackState, &trackFromState))
       .def("__repr__", [](const PlaneTrack& t) {
         return "Track(id=" + std::to_string(t.id) + ", first_frame=" + std::to_string(t.first_frame) +
                ", last_frame=" + std::to_string(t.last_frame) + ", frames_seen=" + std::to_string(t.frames_seen) +

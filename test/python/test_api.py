@@ -287,3 +287,23 @@ def test_a_head_start_continues_from_the_previous_frame(scene):
     assert np.mean(second.labels == cold.labels) > 0.99
     # Another size: a cold start.
     assert not segmenter.segment(frames[1][:100], head_start=True).stats.head_start
+
+
+def test_label_colors_are_the_pngs_colours_for_any_integer_labels():
+    labels = floodplane.segment(two_plane_scene()).labels
+    colors = floodplane.label_colors(labels)
+    assert colors.dtype == np.uint8 and colors.shape == labels.shape + (3,)
+    # One colour per label, the same wherever it appears, and label 0 (no plane) near-black.
+    for label in (0, 1, 2):
+        assert len(np.unique(colors[labels == label], axis=0)) == 1
+    assert colors[labels == 0].max() < 40
+    many = floodplane.label_colors(np.arange(1, 61))
+    assert len(np.unique(many, axis=0)) == 60
+    # Any integer dtype, any shape, large track ids too; the same label, the same colour.
+    np.testing.assert_array_equal(floodplane.label_colors(labels.astype(np.int64)), colors)
+    np.testing.assert_array_equal(floodplane.label_colors([[5, 4_000_000_000]])[0, 0], many[4])
+    assert floodplane.label_colors(np.zeros((0,), np.uint8)).shape == (0, 3)
+    with pytest.raises(TypeError, match="labels must be an integer array, got dtype float64"):
+        floodplane.label_colors([1.0, 2.0])
+    with pytest.raises(ValueError, match=r"labels must be in \[0, 4294967295\]"):
+        floodplane.label_colors([-1, 2])

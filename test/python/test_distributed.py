@@ -147,3 +147,42 @@ def test_output_path_is_pcd_segments_name():
     assert floodplane.distributed.output_path("/a/b/scan.pcd", "/o") == "/o/scan.labels.pcd"
     assert floodplane.distributed.output_path("1305031102.160407.png", "o") == "o/1305031102.160407.labels.pcd"
     assert floodplane.distributed.output_path("notes.txt", "o") == "o/notes.txt.labels.pcd"
+
+
+def _plane_count_and_labels_sum(segmenter, result):
+    return len(segmenter.segment(two_plane_scene()).planes), int(result.labels.sum())
+
+
+def test_results_and_segmenters_travel_between_client_and_workers(client):
+    points = two_plane_scene()
+    local = floodplane.segment(points)
+    # A result made on a worker comes back whole (pickled by the worker, unpickled here).
+    remote = client.submit(floodplane.segment, points, pure=False).result()
+    assert type(remote) is floodplane.Segmentation
+    np.testing.assert_array_equal(remote.labels, local.labels)
+    assert [(p.label, p.inliers, p.d) for p in remote.planes] == [(p.label, p.inliers, p.d) for p in local.planes]
+    for a, b in zip(remote.planes, local.planes):
+        np.testing.assert_array_equal(a.normal, b.normal)
+    assert remote.noise.patches == local.noise.patches
+    # A Segmenter and a result sent to a worker arrive intact.
+    planes, labels_sum = client.submit(_plane_count_and_labels_sum, floodplane.Segmenter(min_inliers=10**6), local,
+                                       pure=False).result()
+    assert planes == 0 and labels_sum == int(local.labels.sum())
+    # Many frames at once, as users map over their own arrays.
+    frames = [two_plane_scene() + np.float32(0.01 * i) for i in range(4)]
+    results = client.gather(client.map(floodplane.segment, frames, pure=False))
+    assert [len(r.planes) for r in results] == [2, 2, 2, 2]
+
+
+def test_depth_pngs_with_a_camera_matrix(tmp_path, client):
+    depth = np.nan_to_num(np.round(two_plane_scene()[..., 2] * 1000)).astype(np.uint16)
+    path = tmp_path / "depth.png"
+    floodplane.write_depth_png(str(path), depth)
+    K = [[131.25, 0, 79.5], [0, 131.25, 59.5], [0, 0, 1]]
+    result, = floodplane.distributed.segment_files(client, [path], tmp_path / "out", intrinsics=np.array(K))
+    assert "error" not in result, result
+    np.testing.assert_array_equal(floodplane.read_labels_pcd(result["output"]),
+                                  floodplane.segment_depth(depth, K).labels)
+    skewed = [[1, 1, 0], [0, 1, 0], [0, 0, 1]]
+    with pytest.raises(ValueError, match="segment_files: intrinsics must be a pinhole camera matrix"):
+        floodplane.distributed.segment_files(client, [path], tmp_path / "out", intrinsics=skewed)

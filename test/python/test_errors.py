@@ -101,10 +101,14 @@ def test_none_restores_a_derived_length():
 
 
 @pytest.mark.parametrize("depth, error, message", [
-    (np.zeros((4, 5), np.float32), TypeError, "depth must be an integer array, got dtype float32"),
-    (np.zeros((4, 5), bool), TypeError, "got dtype bool"),
-    (np.zeros((4, 5, 1), np.uint16), ValueError, r"depth must have shape \(H, W\), got \(4, 5, 1\)"),
+    (np.zeros((4, 5), bool), TypeError, "depth must be an integer or floating-point array, got dtype bool"),
+    (np.zeros((4, 5), np.complex64), TypeError, "got dtype complex64"),
+    (np.zeros((4, 5, 2), np.uint16), ValueError,
+     r"depth must have shape \(H, W\) or \(H, W, 1\), got \(4, 5, 2\)"),
+    (np.zeros((4,), np.uint16), ValueError, r"got \(4,\)"),
     (np.array([[1, 2], [3, -4]], np.int16), ValueError, "depth must not be negative, got -4 at row 1, column 1"),
+    (np.array([[1, 2], [-0.25, 4]], np.float32), ValueError,
+     "depth must not be negative, got -0.25 at row 1, column 0"),
     (None, TypeError, "got NoneType"),
 ])
 def test_refuses_bad_depth_images(depth, error, message):
@@ -234,7 +238,7 @@ def test_segment_file_names_the_input_or_output_that_failed(tmp_path):
     floodplane.write_depth_png(str(depth), np.full((4, 5), 1000, np.uint16))
     with pytest.raises(OSError, match="needs the camera's intrinsics"):
         segmenter.segment_file(str(depth), str(tmp_path / "out.pcd"))
-    with pytest.raises(ValueError, match=r"intrinsics must be \(fx, fy, cx, cy\), got 3 values"):
+    with pytest.raises(ValueError, match=r"must be \(fx, fy, cx, cy\) or the 9 values of K, got 3 values"):
         segmenter.segment_file(str(depth), str(tmp_path / "out.pcd"), intrinsics=(1.0, 2.0, 3.0))
     with pytest.raises(ValueError, match="fx must be"):
         segmenter.segment_file(str(depth), str(tmp_path / "out.pcd"), intrinsics=(0.0, 2.0, 3.0, 4.0))

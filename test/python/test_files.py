@@ -147,3 +147,49 @@ def test_non_default_parameters_give_pcd_segments_labels(tmp_path, pcd_segment):
     labels = floodplane.segment(floodplane.read_pcd(str(frames[0])), distance_threshold=0.02, subsampling=2,
                                 min_inliers=500, angular_threshold=0.15).labels
     np.testing.assert_array_equal(labels, expected)
+
+
+def _write_coloured_pcd(path, points, colors, field):
+    """An organized ASCII PCD file with x y z and a packed colour `field` (rgb or rgba) declared
+    as a 32-bit unsigned integer, as non-PCL writers declare it."""
+    height, width = points.shape[:2]
+    packed = (colors[..., 0].astype(np.uint32) << 16) | (colors[..., 1].astype(np.uint32) << 8) | colors[..., 2]
+    if field == "rgba":
+        packed |= np.uint32(0xFF000000)
+    lines = [f"{x!r} {y!r} {z!r} {c}" for (x, y, z), c in zip(points.reshape(-1, 3).tolist(), packed.ravel())]
+    header = (f"VERSION 0.7\nFIELDS x y z {field}\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\nWIDTH {width}\n"
+              f"HEIGHT {height}\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS {width * height}\nDATA ascii\n")
+    path.write_text(header + "\n".join(lines) + "\n")
+
+
+@pytest.mark.parametrize("field", ["rgb", "rgba"])
+def test_read_pcd_keeps_colour_on_request(tmp_path, field):
+    points = two_plane_scene(16, 12)
+    rng = np.random.default_rng(3)
+    colors = rng.integers(0, 256, points.shape, dtype=np.uint8)
+    path = tmp_path / f"{field}.pcd"
+    _write_coloured_pcd(path, points, colors, field)
+    read_points, read_colors = floodplane.read_pcd(str(path), colors=True)
+    np.testing.assert_array_equal(read_points, points)
+    assert read_colors.dtype == np.uint8 and read_colors.shape == (12, 16, 3)
+    np.testing.assert_array_equal(read_colors, colors)
+    # Without the keyword, the points alone, as before.
+    np.testing.assert_array_equal(floodplane.read_pcd(str(path)), points)
+
+
+def test_read_pcd_gives_no_colours_for_a_file_without_them(tmp_path):
+    path = tmp_path / "plain.pcd"
+    floodplane.write_labels_pcd(str(path), two_plane_scene(8, 6), np.zeros((6, 8), np.uint32))
+    points, colors = floodplane.read_pcd(str(path), colors=True)
+    assert points.shape == (6, 8, 3) and colors is None
+
+
+def test_pcd_segment_keeps_the_colours_read_pcd_reads(tmp_path, pcd_segment):
+    points = two_plane_scene(40, 30)
+    colors = np.random.default_rng(5).integers(0, 256, points.shape, dtype=np.uint8)
+    path = tmp_path / "coloured.pcd"
+    _write_coloured_pcd(path, points, colors, "rgb")
+    output = tmp_path / "coloured.labels.pcd"
+    completed = pcd_segment(path, "-o", output)
+    assert completed.returncode == 0, completed.stderr
+    np.testing.assert_array_equal(floodplane.read_pcd(str(output), colors=True)[1], colors)
