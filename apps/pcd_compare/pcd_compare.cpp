@@ -273,7 +273,7 @@ constexpr const char* kDescription =
 
 void addOptions(CLI::App& app, Options& options) {
   // No existence check here: a missing file is reported with the others, and the batch goes on.
-  app.add_option("inputs", options.inputs, "PCD files, or directories (their *.pcd files, sorted)")->required();
+  app.add_option("INPUT", options.inputs, "PCD files, or directories (their *.pcd files, sorted)")->required();
   // One comma-separated token: without allow_extra_args(false) the option would also swallow
   // the INPUTs that follow it ("--methods omps scene.pcd").
   app.add_option("--methods", options.methods, "Methods to run, comma-separated")

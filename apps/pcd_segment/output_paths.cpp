@@ -5,22 +5,13 @@
 #include <filesystem>
 
 namespace pcd_segment {
-namespace {
 
 namespace fs = std::filesystem;
-
-bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-}  // namespace
 
 std::string outputName(const std::string& input_path) {
   const fs::path path(input_path);
   return path.extension() == ".pcd" || path.extension() == ".png" ? path.stem().string() : path.filename().string();
 }
-
-bool namesPcdFile(const std::string& output) { return endsWith(output, ".pcd"); }
 
 OutputPaths outputPaths(const std::string& input_path, const std::string& output, bool single_file) {
   if (single_file) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "common/cli.h"
+#include "common/output_target.h"
 #include "io/atomic_file.h"
 #include "io/label_palette.h"
 #include "io/pcd_file.h"
@@ -448,7 +449,10 @@ int main(int argc, char** argv) {
   floodplane::apps::addVersionFlag(app);
   // No existence check here: a missing file is reported with the others at the end.
   app.add_option("scenes", options.scene_files, "Scene files to render");
-  app.add_option("-o,--output-dir", options.output_dir, "Directory for the outputs (created if missing)")->required();
+  app.add_option("-o,--output-dir", options.output_dir,
+                 "Directory for the outputs (created if missing). A name with an extension (scenes.pcd) is "
+                 "refused unless the directory exists or the name ends in /")
+      ->required();
   app.add_option("--random", options.random_count,
                  "Render N generated scenes, seeds S to S + N - 1, instead of scene files")
       ->check(CLI::Range(1, kMaxRandomScenes));
@@ -525,6 +529,12 @@ int main(int argc, char** argv) {
   }
   if (const std::string problem = quirkInconsistency(options); !problem.empty())
     return floodplane::apps::usageError(app, problem);
+  try {
+    floodplane::apps::outputKind("-o", options.output_dir, {},
+                                 "-o names a directory: pcd_synth writes several files per scene");
+  } catch (const std::invalid_argument& error) {
+    return floodplane::apps::usageError(app, error.what());
+  }
 
   try {
     fs::create_directories(options.output_dir);

@@ -578,39 +578,70 @@ TEST_F(PcdSegment, RejectsACloudWithoutXyz) {
   expectRejected(path("normals.pcd").string(), "no x y z");
 }
 
-TEST_F(PcdSegment, RejectsBadOptionValuesWithUsageAndExitCodeTwo) {
+// One line naming the flag, not the library's field or setter, and not the whole help.
+TEST_F(PcdSegment, RejectsBadOptionValuesInOneLineNamingTheFlag) {
   const std::string input = writeScene("scene.pcd");
-  const std::vector<std::vector<std::string>> bad = {{"--distance-threshold", "-0.01"},
-                                                     {"--seed-size", "0"},
-                                                     {"--angular-threshold", "2"},
-                                                     {"--merge-distance", "nan"},
-                                                     {"--subsample", "3"},
-                                                     {"--min-inliers", "-4"},
-                                                     {"--seed-size", "abc"},
-                                                     {"--depth-noise-coefficient", "-1"},
-                                                     {"--jobs", "0"},
-                                                     {"-j", "many"},
-                                                     {"--no-such-option"}};
-  for (const auto& option : bad) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+      {{"--distance-threshold", "-0.01"}, "--distance-threshold must be"},
+      {{"--seed-size", "0"}, "--seed-size must be"},
+      {{"--angular-threshold", "2"}, "--angular-threshold must be"},
+      {{"--merge-distance", "nan"}, "--merge-distance must be"},
+      {{"--subsample", "3"}, "--subsample must be 1, 2, 4 or 8, got 3"},
+      {{"--min-inliers", "-4"}, "--min-inliers"},
+      {{"--maximum-curvature", "-1"}, "--maximum-curvature must be"},
+      {{"--seed-size", "abc"}, "--seed-size"},
+      {{"--depth-noise-coefficient", "-1"}, "--depth-noise-coefficient must be"},
+      {{"--depth-noise-constant", "-1"}, "--depth-noise-constant must be"},
+      {{"--jobs", "0"}, "--jobs"},
+      {{"-j", "many"}, "--jobs"},
+      {{"--no-such-option"}, "--no-such-option"}};
+  for (const auto& [option, message] : bad) {
     std::vector<std::string> arguments = {input, "-o", path("out").string()};
     arguments.insert(arguments.end(), option.begin(), option.end());
     SCOPED_TRACE(option[0]);
     const Result result = run(arguments);
-    EXPECT_EQ(result.exit_code, 2) << result.err;
-    EXPECT_TRUE(contains(result.err, "error")) << result.err;
-    EXPECT_TRUE(contains(result.err, "Usage:")) << result.err;
+    expectUsageError(result, "pcd_segment", message);
+    for (const std::string library_name : {"subsampling", "setSubsampling", "seed_size", "floodplane::"}) {
+      EXPECT_FALSE(contains(result.err, library_name)) << result.err;
+    }
     EXPECT_FALSE(fs::exists(path("out"))) << "nothing is written after a usage error";
   }
-  // The library's message names the setter that refused the value.
-  const Result subsample = run({input, "-o", path("out").string(), "--subsample", "3"});
-  EXPECT_TRUE(contains(subsample.err, "setSubsampling")) << subsample.err;
+  expectUsageError(run({input}), "pcd_segment", "--output is required");
+  expectUsageError(run({"-o", path("out").string()}), "pcd_segment", "INPUT is required");
 }
 
 TEST_F(PcdSegment, RefusesASinglePcdOutputForSeveralInputs) {
   const Result result = run({writeScene("a.pcd"), writeScene("b.pcd"), "-o", path("both.pcd").string()});
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(contains(result.err, "2 inputs")) << result.err;
+  expectUsageError(result, "pcd_segment", "2 inputs");
   EXPECT_FALSE(fs::exists(path("both.pcd")));
+  // A folder is several inputs when it holds several files.
+  fs::create_directory(path("in"));
+  writeScene("in/a.pcd");
+  writeScene("in/b.pcd");
+  expectUsageError(run({path("in").string(), "-o", path("both.pcd").string()}), "pcd_segment", "2 inputs");
+  EXPECT_FALSE(fs::exists(path("both.pcd")));
+}
+
+// -o is a file when it ends in .pcd, a directory when it ends in / or has no extension or
+// exists as one; any other extension is refused rather than made a directory of that name.
+TEST_F(PcdSegment, OutputIsAPcdFileOrADirectoryAndNothingElse) {
+  const std::string input = writeScene("scene.pcd");
+  for (const std::string refused : {"o/x.txt", "o/x.png", "o/x.json", "o/results.v2"}) {
+    SCOPED_TRACE(refused);
+    expectUsageError(run({input, "-o", path(refused).string()}), "pcd_segment",
+                     "-o " + path(refused).string() + " looks like a");
+    EXPECT_FALSE(fs::exists(path("o")));
+  }
+  ASSERT_EQ(run({input, "-o", path("o/x.pcd").string(), "--png"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/x.pcd")));
+  EXPECT_TRUE(fs::is_regular_file(path("o/x.png")));
+  ASSERT_EQ(run({input, "-o", path("o/results.v2").string() + "/"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/results.v2/scene.labels.pcd")));
+  // An existing directory stays a directory, whatever its name.
+  ASSERT_EQ(run({input, "-o", path("o/results.v2").string(), "--json"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/results.v2/scene.planes.json")));
+  ASSERT_EQ(run({input, "-o", path("o/plain").string()}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/plain/scene.labels.pcd")));
 }
 
 TEST_F(PcdSegment, HelpShowsTheLibraryDefaultsAndVersionPrintsTheVersion) {
