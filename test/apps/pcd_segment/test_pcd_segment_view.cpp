@@ -255,19 +255,26 @@ TEST_F(PcdSegmentView, ObliqueSnapshotShowsThePlanesWithTheirArrowsTheSameEveryT
   EXPECT_TRUE(readFile(path("first.png")) == readFile(path("second.png")));
 }
 
-// A batch writes <name>.snapshot.png for each input beside its other outputs.
+// A batch writes <name>.snapshot.png for each input beside its other outputs, the same drawn
+// one input at a time as several at once (on whichever thread reports an input).
 TEST_F(PcdSegmentView, BatchWritesASnapshotPerInputInTheOutputDirectory) {
   fs::create_directories(path("in"));
   fs::copy_file(kScene, path("in/a.pcd"));
   fs::copy_file(std::string(FLOODPLANE_RENDERED_DIR) + "/staircase.kinect.pcd", path("in/b.pcd"));
-  const Result result = runWithDisplay(
-      {path("in").string(), "-o", path("out").string(), "--quiet", "--snapshot", "--snapshot-size", "160x120"});
+  fs::copy_file(kScene, path("in/c.pcd"));
+  const Result result = runWithDisplay({path("in").string(), "-o", path("out").string(), "--quiet", "--snapshot",
+                                        "--snapshot-size", "160x120", "-j", "3"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  for (const std::string name : {"a", "b"}) {
+  const Result serial = runWithDisplay({path("in").string(), "-o", path("serial").string(), "--quiet", "--snapshot",
+                                        "--snapshot-size", "160x120", "-j", "1"});
+  ASSERT_EQ(serial.exit_code, 0) << serial.err;
+  for (const std::string name : {"a", "b", "c"}) {
     const floodplane::io::RgbImage image = readPng(path("out/" + name + ".snapshot.png"));
     EXPECT_EQ(image.width, 160u);
     EXPECT_EQ(image.height, 120u);
     EXPECT_GT(colourCounts(image).size(), 3u) << name << ": not a blank image";
+    EXPECT_TRUE(readFile(path("out/" + name + ".snapshot.png")) == readFile(path("serial/" + name + ".snapshot.png")))
+        << name;
   }
   // A single output file: the snapshot takes its stem.
   ASSERT_EQ(runWithDisplay({kScene, "-o", path("one/scene.pcd").string(), "--snapshot", "--snapshot-size", "64x48"})
