@@ -8,6 +8,7 @@
 #include <pcl/console/print.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <exception>
@@ -66,6 +67,7 @@ struct Options {
   std::optional<floodplane::io::DepthCamera> camera;  ///< from `depth`, when given
   bool ascii = false;
   bool png = false;
+  bool overlay = false;
   bool json = false;
   bool quiet = false;
   bool track = false;                          ///< the inputs are one sequence; labels are track ids
@@ -95,7 +97,14 @@ void addInputOutputOptions(CLI::App& app, Options& options) {
 
 void addOutputFlags(CLI::App& app, Options& options) {
   app.add_flag("--ascii", options.ascii, "Write the label PCD as text (default: binary compressed)");
-  app.add_flag("--png", options.png, "Also write <name>.labels.png (a colour per plane)");
+  app.add_flag("--png", options.png,
+               "Also write <name>.labels.png, a pixel per point: each plane in a colour of its own (label k always "
+               "the same colour), near-black where a point is on no plane, white where there is no point (no "
+               "depth)");
+  app.add_flag("--overlay", options.overlay,
+               "Also write <name>.overlay.png: the input's own colours (its rgb field) with each plane's colour "
+               "blended half over its pixels, white where there is no point. An input without colour (no rgb "
+               "field) gets a note instead; depth images have none");
   app.add_flag("--json", options.json, "Also write <name>.planes.json (planes, parameters, time)");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
   app.add_flag("--track", options.track,
@@ -220,6 +229,7 @@ struct FileResult {
   std::size_t width = 0;
   std::size_t height = 0;
   std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
+  std::string note;                                   ///< said on stderr unless --quiet: an output not written
 };
 
 // Reads, segments and writes one input, the index-th; throws std::runtime_error saying what
@@ -252,13 +262,21 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
     pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
                                options.ascii);
   }
+  const std::vector<std::uint8_t> has_point = floodplane::io::finitePoints(*points);
   if (options.png) {
-    floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, points->width, points->height));
+    floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, has_point, points->width, points->height));
+  }
+  FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}, {}};
+  if (options.overlay) {
+    if (const std::optional<floodplane::io::RgbImage> colours = floodplane::io::frameColours(frame)) {
+      floodplane::io::writePng(paths.overlay, floodplane::io::overlayImage(labels, has_point, *colours));
+    } else {
+      result.note = "no colour (rgb field) to lay the labels over: " + paths.overlay + " not written";
+    }
   }
   if (options.json) {
     writeReport(paths.json, input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds());
   }
-  FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}};
   if (options.snapshot || options.view) {
     result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients,
                                            segmentation.getTrackIds());
@@ -367,6 +385,9 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       try {
         writeSnapshotOf(item.paths, *outcome.result, options);
         if (!options.quiet) printResult(item.file->path, *outcome.result, item.paths.pcd);
+        if (!options.quiet && !outcome.result->note.empty()) {
+          std::cerr << "pcd_segment: note: " << item.file->path << ": " << outcome.result->note << "\n";
+        }
         if (options.view && outcome.result->scene) {
           floodplane::view::showWindow(*outcome.result->scene, "pcd_segment: " + item.file->path);
         }
@@ -483,6 +504,12 @@ int main(int argc, char** argv) {
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
+  if (options.overlay && std::all_of(files.begin(), files.end(), [](const floodplane::io::InputFile& file) {
+        return floodplane::io::isDepthImagePath(file.path);
+      })) {
+    return floodplane::apps::usageError(
+        app, "--overlay lays the labels over the input's colours, and depth images have none");
+  }
   if (options.cold_starts && !options.track) {
     return floodplane::apps::usageError(app, "--cold-starts turns off the head start of --track: it needs --track");
   }

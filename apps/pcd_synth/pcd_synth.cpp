@@ -131,8 +131,12 @@ void writeFrame(const std::string& stem, const synth::RenderedFrame& frame, cons
       options.ascii ? floodplane::io::PcdEncoding::ascii : floodplane::io::PcdEncoding::binary_compressed);
   floodplane::io::writeBytesAtomically(stem + ".planes.json", synth::groundTruthJson(frame));
   if (options.png) {
-    floodplane::io::writePng(stem + ".labels.png",
-                             floodplane::io::labelImage(frame.labels, frame.intrinsics.width, frame.intrinsics.height));
+    std::vector<std::uint8_t> has_point;
+    has_point.reserve(frame.points.size());
+    for (const Eigen::Vector3f& point : frame.points) has_point.push_back(point.allFinite() ? 1 : 0);
+    floodplane::io::writePng(
+        stem + ".labels.png",
+        floodplane::io::labelImage(frame.labels, has_point, frame.intrinsics.width, frame.intrinsics.height));
   }
 }
 
@@ -494,7 +498,10 @@ int main(int argc, char** argv) {
   width->needs(height);
   height->needs(width);
   app.add_flag("--ascii", options.ascii, "Write the PCDs as text, as pcd_segment --ascii (default: binary compressed)");
-  app.add_flag("--png", options.png, "Also write <scene>.<sensor>.labels.png (ground truth)");
+  app.add_flag("--png", options.png,
+               "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels: each "
+               "plane in a colour of its own, near-black where a point is on no plane, white where the sensor saw "
+               "nothing");
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json (<scene>.boards.json with --family boards)");

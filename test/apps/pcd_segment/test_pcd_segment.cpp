@@ -9,6 +9,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -21,8 +22,10 @@
 
 #include "floodplane/params.h"
 #include "floodplane/version.h"
+#include "io/label_palette.h"
 #include "support/app_run.h"
 #include "support/library_labels.h"
+#include "support/png_images.h"
 
 namespace floodplane::test {
 namespace {
@@ -265,6 +268,92 @@ TEST_F(PcdSegment, KeepsColourWhenTheInputHasIt) {
     labels.push_back(labelled[i].label);
   }
   EXPECT_EQ(labels, libraryLabels(scene));
+}
+
+// The label PNG has a pixel per point: each plane in its palette colour, a finite point on no
+// plane near-black, a pixel without a point (no depth) white.
+TEST_F(PcdSegment, LabelPngPaintsPlanesNoPlaneAndHolesApart) {
+  Cloud scene = twoPlaneScene();
+  // Points scattered along their rays, on no surface: finite, and on no plane.
+  for (int v = 30; v < 42; ++v) {
+    for (int u = 100; u < 112; ++u) {
+      const float scale = 0.5f + 0.07f * static_cast<float>((u * 7 + v * 13) % 10);
+      pcl::PointXYZ& p = scene.at(u, v);
+      p.x *= scale;
+      p.y *= scale;
+      p.z *= scale;
+    }
+  }
+  const std::string input = writeScene("scene.pcd", scene);
+  ASSERT_EQ(run({input, "-o", path("out").string(), "--png"}).exit_code, 0);
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/scene.labels.pcd").string(), labelled), 0);
+  const floodplane::io::RgbImage image = readPng(path("out/scene.labels.png"));
+  ASSERT_EQ(image.width, labelled.width);
+  ASSERT_EQ(image.height, labelled.height);
+  std::size_t holes = 0, no_plane = 0, planes = 0;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    const bool finite = std::isfinite(labelled[i].z);
+    const std::array<std::uint8_t, 3> expected =
+        finite ? floodplane::io::labelColor(labelled[i].label) : floodplane::io::kHoleColor;
+    const std::array<std::uint8_t, 3> pixel{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
+    ASSERT_EQ(pixel, expected) << "pixel " << i << ", label " << labelled[i].label;
+    holes += finite ? 0 : 1;
+    no_plane += finite && labelled[i].label == 0 ? 1 : 0;
+    planes += labelled[i].label != 0 ? 1 : 0;
+  }
+  EXPECT_EQ(holes, 16u) << "the scene's block without returns";
+  EXPECT_GE(no_plane, 50u) << "the scattered points";
+  EXPECT_GT(planes, labelled.size() / 2);
+  EXPECT_NE(floodplane::io::kHoleColor, floodplane::io::kNoPlaneColor);
+}
+
+// --overlay: the input's own colours with each plane's colour blended half over it, holes white.
+TEST_F(PcdSegment, OverlayBlendsThePlaneColoursOverTheInputsColours) {
+  const Cloud scene = twoPlaneScene();
+  pcl::PointCloud<pcl::PointXYZRGB> coloured;
+  pcl::copyPointCloud(scene, coloured);
+  for (std::size_t i = 0; i < coloured.size(); ++i) {
+    coloured[i].r = static_cast<std::uint8_t>(i);
+    coloured[i].g = static_cast<std::uint8_t>(i / 7);
+    coloured[i].b = static_cast<std::uint8_t>(255 - i % 200);
+  }
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path("rgb.pcd").string(), coloured), 0);
+  const Result result = run({path("rgb.pcd").string(), "-o", path("one/frame.pcd").string(), "--overlay"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("one/frame.pcd").string(), labelled), 0);
+  const floodplane::io::RgbImage overlay = readPng(path("one/frame.overlay.png"));
+  ASSERT_EQ(overlay.width, labelled.width);
+  ASSERT_EQ(overlay.height, labelled.height);
+  std::size_t blended = 0;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    const std::array<int, 3> own{coloured[i].r, coloured[i].g, coloured[i].b};
+    const bool finite = std::isfinite(labelled[i].z);
+    const bool on_plane = labelled[i].label != 0 && finite;
+    const auto colour = floodplane::io::labelColor(labelled[i].label);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int expected = !finite ? floodplane::io::kHoleColor[c] : on_plane ? (own[c] + colour[c] + 1) / 2 : own[c];
+      ASSERT_EQ(overlay.pixels[3 * i + c], expected) << "pixel " << i << ", channel " << c;
+    }
+    blended += on_plane ? 1 : 0;
+  }
+  EXPECT_GT(blended, labelled.size() / 2);
+}
+
+// An input without colour gets a note, not an overlay and not an error; the batch goes on.
+TEST_F(PcdSegment, OverlayOfAnInputWithoutColourIsANote) {
+  const std::string input = writeScene("plain.pcd");
+  const Result result = run({input, "-o", path("out").string(), "--overlay"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+  EXPECT_TRUE(contains(result.err, "pcd_segment: note: " + input + ": no colour")) << result.err;
+  EXPECT_TRUE(fs::exists(path("out/plain.labels.pcd")));
+  EXPECT_FALSE(fs::exists(path("out/plain.overlay.png")));
+  const Result quiet = run({input, "-o", path("out").string(), "--overlay", "-q"});
+  ASSERT_EQ(quiet.exit_code, 0);
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
 }
 
 TEST_F(PcdSegment, WritesNoColourFieldWhenTheInputHasNone) {

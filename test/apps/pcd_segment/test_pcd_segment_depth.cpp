@@ -157,6 +157,13 @@ TEST_F(PcdSegmentDepth, AFolderOfPngsWithoutIntrinsicsSaysThatIntrinsicsIsMissin
   EXPECT_FALSE(fs::exists(path("out")));
 }
 
+TEST_F(PcdSegmentDepth, OverlayOfDepthImagesAloneIsAUsageError) {
+  const std::string input = writeDepth("frame.png");
+  expectUsageError(run({input, "-o", path("out").string(), "--intrinsics", kIntrinsics, "--overlay"}), "pcd_segment",
+                   "--overlay lays the labels over the input's colours, and depth images have none");
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
 TEST_F(PcdSegmentDepth, RefusesBadIntrinsicsWithUsageAndExitCodeTwo) {
   const std::string input = writeDepth("frame.png");
   const std::vector<std::vector<std::string>> bad = {{"--intrinsics", "525,525,319.5"},
