@@ -59,6 +59,7 @@ constexpr const char* kDescription =
 
 // What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
 constexpr const char* kOutputMeaning = "-o names the labelled cloud (a .pcd file, for one input) or a directory";
+
 struct Options {
   std::vector<std::string> inputs;
   std::string output;
