@@ -11,6 +11,7 @@ packages=(
   liblz4-dev libpng-dev                      # PCD compression link line, PNG output
   libgtest-dev libgmock-dev libbenchmark-dev # tests and benchmarks
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
+  libtbb-dev                                 # pcd_segment -j: oneTBB's parallel_pipeline
   libopen3d-dev                              # pcd_compare's Open3D RANSAC baseline (0.16)
   libcairo2-dev                              # pcd_compare's picture titles (its fonts come with it)
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime

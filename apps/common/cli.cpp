@@ -4,30 +4,40 @@
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
+#include <algorithm>
 
 #include "floodplane/version.h"
 
 namespace floodplane::apps {
+namespace {
+
+// CLI11's failure message, one line: CLI11's own default adds a second ("Run with --help for
+// more information."), and an error that spans lines is joined so that it stays one.
+std::string oneLineFailure(const CLI::App* app, const CLI::Error& error) {
+  std::string message = error.what();
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  return app->get_name() + ": error: " + message + " (see --help)\n";
+}
+
+}  // namespace
 
 void addVersionFlag(CLI::App& app) { app.set_version_flag("--version", FLOODPLANE_VERSION_STRING); }
 
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv) {
+  app.failure_message(oneLineFailure);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return usageError(app, e.what());
+    // --help and --version arrive here too, as exit code 0 (CLI::Success).
+    return app.exit(e) == 0 ? 0 : kUsageExitCode;
   }
   return std::nullopt;
 }
 
-int usageError(const CLI::App& app, const std::string& message) {
-  std::cerr << app.get_name() << ": error: " << message << "\n\n" << app.help();
-  return 2;
+int usageError(CLI::App& app, const std::string& message) {
+  app.failure_message(oneLineFailure);
+  app.exit(CLI::ValidationError(message));
+  return kUsageExitCode;
 }
 
 }  // namespace floodplane::apps

@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The command-line handling every floodplane app shares: --version, and what --help, --version
-// and a bad command line print and exit with.
+// and a bad command line print and exit with. A usage error is one line on stderr,
+// "<app>: error: <what is wrong, naming the flag> (see --help)", and exit code 2: the whole
+// help after every typo buried the one line that mattered.
 
 #include <optional>
 #include <string>
@@ -13,17 +15,22 @@ class App;
 
 namespace floodplane::apps {
 
+/// The exit code of a usage error: a command line that does not parse, or options refused
+/// before any work.
+inline constexpr int kUsageExitCode = 2;
+
 /// Adds --version, which prints the library's version.
 void addVersionFlag(CLI::App& app);
 
 /// Parses the command line into `app`'s options. Returns the exit code when the program is
-/// done: 0 after --help or --version (printed on stdout), 2 after a bad command line (see
-/// usageError). std::nullopt when the program goes on.
+/// done: 0 after --help or --version (printed on stdout), kUsageExitCode after a bad command
+/// line, which CLI11 reports (App::exit) in the one-line form of usageError. std::nullopt when
+/// the program goes on.
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv);
 
-/// Prints "<app name>: error: <message>", a blank line and the usage on stderr, and returns
-/// 2, the exit code of a usage error. For options that parse but are refused later (a value
-/// the library rejects, options that contradict each other).
-int usageError(const CLI::App& app, const std::string& message);
+/// Reports `message` as a usage error through CLI11, in the same form as the errors it finds
+/// itself, and returns kUsageExitCode. For options that parse but are refused later (a value
+/// the library rejects, options that contradict each other); `message` names the flag.
+int usageError(CLI::App& app, const std::string& message);
 
 }  // namespace floodplane::apps

@@ -120,7 +120,7 @@ floodplane::io::RgbImage comparisonImage(const InputCloud& input, const std::vec
   const auto add = [&](const std::string& title, const std::vector<std::uint32_t>& colours,
                        const std::vector<std::uint32_t>& segments) {
     if (!in_3d) {
-      images.emplace_back(title, floodplane::io::labelImage(colours, cloud.width, cloud.height));
+      images.emplace_back(title, floodplane::io::labelImage(colours, input.valid, cloud.width, cloud.height));
       return;
     }
     floodplane::view::PlaneScene scene;
@@ -133,7 +133,7 @@ floodplane::io::RgbImage comparisonImage(const InputCloud& input, const std::vec
                                                       static_cast<int>(cloud.width), static_cast<int>(cloud.height)));
   };
   if (input.ground_truth) {
-    // Pixels without a point show as "no plane", as they do in the predictions.
+    // Pixels without a point are holes (no plane in 3-D), as they are in the predictions.
     std::vector<std::uint32_t> shown = *input.ground_truth;
     for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = input.valid[i] != 0 ? shown[i] : 0;
     add("ground truth", shown, shown);

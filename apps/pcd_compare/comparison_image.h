@@ -20,7 +20,8 @@ using LabelledPanel = std::pair<std::string, std::vector<std::uint32_t>>;
 
 /// The ground truth, when `input` has it, then `panels`, side by side, each as large as the
 /// cloud's grid with its title in a strip above (drawn by cairo in a sans font). Segments are
-/// coloured by the ground-truth plane they overlap most (floodplane::io::labelColor). In 3-D
+/// coloured by the ground-truth plane they overlap most (floodplane::io::labelColor), pixels
+/// without a point white (floodplane::io::labelImage). In 3-D
 /// (`in_3d`) the segments of at least `min_points` points get an arrow along their
 /// least-squares normal. Throws std::invalid_argument if there is no panel, std::runtime_error
 /// if cairo cannot draw the titles or, in 3-D, when nothing can be rendered here (no X

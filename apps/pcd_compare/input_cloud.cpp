@@ -11,8 +11,8 @@
 
 namespace pcd_compare {
 
-InputCloud loadInputCloud(const std::string& path) {
-  floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(path);
+InputCloud loadInputCloud(const std::string& path, const std::optional<floodplane::io::DepthCamera>& camera) {
+  floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(path, camera);
   if (frame.xyz.width <= 1) {
     throw std::runtime_error("not an organized cloud (" + std::to_string(frame.xyz.width) + "x" +
                              std::to_string(frame.xyz.height) + "): PCL's methods need an image grid");
@@ -21,7 +21,7 @@ InputCloud loadInputCloud(const std::string& path) {
   input.path = path;
   const std::string file = std::filesystem::path(path).filename().string();
   const bool pcd = file.size() > 4 && file.compare(file.size() - 4, 4, ".pcd") == 0;
-  input.name = pcd ? file.substr(0, file.size() - 4) : file;
+  input.name = pcd || floodplane::io::isDepthImagePath(file) ? file.substr(0, file.size() - 4) : file;
   // Recorded frames are often named by time ("frame_20121214T142255.814212"): digits after
   // the dot are a fraction of a second, not a sensor model.
   const std::size_t dot = input.name.rfind('.');

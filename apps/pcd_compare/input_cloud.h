@@ -9,27 +9,29 @@
 #include <string>
 #include <vector>
 
+#include "io/depth_camera.h"
 #include "method.h"
 
 namespace pcd_compare {
 
 struct InputCloud {
   std::string path;
-  std::string name;  ///< the file name without ".pcd", used in tables and image names
+  std::string name;  ///< the file name without ".pcd" or ".png", used in tables and image names
   /// The sensor model a file named <scene>.<sensor>.pcd was rendered or recorded with (none,
   /// kinect, scanner, ...): whatever follows the last dot of `name`. Empty when there is no
   /// dot, or when digits alone follow it (a time stamp's fraction of a second).
   std::string sensor;
   Cloud::Ptr cloud;
-  /// The file's `label` field (ground-truth plane id, 0 = none), when it has one.
+  /// The ground truth (plane id, 0 = none): the file's `label` field, or --ground-truth's file.
   std::optional<std::vector<std::uint32_t>> ground_truth;
   /// 1 where x, y and z are finite: the pixels the metrics count.
   std::vector<std::uint8_t> valid;
 };
 
-/// Loads an organized cloud through floodplane::io::loadInputFrame. Throws
-/// std::runtime_error with a one-line reason (without the path) if the file cannot be read
-/// as a frame, or if its grid is a single column, which PCL's methods cannot take.
-InputCloud loadInputCloud(const std::string& path);
+/// Loads an organized cloud, or a depth image back-projected with `camera`, through
+/// floodplane::io::loadInputFrame. Throws std::runtime_error with a one-line reason (without
+/// the path) if the file cannot be read as a frame, or if its grid is a single column, which
+/// PCL's methods cannot take.
+InputCloud loadInputCloud(const std::string& path, const std::optional<floodplane::io::DepthCamera>& camera = {});
 
 }  // namespace pcd_compare

@@ -25,7 +25,9 @@
 #include <vector>
 
 #include "common/cli.h"
+#include "common/depth_input.h"
 #include "common/display_check.h"
+#include "common/output_target.h"
 #include "comparison_image.h"
 #include "eval/segmentation_metrics.h"
 #include "floodplane/version.h"
@@ -33,6 +35,7 @@
 #include "io/atomic_file.h"
 #include "io/input_files.h"
 #include "io/png_file.h"
+#include "label_files.h"
 #include "method.h"
 #include "report.h"
 
@@ -48,6 +51,11 @@ const std::vector<std::string> kSensors = {"kinect", "scanner", "none"};
 
 struct Options {
   std::vector<std::string> inputs;
+  floodplane::apps::DepthInputOptions depth;
+  std::optional<floodplane::io::DepthCamera> camera;  // from `depth`, when given
+  std::vector<std::string> labels;                    // --labels NAME=DIR, as given
+  std::vector<LabelSource> label_sources;             // the same, parsed
+  std::string ground_truth_dir;                       // --ground-truth DIR
   std::vector<std::string> methods = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
   int repeat = 20;
   std::string json_file, png_dir, png3d_dir;
@@ -131,6 +139,10 @@ Methods makeMethods(const Options& options, Json& configuration) {
     methods.selected.push_back(makeMethod(name));
     configuration["method " + name] = methods.selected.back()->parameters();
   }
+  for (const LabelSource& source : options.label_sources) {
+    configuration["method " + source.name] = "labels another program wrote (--labels): " + source.directory +
+                                             "/<stem>.labels.pcd or <stem>.png per input; not run here, no time";
+  }
   if (options.tuned) {
     const TunedValues tuned = readTunedValues(options.tuned_file);
     for (const std::string& name : options.methods) {
@@ -159,20 +171,24 @@ Json configuration(const Options& options) {
           {"timing", runs + ", of the segmentation call alone (cloud in memory; OMPS includes its normal "
                             "estimation), one thread, steady_clock"},
           {"accuracy",
-           "for files with a `label` field: IoU, weighted IoU, Hoover counts (T = 0.8) and false-plane "
-           "fraction as in metrics.md; pixels with NaN xyz ignored; planes and segments below "
-           "round(500 * W*H / (640*480)) pixels ignored; labels of the warm-up run; means per method, and per "
-           "sensor model (--sensor, or the name <scene>.<sensor>.pcd)"}};
+           std::string(options.ground_truth_dir.empty() ? "for files with a `label` field"
+                                                        : "against the ground truth in " + options.ground_truth_dir +
+                                                              " (<stem>.labels.pcd or <stem>.png)") +
+               ": IoU, weighted IoU, Hoover counts (T = 0.8) and false-plane fraction as in metrics.md; pixels "
+               "with NaN xyz ignored; planes and segments below round(500 * W*H / (640*480)) pixels ignored; "
+               "labels of the warm-up run; means per method, and per sensor model (--sensor, or the name "
+               "<scene>.<sensor>.pcd)"}};
 }
 
 // <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings): ground
 // truth, then the methods that ran in a fixed order, floodplane last.
 void writeComparisonImages(const Options& options, const InputCloud& input, const Json& scene,
                            const std::map<std::string, MethodRun>& runs) {
-  static const std::vector<std::string> kOrder = {"ransac",       "open3d_ransac", "omps",      "floodplane/8",
-                                                  "floodplane/4", "floodplane/2",  "floodplane"};
+  std::vector<std::string> order = {"ransac", "open3d_ransac", "omps"};
+  for (const LabelSource& source : options.label_sources) order.push_back(source.name);
+  order.insert(order.end(), {"floodplane/8", "floodplane/4", "floodplane/2", "floodplane"});
   std::vector<LabelledPanel> panels;
-  for (const std::string& name : kOrder) {
+  for (const std::string& name : order) {
     const auto run = runs.find(name);
     if (run == runs.end()) continue;
     char iou[32] = "";
@@ -192,7 +208,15 @@ void writeComparisonImages(const Options& options, const InputCloud& input, cons
 // Why files got no tuned rows, each reason with the files it applies to.
 using MissingTuned = std::map<std::string, std::vector<std::string>>;
 
-Json compareScene(const Options& options, Methods& methods, const InputCloud& input, MissingTuned& missing) {
+// An input's problem that does not stop its comparison (a label file of --labels or
+// --ground-truth missing or unusable): said at once, counted in the exit code.
+void reportLabelProblem(const InputCloud& input, const std::string& option, const std::string& problem, Json& report) {
+  std::cerr << "pcd_compare: error: " << input.path << ": " << option << ": " << problem << "\n";
+  report["label_problems"].push_back({{"file", input.path}, {"option", option}, {"problem", problem}});
+}
+
+Json compareScene(const Options& options, Methods& methods, const InputCloud& input, MissingTuned& missing,
+                  Json& report) {
   const std::uint32_t min_points = floodplane::eval::defaultMinPoints(input.cloud->width, input.cloud->height);
   Json scene = {{"name", input.name},
                 {"file", input.path},
@@ -221,6 +245,18 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
     }
     compare(*method->second, row);
   }
+  for (const LabelSource& source : options.label_sources) {
+    try {
+      runs[source.name].labels = labelsFromDirectory(source.directory, input);
+    } catch (const std::runtime_error& error) {
+      runs.erase(source.name);
+      reportLabelProblem(input, "--labels " + source.name, error.what(), report);
+      continue;
+    }
+    // Not run here: no time, which the tables show as "-".
+    const Json no_time = {{"median_ms", nullptr}, {"min_ms", nullptr}};
+    scene["methods"][source.name] = methodJson(no_time, runs[source.name].labels, input, min_points);
+  }
   if (!options.png_dir.empty() || !options.png3d_dir.empty()) writeComparisonImages(options, input, scene, runs);
   return scene;
 }
@@ -232,9 +268,10 @@ std::string minutes(double seconds) {
   return text;
 }
 
-// Compares every input, going on past files that cannot be read (listed in report["failed"]).
-void compareAll(const Options& options, Methods& methods, Json& report, MissingTuned& missing) {
-  const std::vector<floodplane::io::InputFile> files = floodplane::io::expandInputs(options.inputs);
+// Compares every input, going on past files that cannot be read (listed in report["failed"])
+// and label files that are missing (report["label_problems"]).
+void compareAll(const Options& options, const std::vector<floodplane::io::InputFile>& files, Methods& methods,
+                Json& report, MissingTuned& missing) {
   const auto start = Clock::now();
   std::set<std::string> names;
   for (std::size_t i = 0; i < files.size(); ++i) {
@@ -250,13 +287,21 @@ void compareAll(const Options& options, Methods& methods, Json& report, MissingT
     }
     try {
       if (!file.error.empty()) throw std::runtime_error(file.error);
-      InputCloud input = loadInputCloud(file.path);
+      InputCloud input = loadInputCloud(file.path, options.camera);
       if (!options.sensor.empty()) input.sensor = options.sensor;
+      if (!options.ground_truth_dir.empty()) {
+        input.ground_truth.reset();
+        try {
+          input.ground_truth = labelsFromDirectory(options.ground_truth_dir, input);
+        } catch (const std::runtime_error& error) {
+          reportLabelProblem(input, "--ground-truth", error.what(), report);
+        }
+      }
       // Scenes are named by their file name; two files of one name from different
       // directories would share a row label and an image file.
       if (!names.insert(input.name).second)
         input.name = fs::path(file.path).parent_path().filename().string() + "_" + input.name;
-      report["scenes"].push_back(compareScene(options, methods, input, missing));
+      report["scenes"].push_back(compareScene(options, methods, input, missing, report));
     } catch (const std::exception& error) {
       std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
       report["failed"].push_back(file.path);
@@ -265,15 +310,28 @@ void compareAll(const Options& options, Methods& methods, Json& report, MissingT
 }
 
 constexpr const char* kDescription =
-    "Compares plane segmentations of organized PCD files: floodplane, PCL's and Open3D's sequential RANSAC and "
-    "PCL's OrganizedMultiPlaneSegmentation (omps). Prints the configuration and the means per method, over all "
-    "files and per sensor model: runtime and, for files with a ground-truth `label` field, mean and weighted IoU, "
-    "Hoover counts and the false-plane fraction. --json has every file and plane; bench/compare_tables.py makes "
-    "the per-file tables and CSV from it, bench/tune_baselines.py tunes the baselines.";
+    "Compares plane segmentations of organized PCD files and 16-bit depth PNG images (with --intrinsics): "
+    "floodplane, PCL's and Open3D's sequential RANSAC, PCL's OrganizedMultiPlaneSegmentation (omps), and any "
+    "other method whose labels are in files (--labels). Prints the configuration and the means per method, over "
+    "all files and per sensor model: runtime and planes found and, for files with ground truth (a `label` field "
+    "in the PCD, or --ground-truth), mean and weighted IoU, Hoover counts and the false-plane fraction; without "
+    "ground truth the tables have the time and plane columns only. --json has every file and plane; "
+    "bench/compare_tables.py makes the per-file tables and CSV from it, bench/tune_baselines.py tunes the "
+    "baselines.";
+
+// The naming rule of label files (label_files.h), for --labels' and --ground-truth's help.
+constexpr const char* kLabelFiles =
+    "DIR holds, for each input <stem>.pcd or <stem>.png, exactly one of <stem>.labels.pcd (x y z and a 32-bit "
+    "unsigned label field on the input's grid, as pcd_segment -o DIR writes) or <stem>.png (a grey 8- or 16-bit "
+    "image of the input's size whose pixel values are the labels); label 0 is no plane";
 
 void addOptions(CLI::App& app, Options& options) {
   // No existence check here: a missing file is reported with the others, and the batch goes on.
-  app.add_option("inputs", options.inputs, "PCD files, or directories (their *.pcd files, sorted)")->required();
+  app.add_option("INPUT", options.inputs,
+                 "PCD files, depth PNG files (with --intrinsics), or directories of them (their *.pcd files, and "
+                 "*.png files with --intrinsics, sorted)")
+      ->required();
+  floodplane::apps::addDepthInputOptions(app, options.depth);
   // One comma-separated token: without allow_extra_args(false) the option would also swallow
   // the INPUTs that follow it ("--methods omps scene.pcd").
   app.add_option("--methods", options.methods, "Methods to run, comma-separated")
@@ -281,15 +339,30 @@ void addOptions(CLI::App& app, Options& options) {
       ->allow_extra_args(false)
       ->check(CLI::IsMember(kMethods))
       ->capture_default_str();
+  app.add_option("--labels", options.labels,
+                 std::string("Score another program's labels as the method NAME, a row of every table like the "
+                             "methods run here (time \"-\": not run here); repeat for more methods. ") +
+                     kLabelFiles +
+                     ". An input whose file is missing, unreadable or of another size is reported and "
+                     "the batch goes on (exit code 1)")
+      ->type_name("NAME=DIR")
+      ->allow_extra_args(false);
+  app.add_option("--ground-truth", options.ground_truth_dir,
+                 std::string("The ground truth of every input from label files in DIR, in place of a PCD's label "
+                             "field: ") +
+                     kLabelFiles + ". An input without one is compared without scores and reported (exit code 1)")
+      ->type_name("DIR");
   app.add_option("--repeat", options.repeat,
                  "Timed runs per method and file after one warm-up (the sequential RANSACs run once); 0: one run "
                  "only, timed and scored")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_option("--json", options.json_file, "Write the whole report (every file, method and plane) as JSON");
+  app.add_option("--json", options.json_file,
+                 "Write the whole report (every file, method and plane) to this .json file");
   app.add_option("--png", options.png_dir,
                  "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | omps | "
-                 "floodplane (those run), segments coloured by the ground-truth plane they overlap most");
+                 "--labels' methods | floodplane (those run), segments coloured by the ground-truth plane they "
+                 "overlap most, near-black on no plane, white where there is no point (no depth)");
   // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
   // display (CI, headless machines).
   app.add_option("--png3d", options.png3d_dir,
@@ -309,6 +382,48 @@ void addOptions(CLI::App& app, Options& options) {
   app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the means and errors");
 }
 
+// The label sources of --labels, checked: distinct names that are not a method's, directories
+// that exist. Throws std::invalid_argument naming the flag.
+std::vector<LabelSource> labelSources(const std::vector<std::string>& arguments) {
+  std::vector<LabelSource> sources;
+  for (const std::string& argument : arguments) {
+    LabelSource source = parseLabelSource(argument);
+    const bool method = std::find(kMethods.begin(), kMethods.end(), source.name) != kMethods.end();
+    const bool taken = std::any_of(sources.begin(), sources.end(),
+                                   [&source](const LabelSource& other) { return other.name == source.name; });
+    if (method || taken) {
+      throw std::invalid_argument("--labels " + argument + ": " + source.name + " is already " +
+                                  (method ? "a method pcd_compare runs" : "the name of another --labels"));
+    }
+    if (!fs::is_directory(source.directory)) {
+      throw std::invalid_argument("--labels " + argument + ": " + source.directory + " is not a directory");
+    }
+    sources.push_back(std::move(source));
+  }
+  return sources;
+}
+
+// What the options name on disk, checked before any work: --png and --png3d directories,
+// --json a file, the label directories. Throws std::invalid_argument naming the flag.
+void checkPaths(Options& options) {
+  for (const auto& [flag, directory] : {std::pair<std::string, const std::string&>("--png", options.png_dir),
+                                        std::pair<std::string, const std::string&>("--png3d", options.png3d_dir)}) {
+    if (directory.empty()) continue;
+    floodplane::apps::outputKind(flag, directory, {}, flag + " names a directory: it writes <scene>.png per input");
+  }
+  if (!options.json_file.empty() &&
+      floodplane::apps::outputKind("--json", options.json_file, {".json"}, "--json names the report's .json file") ==
+          floodplane::apps::OutputKind::directory) {
+    throw std::invalid_argument("--json " + options.json_file +
+                                " is a directory; --json names the report's .json file");
+  }
+  options.label_sources = labelSources(options.labels);
+  if (!options.ground_truth_dir.empty() && !fs::is_directory(options.ground_truth_dir)) {
+    throw std::invalid_argument("--ground-truth " + options.ground_truth_dir + " is not a directory");
+  }
+  options.camera = floodplane::apps::depthCamera(options.depth);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -319,12 +434,25 @@ int main(int argc, char** argv) {
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
   if (options.resolutions) options.methods.insert(options.methods.end(), kResolutions.begin(), kResolutions.end());
   options.methods = firstOfEach(options.methods);
+  try {
+    checkPaths(options);
+  } catch (const std::invalid_argument& error) {
+    return floodplane::apps::usageError(app, error.what());
+  }
+  const std::vector<floodplane::io::InputFile> files =
+      floodplane::apps::expandFrameInputs(options.inputs, options.camera.has_value());
+  if (const std::optional<std::string> problem = floodplane::apps::missingCamera(files, options.camera.has_value())) {
+    return floodplane::apps::usageError(app, *problem);
+  }
   // Before any work: the comparison can take minutes, and every image would fail alike.
   if (const auto reason = options.png3d_dir.empty() ? std::nullopt : floodplane::view::renderingUnavailableReason()) {
     std::cerr << "pcd_compare: error: --png3d cannot draw in 3-D: " << *reason << "\n";
     return 1;
   }
-  Json report = {{"configuration", configuration(options)}, {"scenes", Json::array()}, {"failed", Json::array()}};
+  Json report = {{"configuration", configuration(options)},
+                 {"scenes", Json::array()},
+                 {"failed", Json::array()},
+                 {"label_problems", Json::array()}};
   Methods methods;
   try {
     if (options.tuned && options.tuned_file.empty()) options.tuned_file = defaultTunedFile();
@@ -335,7 +463,7 @@ int main(int argc, char** argv) {
   }
   if (!options.quiet) std::cout << markdownConfiguration(report) << std::flush;
   MissingTuned missing;
-  compareAll(options, methods, report, missing);
+  compareAll(options, files, methods, report, missing);
   addMeans(report);
   std::cout << markdownMeans(report) << std::flush;
   bool written = true;
@@ -345,14 +473,19 @@ int main(int argc, char** argv) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
     written = false;
   }
-  for (const auto& [reason, files] : missing) {
-    std::cerr << "pcd_compare: --tuned: no tuned rows for " << files.size() << " file(s), " << reason << ": "
-              << joined(files) << "\n";
+  for (const auto& [reason, names] : missing) {
+    std::cerr << "pcd_compare: --tuned: no tuned rows for " << names.size() << " file(s), " << reason << ": "
+              << joined(names) << "\n";
   }
   const std::size_t failed = report["failed"].size();
   if (failed > 0) {
     std::cerr << "pcd_compare: " << failed << " of " << failed + report["scenes"].size()
               << " files failed: " << joined(report["failed"].get<std::vector<std::string>>(), " ") << "\n";
   }
-  return failed == 0 && written ? 0 : 1;
+  const std::size_t label_problems = report["label_problems"].size();
+  if (label_problems > 0) {
+    std::cerr << "pcd_compare: " << label_problems << (label_problems == 1 ? " label file" : " label files")
+              << " missing or unusable (said above); those inputs have no row or no scores for them\n";
+  }
+  return failed == 0 && label_problems == 0 && written ? 0 : 1;
 }

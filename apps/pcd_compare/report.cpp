@@ -62,8 +62,9 @@ Json meanRow(const Json& scenes, const std::string& method, const std::string& s
               {"min_ms", sumOf(all, "/min_ms").mean()},
               // The ratio of the mean medians: long scenes weigh as they weigh in a user's
               // waiting. Only when floodplane ran on every scene.
-              {"ratio_to_floodplane",
-               number(floodplane.size() == all.size() ? median.sum / sumOf(floodplane, "/median_ms").sum : kNaN)},
+              {"ratio_to_floodplane", number(floodplane.size() == all.size() && median.count == all.size()
+                                                 ? median.sum / sumOf(floodplane, "/median_ms").sum
+                                                 : kNaN)},
               {"planes", sumOf(all, "/planes").mean()}};
   // A method names the same parts on every scene.
   const Json parts = all.front()->value("parts_median_ms", Json::object());
@@ -149,7 +150,9 @@ void addMeans(Json& report) {
   for (Json& scene : report["scenes"]) {
     const double floodplane_ms = scene["methods"].value(Json::json_pointer("/floodplane/median_ms"), kNaN);
     for (auto& [method, result] : scene["methods"].items()) {
-      result["ratio_to_floodplane"] = number(result["median_ms"].get<double>() / floodplane_ms);
+      // Labels read from files (--labels) have no time: null, as NaN is.
+      const double median_ms = result["median_ms"].is_number() ? result["median_ms"].get<double>() : kNaN;
+      result["ratio_to_floodplane"] = number(median_ms / floodplane_ms);
       if (std::find(methods.begin(), methods.end(), method) == methods.end()) methods.push_back(method);
     }
     if (scene.contains("sensor")) sensors.insert(scene["sensor"].get<std::string>());

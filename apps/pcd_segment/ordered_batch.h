@@ -1,36 +1,43 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Runs the items of a batch on several threads and reports their results on the calling
-// thread in item order, so that a parallel run prints, and fails, exactly as a serial one.
+// Runs the items of a batch on several threads and reports their results one at a time in
+// item order, so that a parallel run prints, and fails, exactly as a serial one. The ordering
+// and the bound on waiting results are TBB's parallel_pipeline: a parallel filter does the
+// work, a serial_in_order filter the reports.
+
+#include <oneapi/tbb/enumerable_thread_specific.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_pipeline.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include <algorithm>
-#include <condition_variable>
 #include <cstddef>
-#include <mutex>
-#include <optional>
 #include <thread>
 #include <utility>
-#include <vector>
 
 namespace pcd_segment {
 
 /// The number of threads `-j` means by default: one per core the machine reports, at least 1.
 inline unsigned defaultJobs() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-/// Calls `work(worker, i)` for every i in [0, count) on up to `jobs` threads, and
-/// `report(i, result)` on the calling thread for i = 0, 1, ... in order, each as soon as item i
-/// is done. Every thread makes its own worker with `make_worker()` (a segmenter with its
-/// buffers, say), so work on different items shares nothing. With jobs <= 1 everything runs on
-/// the calling thread, one item after another.
+/// Calls `work(worker, i)` for every i in [0, count), up to `jobs` items at once on as many
+/// threads (more than the machine's cores if asked: -j means items at once), and
+/// `report(i, result)` for i = 0, 1, ... in order, one at a time, each as soon as item i and
+/// those before it are done. Every thread that works makes its own worker with
+/// `make_worker()` (a segmenter with its buffers, say) the first time, so work on different
+/// items shares nothing. With jobs <= 1 everything runs on the calling thread, one item after
+/// another; otherwise the calling thread takes part and reports may run on any of the threads.
 ///
-/// At most 2 * jobs results wait to be reported: a slow item holds the others back rather
-/// than letting finished results pile up in memory. `make_worker` and `work` must not throw
-/// (put an item's error into its result); `report` may not throw either while threads run.
+/// At most 2 * jobs items are under way (being worked on, or done and waiting for their
+/// report): a slow item holds the others back rather than letting finished results pile up in
+/// memory. Put an item's error into its result: an exception from `make_worker`, `work` or
+/// `report` stops the batch and propagates.
 template <typename MakeWorker, typename Work, typename Report>
 void runInOrder(std::size_t count, unsigned jobs, MakeWorker make_worker, Work work, Report report) {
   using Worker = decltype(make_worker());
   using Result = decltype(work(std::declval<Worker&>(), std::size_t{0}));
+  using Done = std::pair<std::size_t, Result>;
   if (jobs <= 1 || count <= 1) {
     Worker worker = make_worker();
     for (std::size_t i = 0; i < count; ++i) {
@@ -40,52 +47,24 @@ void runInOrder(std::size_t count, unsigned jobs, MakeWorker make_worker, Work w
     return;
   }
 
-  std::mutex mutex;
-  std::condition_variable changed;
-  std::vector<std::optional<Result>> finished(count);
-  std::size_t next = 0;      // the next item a thread takes
-  std::size_t reported = 0;  // items reported so far
-  const std::size_t window = 2 * static_cast<std::size_t>(jobs);
-
-  const auto run = [&]() {
-    Worker worker = make_worker();
-    for (;;) {
-      std::size_t item = 0;
-      {
-        std::unique_lock<std::mutex> lock(mutex);
-        changed.wait(lock, [&] { return next >= count || next < reported + window; });
-        if (next >= count) return;
-        item = next++;
-      }
-      Result result = work(worker, item);
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        finished[item] = std::move(result);
-      }
-      changed.notify_all();
-    }
-  };
-  std::vector<std::thread> threads;
-  const std::size_t thread_count = std::min(count, static_cast<std::size_t>(jobs));
-  threads.reserve(thread_count);
-  for (std::size_t t = 0; t < thread_count; ++t) threads.emplace_back(run);
-
-  for (std::size_t i = 0; i < count; ++i) {
-    std::optional<Result> result;
-    {
-      std::unique_lock<std::mutex> lock(mutex);
-      changed.wait(lock, [&] { return finished[i].has_value(); });
-      result = std::move(finished[i]);
-      finished[i].reset();
-    }
-    report(i, *result);
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      reported = i + 1;
-    }
-    changed.notify_all();
-  }
-  for (std::thread& thread : threads) thread.join();
+  // TBB sizes its thread pool to the cores; -j asks for `jobs` threads whatever their number.
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, jobs);
+  tbb::task_arena arena(static_cast<int>(jobs));
+  tbb::enumerable_thread_specific<Worker> workers([&make_worker] { return make_worker(); });
+  std::size_t next = 0;
+  const auto items = tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order,
+                                                         [&next, count](tbb::flow_control& control) {
+                                                           if (next == count) {
+                                                             control.stop();
+                                                             return count;
+                                                           }
+                                                           return next++;
+                                                         });
+  const auto working = tbb::make_filter<std::size_t, Done>(
+      tbb::filter_mode::parallel, [&](std::size_t i) { return Done(i, work(workers.local(), i)); });
+  const auto reporting = tbb::make_filter<Done, void>(tbb::filter_mode::serial_in_order,
+                                                      [&report](Done done) { report(done.first, done.second); });
+  arena.execute([&] { tbb::parallel_pipeline(2 * static_cast<std::size_t>(jobs), items & working & reporting); });
 }
 
 }  // namespace pcd_segment

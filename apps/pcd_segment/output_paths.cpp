@@ -5,31 +5,23 @@
 #include <filesystem>
 
 namespace pcd_segment {
-namespace {
 
 namespace fs = std::filesystem;
-
-bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-}  // namespace
 
 std::string outputName(const std::string& input_path) {
   const fs::path path(input_path);
   return path.extension() == ".pcd" || path.extension() == ".png" ? path.stem().string() : path.filename().string();
 }
 
-bool namesPcdFile(const std::string& output) { return endsWith(output, ".pcd"); }
-
 OutputPaths outputPaths(const std::string& input_path, const std::string& output, bool single_file) {
   if (single_file) {
     // "out/scene.pcd" -> "out/scene.png", "out/scene.json": the name the user chose.
     const std::string stem = output.substr(0, output.size() - 4);
-    return {output, stem + ".png", stem + ".json", stem + ".snapshot.png"};
+    return {output, stem + ".png", stem + ".json", stem + ".overlay.png", stem + ".snapshot.png"};
   }
   const std::string base = (fs::path(output) / outputName(input_path)).string();
-  return {base + ".labels.pcd", base + ".labels.png", base + ".planes.json", base + ".snapshot.png"};
+  return {base + ".labels.pcd", base + ".labels.png", base + ".planes.json", base + ".overlay.png",
+          base + ".snapshot.png"};
 }
 
 std::string tracksPath(const std::string& output, bool single_file) {

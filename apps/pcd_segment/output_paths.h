@@ -16,16 +16,15 @@ struct OutputPaths {
   std::string pcd;
   std::string png;
   std::string json;
+  std::string overlay;   ///< --overlay: the labels over the input's colours
   std::string snapshot;  ///< the 3-D image of --snapshot given without a file name
 };
 
-/// True when `output` names a PCD file rather than a directory (it ends in ".pcd").
-bool namesPcdFile(const std::string& output);
-
-/// The outputs for `input_path`. With `single_file` (one input and -o ending in .pcd) the PCD
-/// is `output` itself and the PNG, JSON and snapshot sit next to it with the same stem
-/// (<stem>.png, <stem>.json, <stem>.snapshot.png); otherwise `output` is a directory
-/// receiving <name>.labels.pcd, <name>.labels.png, <name>.planes.json, <name>.snapshot.png.
+/// The outputs for `input_path`. With `single_file` (one input and -o naming a .pcd file) the PCD
+/// is `output` itself and the PNG, JSON, overlay and snapshot sit next to it with the same stem
+/// (<stem>.png, <stem>.json, <stem>.overlay.png, <stem>.snapshot.png); otherwise `output` is a
+/// directory receiving <name>.labels.pcd, <name>.labels.png, <name>.planes.json,
+/// <name>.overlay.png, <name>.snapshot.png.
 OutputPaths outputPaths(const std::string& input_path, const std::string& output, bool single_file);
 
 /// Where --track --json writes its summary of the tracks: OUT/tracks.json, or <stem>.tracks.json

@@ -8,6 +8,7 @@
 #include <pcl/console/print.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <exception>
@@ -23,7 +24,10 @@
 
 #include "camera_poses.h"
 #include "common/cli.h"
+#include "common/depth_input.h"
 #include "common/display_check.h"
+#include "common/output_target.h"
+#include "common/param_options.h"
 #include "common/plane_view.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "io/atomic_file.h"
@@ -51,18 +55,20 @@ constexpr const char* kDescription =
     "INPUT is a PCD file with x y z fields, a 16-bit depth image (.png, 0 = no return; needs "
     "--intrinsics), or a directory of them. Writes per input a labelled cloud (x y z [rgb] "
     "label: 0 no plane, 1..K planes by size, largest first; a depth image's back-projected "
-    "points): OUT itself for one input and OUT ending in .pcd, otherwise OUT/<name>.labels.pcd. "
-    "With --track the inputs are one sequence of frames and the labels are track ids.";
+    "points). With --track the inputs are one sequence of frames and the labels are track ids.";
+
+// What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
+constexpr const char* kOutputMeaning = "-o names the labelled cloud (a .pcd file, for one input) or a directory";
 
 struct Options {
   std::vector<std::string> inputs;
   std::string output;
   floodplane::Params params;
-  std::vector<double> intrinsics;                     ///< fx fy cx cy of depth images
-  double depth_scale = 1000.0;                        ///< depth units per metre
-  std::optional<floodplane::io::DepthCamera> camera;  ///< from the two above, when given
+  floodplane::apps::DepthInputOptions depth;
+  std::optional<floodplane::io::DepthCamera> camera;  ///< from `depth`, when given
   bool ascii = false;
   bool png = false;
+  bool overlay = false;
   bool json = false;
   bool quiet = false;
   bool track = false;                          ///< the inputs are one sequence; labels are track ids
@@ -75,82 +81,31 @@ struct Options {
 };
 
 void addInputOutputOptions(CLI::App& app, Options& options) {
-  app.add_option("inputs", options.inputs,
+  app.add_option("INPUT", options.inputs,
                  "PCD files, depth PNG files or directories of them (PNG only with --intrinsics)")
       ->required();
-  app.add_option("-o,--output", options.output, "Output .pcd file (one input) or directory (created if missing)")
+  app.add_option("-o,--output", options.output,
+                 "A .pcd file or a directory, by one rule in every mode. OUT ending in .pcd: the labelled "
+                 "cloud when the inputs come to one file (refused for more), with --png, --json, "
+                 "--overlay, --snapshot and --track --json writing OUT's stem + .png, .json, .overlay.png, "
+                 ".snapshot.png, .tracks.json beside it. OUT ending in / or without an extension, or an "
+                 "existing directory: a directory (created if missing) receiving <name>.labels.pcd, "
+                 ".labels.png, .planes.json, .overlay.png, .snapshot.png per input (<name>: the input's file "
+                 "name without .pcd or .png) and tracks.json with --track --json. Any other extension "
+                 "(out.txt) is refused; a new directory whose name has a dot is given with a trailing /")
       ->required();
-}
-
-// The paper's lengths are left out by default: then they follow the frame's noise and pixel
-// footprint (scale-free); given, they are fixed lengths as in the paper.
-void addParameterOptions(CLI::App& app, floodplane::Params& params) {
-  app.add_option("--distance-threshold", params.distance_threshold,
-                 "sigma_plane [m]: largest point-to-plane distance in the flood (Eq. 2); default: "
-                 "3 noise deviations (the paper: 0.01)");
-  app.add_option("--seed-size", params.seed_size,
-                 "sigma_seed [m]: side of the seed cube; default: from the noise and the pixel size (the paper: 0.06)");
-  app.add_option("--angular-threshold", params.angular_threshold,
-                 "theta_angle [rad]: largest angle between normals in the seed and merge tests")
-      ->capture_default_str();
-  app.add_option("--merge-distance", params.merge_distance,
-                 "sigma_plane-merge [m]: largest centroid-to-plane distance of merging planes; default: "
-                 "3 noise deviations (the paper: 0.03)");
-  app.add_option("--min-inliers", params.min_inliers,
-                 "Smallest number of points of a plane; default: one pixel in a thousand");
-  app.add_option("--subsample", params.subsampling,
-                 "Segment every n-th pixel of every n-th row (1, 2, 4 or 8); labels stay full size")
-      ->capture_default_str();
-  app.add_option("--maximum-curvature", params.maximum_curvature,
-                 "Largest curvature of a plane (1/3 accepts every plane)")
-      ->capture_default_str();
-  app.add_option("--depth-noise-coefficient", params.depth_noise_coefficient,
-                 "c [1/m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
-  app.add_option("--depth-noise-constant", params.depth_noise_constant,
-                 "sigma_0 [m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
-}
-
-void addDepthImageOptions(CLI::App& app, Options& options) {
-  app.add_option("--intrinsics", options.intrinsics,
-                 "fx,fy,cx,cy [pixels] of the depth camera; needed for depth PNG input")
-      ->delimiter(',')
-      ->expected(4);
-  app.add_option("--depth-scale", options.depth_scale,
-                 "Depth PNG units per metre (1000: millimetres; 5000: the TUM RGB-D benchmark)")
-      ->capture_default_str();
-}
-
-// The depth camera of the command line, if it names one; throws std::invalid_argument for
-// intrinsics the back-projection cannot use.
-std::optional<floodplane::io::DepthCamera> depthCamera(const Options& options) {
-  if (options.intrinsics.empty()) return std::nullopt;
-  const std::vector<double>& k = options.intrinsics;
-  const floodplane::io::DepthCamera camera{k.at(0), k.at(1), k.at(2), k.at(3), options.depth_scale};
-  const std::string problem = camera.problem();
-  if (!problem.empty()) throw std::invalid_argument("--intrinsics fx,fy,cx,cy / --depth-scale: " + problem);
-  return camera;
-}
-
-// The files a directory contributes: PCD files, and depth images once there is a camera.
-std::vector<std::string> inputExtensions(const Options& options) {
-  if (!options.camera) return {".pcd"};
-  return {".pcd", floodplane::io::kDepthImageExtension};
-}
-
-// A depth image among the inputs while no camera is given: said once, before any work.
-std::optional<std::string> missingCamera(const std::vector<floodplane::io::InputFile>& files, const Options& options) {
-  if (options.camera) return std::nullopt;
-  for (const floodplane::io::InputFile& file : files) {
-    if (file.error.empty() && floodplane::io::isDepthImagePath(file.path)) {
-      return "depth image " + file.path + " needs --intrinsics fx,fy,cx,cy (and --depth-scale unless in millimetres)";
-    }
-  }
-  return std::nullopt;
 }
 
 void addOutputFlags(CLI::App& app, Options& options) {
   app.add_flag("--ascii", options.ascii, "Write the label PCD as text (default: binary compressed)");
-  app.add_flag("--png", options.png, "Also write <name>.labels.png (a colour per plane)");
+  app.add_flag("--png", options.png,
+               "Also write <name>.labels.png, a pixel per point: each plane in a colour of its own (label k always "
+               "the same colour), near-black where a point is on no plane, white where there is no point (no "
+               "depth)");
+  app.add_flag("--overlay", options.overlay,
+               "Also write <name>.overlay.png: the input's own colours (its rgb field) with each plane's colour "
+               "blended half over its pixels, white where there is no point. An input without colour (no rgb "
+               "field) gets a note instead; depth images have none");
   app.add_flag("--json", options.json, "Also write <name>.planes.json (planes, parameters, time)");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
   app.add_flag("--track", options.track,
@@ -221,20 +176,6 @@ void addViewOptions(CLI::App& app, Options& options) {
       ->needs(snapshot);
 }
 
-// Feeds the options to the library's setters, which reject bad values with a message naming
-// the setter; the app reports that message rather than repeating the rules here.
-void applyParams(Segmentation& segmentation, const floodplane::Params& params) {
-  if (params.distance_threshold) segmentation.setDistanceThreshold(*params.distance_threshold);
-  if (params.seed_size) segmentation.setSeedSize(*params.seed_size);
-  segmentation.setAngularThreshold(params.angular_threshold);
-  if (params.merge_distance) segmentation.setMergeDistance(*params.merge_distance);
-  if (params.min_inliers) segmentation.setMinInliers(*params.min_inliers);
-  segmentation.setSubsampling(params.subsampling);
-  segmentation.setMaximumCurvature(params.maximum_curvature);
-  if (params.depth_noise_coefficient) segmentation.setDepthNoiseCoefficient(*params.depth_noise_coefficient);
-  if (params.depth_noise_constant) segmentation.setDepthNoiseConstant(*params.depth_noise_constant);
-}
-
 // Everything segmentAndRefine gives for one cloud, and the time it took.
 struct Segmented {
   Segmentation::Regions regions;
@@ -289,6 +230,7 @@ struct FileResult {
   std::size_t width = 0;
   std::size_t height = 0;
   std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
+  std::string note;                                   ///< said on stderr unless --quiet: an output not written
 };
 
 // Reads, segments and writes one input, the index-th; throws std::runtime_error saying what
@@ -321,13 +263,21 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
     pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
                                options.ascii);
   }
+  const std::vector<std::uint8_t> has_point = floodplane::io::finitePoints(*points);
   if (options.png) {
-    floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, points->width, points->height));
+    floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, has_point, points->width, points->height));
+  }
+  FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}, {}};
+  if (options.overlay) {
+    if (const std::optional<floodplane::io::RgbImage> colours = floodplane::io::frameColours(frame)) {
+      floodplane::io::writePng(paths.overlay, floodplane::io::overlayImage(labels, has_point, *colours));
+    } else {
+      result.note = "no colour (rgb field) to lay the labels over: " + paths.overlay + " not written";
+    }
   }
   if (options.json) {
     writeReport(paths.json, input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds());
   }
-  FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}};
   if (options.snapshot || options.view) {
     result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients,
                                            segmentation.getTrackIds());
@@ -436,6 +386,9 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       try {
         writeSnapshotOf(item.paths, *outcome.result, options);
         if (!options.quiet) printResult(item.file->path, *outcome.result, item.paths.pcd);
+        if (!options.quiet && !outcome.result->note.empty()) {
+          std::cerr << "pcd_segment: note: " << item.file->path << ": " << outcome.result->note << "\n";
+        }
         if (options.view && outcome.result->scene) {
           floodplane::view::showWindow(*outcome.result->scene, "pcd_segment: " + item.file->path);
         }
@@ -477,7 +430,7 @@ bool writeTrackSummary(const pcd_segment::TrackSummary& summary, const Options& 
 // --view and --snapshot FILE are about one input, and both need a display: checked before any
 // work, so that a batch does not segment everything and then fail on every image. Returns
 // the exit code when the program is done.
-std::optional<int> checkViewOptions(const CLI::App& app, const Options& options, std::size_t inputs) {
+std::optional<int> checkViewOptions(CLI::App& app, const Options& options, std::size_t inputs) {
   if (options.view && inputs > 1) {
     return floodplane::apps::usageError(app, "--view shows one input, but there are " + std::to_string(inputs));
   }
@@ -516,32 +469,48 @@ int main(int argc, char** argv) {
   CLI::App app{kDescription, "pcd_segment"};
   floodplane::apps::addVersionFlag(app);
   addInputOutputOptions(app, options);
-  addParameterOptions(app, options.params);
-  addDepthImageOptions(app, options);
+  floodplane::apps::addParameterOptions(app, options.params);
+  floodplane::apps::addDepthInputOptions(app, options.depth);
   addOutputFlags(app, options);
   addViewOptions(app, options);
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
 
-  Segmentation segmentation;
   try {
-    applyParams(segmentation, options.params);
-    options.camera = depthCamera(options);
+    // The library's own check of the values, before any work; its message names its fields.
+    Segmentation().setParams(options.params);
+  } catch (const std::invalid_argument& e) {
+    return floodplane::apps::usageError(app, floodplane::apps::inFlagTerms(e.what()));
+  }
+  try {
+    options.camera = floodplane::apps::depthCamera(options.depth);
   } catch (const std::invalid_argument& e) {
     return floodplane::apps::usageError(app, e.what());
   }
 
   const std::vector<floodplane::io::InputFile> files =
-      floodplane::io::expandInputs(options.inputs, inputExtensions(options));
-  if (const std::optional<std::string> problem = missingCamera(files, options)) {
+      floodplane::apps::expandFrameInputs(options.inputs, options.camera.has_value());
+  if (const std::optional<std::string> problem = floodplane::apps::missingCamera(files, options.camera.has_value())) {
     return floodplane::apps::usageError(app, *problem);
   }
-  const bool single_file = pcd_segment::namesPcdFile(options.output);
+  bool single_file = false;
+  try {
+    single_file = floodplane::apps::outputKind("-o", options.output, {".pcd"}, kOutputMeaning) ==
+                  floodplane::apps::OutputKind::file;
+  } catch (const std::invalid_argument& e) {
+    return floodplane::apps::usageError(app, e.what());
+  }
   if (single_file && files.size() > 1) {
     // A directory called "x.pcd" is almost surely a mistake, so this is refused.
     return floodplane::apps::usageError(app, "-o " + options.output + " names one .pcd file, but there are " +
                                                  std::to_string(files.size()) + " inputs; give a directory");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
+  if (options.overlay && std::all_of(files.begin(), files.end(), [](const floodplane::io::InputFile& file) {
+        return floodplane::io::isDepthImagePath(file.path);
+      })) {
+    return floodplane::apps::usageError(
+        app, "--overlay lays the labels over the input's colours, and depth images have none");
+  }
   if (options.cold_starts && !options.track) {
     return floodplane::apps::usageError(app, "--cold-starts turns off the head start of --track: it needs --track");
   }
@@ -565,8 +534,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   pcd_segment::TrackSummary summary;
-  const std::size_t failed = segmentAll(files, options, single_file, segmentation.getParams(),
-                                        options.track ? &summary : nullptr, motions ? &*motions : nullptr);
+  const std::size_t failed = segmentAll(files, options, single_file, options.params, options.track ? &summary : nullptr,
+                                        motions ? &*motions : nullptr);
   if (failed > 0 && files.size() > 1) {
     std::cerr << "pcd_segment: " << failed << " of " << files.size() << " inputs failed\n";
   }

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "common/cli.h"
+#include "common/output_target.h"
 #include "io/atomic_file.h"
 #include "io/label_palette.h"
 #include "io/pcd_file.h"
@@ -130,8 +131,12 @@ void writeFrame(const std::string& stem, const synth::RenderedFrame& frame, cons
       options.ascii ? floodplane::io::PcdEncoding::ascii : floodplane::io::PcdEncoding::binary_compressed);
   floodplane::io::writeBytesAtomically(stem + ".planes.json", synth::groundTruthJson(frame));
   if (options.png) {
-    floodplane::io::writePng(stem + ".labels.png",
-                             floodplane::io::labelImage(frame.labels, frame.intrinsics.width, frame.intrinsics.height));
+    std::vector<std::uint8_t> has_point;
+    has_point.reserve(frame.points.size());
+    for (const Eigen::Vector3f& point : frame.points) has_point.push_back(point.allFinite() ? 1 : 0);
+    floodplane::io::writePng(
+        stem + ".labels.png",
+        floodplane::io::labelImage(frame.labels, has_point, frame.intrinsics.width, frame.intrinsics.height));
   }
 }
 
@@ -448,7 +453,10 @@ int main(int argc, char** argv) {
   floodplane::apps::addVersionFlag(app);
   // No existence check here: a missing file is reported with the others at the end.
   app.add_option("scenes", options.scene_files, "Scene files to render");
-  app.add_option("-o,--output-dir", options.output_dir, "Directory for the outputs (created if missing)")->required();
+  app.add_option("-o,--output-dir", options.output_dir,
+                 "Directory for the outputs (created if missing). A name with an extension (scenes.pcd) is "
+                 "refused unless the directory exists or the name ends in /")
+      ->required();
   app.add_option("--random", options.random_count,
                  "Render N generated scenes, seeds S to S + N - 1, instead of scene files")
       ->check(CLI::Range(1, kMaxRandomScenes));
@@ -490,7 +498,10 @@ int main(int argc, char** argv) {
   width->needs(height);
   height->needs(width);
   app.add_flag("--ascii", options.ascii, "Write the PCDs as text, as pcd_segment --ascii (default: binary compressed)");
-  app.add_flag("--png", options.png, "Also write <scene>.<sensor>.labels.png (ground truth)");
+  app.add_flag("--png", options.png,
+               "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels: each "
+               "plane in a colour of its own, near-black where a point is on no plane, white where the sensor saw "
+               "nothing");
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json (<scene>.boards.json with --family boards)");
@@ -525,6 +536,12 @@ int main(int argc, char** argv) {
   }
   if (const std::string problem = quirkInconsistency(options); !problem.empty())
     return floodplane::apps::usageError(app, problem);
+  try {
+    floodplane::apps::outputKind("-o", options.output_dir, {},
+                                 "-o names a directory: pcd_synth writes several files per scene");
+  } catch (const std::invalid_argument& error) {
+    return floodplane::apps::usageError(app, error.what());
+  }
 
   try {
     fs::create_directories(options.output_dir);

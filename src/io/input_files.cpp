@@ -21,18 +21,41 @@ std::string extensionList(const std::vector<std::string>& extensions) {
   return list;
 }
 
+// The error of a directory without input files: what it holds instead, when that is files of
+// a skipped extension.
+InputFile withoutInputs(const std::string& directory, const std::vector<std::string>& extensions,
+                        const std::vector<SkippedExtension>& skipped, const std::vector<std::size_t>& skipped_counts) {
+  const std::string none = "directory contains no " + extensionList(extensions) + " files";
+  for (std::size_t k = 0; k < skipped.size(); ++k) {
+    if (skipped_counts[k] == 0) continue;
+    const std::size_t count = skipped_counts[k];
+    return {directory,
+            none + "; its " + std::to_string(count) + " " + skipped[k].extension +
+                (count == 1 ? " file is " : " files are ") + skipped[k].needs,
+            true};
+  }
+  return {directory, none};
+}
+
 // The directory's input files, sorted; an error message instead when there are none.
-std::vector<InputFile> listDirectory(const std::string& directory, const std::vector<std::string>& extensions) {
+std::vector<InputFile> listDirectory(const std::string& directory, const std::vector<std::string>& extensions,
+                                     const std::vector<SkippedExtension>& skipped) {
   std::vector<std::string> found;
+  std::vector<std::size_t> skipped_counts(skipped.size(), 0);
   std::error_code error;
   for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
     // is_directory follows symlinks, so a link to an input file counts as a file.
-    if (hasExtension(it->path(), extensions) && !fs::is_directory(it->path())) {
+    if (fs::is_directory(it->path())) continue;
+    if (hasExtension(it->path(), extensions)) {
       found.push_back(it->path().string());
+      continue;
+    }
+    for (std::size_t k = 0; k < skipped.size(); ++k) {
+      if (it->path().extension() == skipped[k].extension) ++skipped_counts[k];
     }
   }
   if (error) return {{directory, "cannot list directory: " + error.message()}};
-  if (found.empty()) return {{directory, "directory contains no " + extensionList(extensions) + " files"}};
+  if (found.empty()) return {withoutInputs(directory, extensions, skipped, skipped_counts)};
   std::sort(found.begin(), found.end());
   std::vector<InputFile> files;
   for (std::string& path : found) files.push_back({std::move(path), ""});
@@ -42,7 +65,8 @@ std::vector<InputFile> listDirectory(const std::string& directory, const std::ve
 }  // namespace
 
 std::vector<InputFile> expandInputs(const std::vector<std::string>& arguments,
-                                    const std::vector<std::string>& extensions) {
+                                    const std::vector<std::string>& extensions,
+                                    const std::vector<SkippedExtension>& skipped) {
   std::vector<InputFile> files;
   for (const std::string& argument : arguments) {
     std::error_code error;
@@ -52,7 +76,7 @@ std::vector<InputFile> expandInputs(const std::vector<std::string>& arguments,
     } else if (!fs::is_directory(status)) {
       files.push_back({argument, ""});
     } else {
-      const std::vector<InputFile> listed = listDirectory(argument, extensions);
+      const std::vector<InputFile> listed = listDirectory(argument, extensions, skipped);
       files.insert(files.end(), listed.begin(), listed.end());
     }
   }

@@ -15,14 +15,26 @@ namespace floodplane::io {
 struct InputFile {
   std::string path;
   std::string error;  ///< empty for a file to read
+  /// A directory whose only input files are of a skipped extension (SkippedExtension): what
+  /// the command line lacks, not what the directory holds, is wrong.
+  bool lacks_option = false;
+};
+
+/// Files a directory listing leaves out for now, and what would make them inputs: a
+/// directory that holds such files and no file to read says so instead of "no .pcd files".
+struct SkippedExtension {
+  std::string extension;  ///< ".png"
+  std::string needs;      ///< "depth images, which need --intrinsics fx,fy,cx,cy"
 };
 
 /// Expands the command-line inputs: a file stays itself (whatever its extension: the reader
 /// decides whether it can read it), a directory becomes its files whose extension is one of
 /// `extensions` (not recursive), sorted by path so that batches run in a reproducible order.
 /// A missing input, a directory that cannot be listed and a directory without such files each
-/// become one entry with an error.
+/// become one entry with an error; a directory whose only candidates have an extension of
+/// `skipped` gets an error that names the files and what they need, and lacks_option.
 std::vector<InputFile> expandInputs(const std::vector<std::string>& arguments,
-                                    const std::vector<std::string>& extensions = {".pcd"});
+                                    const std::vector<std::string>& extensions = {".pcd"},
+                                    const std::vector<SkippedExtension>& skipped = {});
 
 }  // namespace floodplane::io

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "io/input_frame.h"
 
+#include <pcl/common/point_tests.h>
+
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
@@ -57,6 +59,24 @@ InputFrame loadInputFrame(const std::string& path, const std::optional<DepthCame
   // Every other file is read as PCD, whatever its extension: the PCD reader's own checks say
   // what is wrong with a file that is not one.
   return readPcdFrame(path);
+}
+
+std::vector<std::uint8_t> finitePoints(const pcl::PointCloud<pcl::PointXYZ>& points) {
+  std::vector<std::uint8_t> finite;
+  finite.reserve(points.size());
+  for (const pcl::PointXYZ& point : points) finite.push_back(pcl::isFinite(point) ? 1 : 0);
+  return finite;
+}
+
+std::optional<RgbImage> frameColours(const InputFrame& frame) {
+  if (!frame.xyzrgb) return std::nullopt;
+  RgbImage image;
+  image.width = frame.xyzrgb->width;
+  image.height = frame.xyzrgb->height;
+  image.pixels.reserve(frame.xyzrgb->size() * 3);
+  for (const pcl::PointXYZRGB& point : *frame.xyzrgb)
+    image.pixels.insert(image.pixels.end(), {point.r, point.g, point.b});
+  return image;
 }
 
 }  // namespace floodplane::io

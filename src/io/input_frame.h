@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/depth_camera.h"
+#include "io/rgb_image.h"
 
 namespace floodplane::io {
 
@@ -41,5 +42,13 @@ bool isDepthImagePath(const std::string& path);
 /// the path, when the file cannot be read as a frame, or when a depth image comes without a
 /// camera; std::invalid_argument when `camera` has a problem().
 InputFrame loadInputFrame(const std::string& path, const std::optional<DepthCamera>& camera = std::nullopt);
+
+/// 1 for each point of `points` whose x, y and z are finite, 0 for the others (no depth: a
+/// hole), row-major: what a label image paints as a hole (io/label_palette.h).
+std::vector<std::uint8_t> finitePoints(const pcl::PointCloud<pcl::PointXYZ>& points);
+
+/// The colour of every pixel of a frame read with colour (InputFrame::xyzrgb), holes
+/// included, as an image on the frame's grid; std::nullopt when the frame has no colour.
+std::optional<RgbImage> frameColours(const InputFrame& frame);
 
 }  // namespace floodplane::io

@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target: the input bytes as a depth PNG through the frame reader (decoding and
-// back-projection). A broken or non-depth PNG must give std::runtime_error; an image that
-// loads must be a consistent frame whose points follow the pinhole model.
+// back-projection), and as a label image (8 or 16 bits). A broken or non-depth PNG must give
+// std::runtime_error; an image that loads must be a consistent frame whose points follow the
+// pinhole model, a label image a label per pixel.
 
 #include <cmath>
 #include <cstdint>
@@ -10,12 +11,21 @@
 
 #include "io/depth_png.h"
 #include "io/input_frame.h"
+#include "io/label_file.h"
 #include "loader_fuzzing.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using floodplane::fuzz::fail;
   const std::string& path = floodplane::fuzz::scratchFile(data, size, ".png");
   const floodplane::io::DepthCamera camera{525.0, 525.0, 319.5, 239.5, 5000.0};
+  try {
+    const floodplane::io::LabelGrid grid = floodplane::io::readLabelFile(path);
+    if (grid.width == 0 || grid.labels.size() != std::size_t(grid.width) * std::size_t(grid.height)) {
+      fail("a label image's labels do not fill its grid");
+    }
+  } catch (const std::runtime_error&) {
+    // the expected outcome for a broken file or one that is no label image
+  }
   floodplane::io::DepthImage image;
   floodplane::io::InputFrame frame;
   try {

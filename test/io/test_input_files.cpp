@@ -84,4 +84,32 @@ TEST(ExpandInputs, ListsTheExtensionsItIsGiven) {
   EXPECT_EQ(none[0].error, "directory contains no .ply files");
 }
 
+// A directory whose only candidates are of a skipped extension says what they need, not just
+// that it has no input files; one that holds an input file leaves the skipped files out.
+TEST(ExpandInputs, NamesWhatTheSkippedFilesOfADirectoryWithoutInputsNeed) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  fs::create_directory(dir.path() / "depth");
+  for (const char* name : {"a.png", "b.png", "notes.txt"}) touch(dir.path() / "depth" / name);
+  const std::vector<floodplane::io::SkippedExtension> skipped = {{".png", "depth images, which need --intrinsics"}};
+  const auto files = expandInputs({(dir.path() / "depth").string()}, {".pcd"}, skipped);
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0].error,
+            "directory contains no .pcd files; its 2 .png files are depth images, which need --intrinsics");
+  EXPECT_TRUE(files[0].lacks_option);
+  touch(dir.path() / "depth" / "c.pcd");
+  const auto mixed = expandInputs({(dir.path() / "depth").string()}, {".pcd"}, skipped);
+  ASSERT_EQ(mixed.size(), 1u);
+  EXPECT_EQ(fs::path(mixed[0].path).filename(), "c.pcd");
+  EXPECT_TRUE(mixed[0].error.empty());
+  EXPECT_FALSE(mixed[0].lacks_option);
+  // Without skipped files the error is the plain one.
+  fs::create_directory(dir.path() / "text");
+  touch(dir.path() / "text" / "notes.txt");
+  const auto text = expandInputs({(dir.path() / "text").string()}, {".pcd"}, skipped);
+  ASSERT_EQ(text.size(), 1u);
+  EXPECT_EQ(text[0].error, "directory contains no .pcd files");
+  EXPECT_FALSE(text[0].lacks_option);
+}
+
 }  // namespace

@@ -44,6 +44,19 @@ inline std::size_t lineCount(const std::string& text) {
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
+// A usage error as every floodplane app reports it: exit code 2 and one line on stderr,
+// "<app>: error: <message naming what is wrong> (see --help)", without the usage after it.
+inline void expectUsageError(const Result& result, const std::string& app, const std::string& part) {
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+  EXPECT_EQ(result.err.rfind(app + ": error: ", 0), 0u) << result.err;
+  EXPECT_TRUE(contains(result.err, part)) << "expected '" << part << "' in: " << result.err;
+  const std::string end = " (see --help)\n";
+  EXPECT_TRUE(result.err.size() >= end.size() &&
+              result.err.compare(result.err.size() - end.size(), end.size(), end) == 0)
+      << result.err;
+}
+
 // xvfb-run on a display of its own. With -a alone, xvfb-run instances started at the same
 // moment (parallel tests, other builds on the machine) all try display 99 first and trip over
 // each other; each starts its search from a number of its own here. -noreset: otherwise the

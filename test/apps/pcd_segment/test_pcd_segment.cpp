@@ -9,6 +9,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -21,8 +22,10 @@
 
 #include "floodplane/params.h"
 #include "floodplane/version.h"
+#include "io/label_palette.h"
 #include "support/app_run.h"
 #include "support/library_labels.h"
+#include "support/png_images.h"
 
 namespace floodplane::test {
 namespace {
@@ -265,6 +268,92 @@ TEST_F(PcdSegment, KeepsColourWhenTheInputHasIt) {
     labels.push_back(labelled[i].label);
   }
   EXPECT_EQ(labels, libraryLabels(scene));
+}
+
+// The label PNG has a pixel per point: each plane in its palette colour, a finite point on no
+// plane near-black, a pixel without a point (no depth) white.
+TEST_F(PcdSegment, LabelPngPaintsPlanesNoPlaneAndHolesApart) {
+  Cloud scene = twoPlaneScene();
+  // Points scattered along their rays, on no surface: finite, and on no plane.
+  for (int v = 30; v < 42; ++v) {
+    for (int u = 100; u < 112; ++u) {
+      const float scale = 0.5f + 0.07f * static_cast<float>((u * 7 + v * 13) % 10);
+      pcl::PointXYZ& p = scene.at(u, v);
+      p.x *= scale;
+      p.y *= scale;
+      p.z *= scale;
+    }
+  }
+  const std::string input = writeScene("scene.pcd", scene);
+  ASSERT_EQ(run({input, "-o", path("out").string(), "--png"}).exit_code, 0);
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/scene.labels.pcd").string(), labelled), 0);
+  const floodplane::io::RgbImage image = readPng(path("out/scene.labels.png"));
+  ASSERT_EQ(image.width, labelled.width);
+  ASSERT_EQ(image.height, labelled.height);
+  std::size_t holes = 0, no_plane = 0, planes = 0;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    const bool finite = std::isfinite(labelled[i].z);
+    const std::array<std::uint8_t, 3> expected =
+        finite ? floodplane::io::labelColor(labelled[i].label) : floodplane::io::kHoleColor;
+    const std::array<std::uint8_t, 3> pixel{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
+    ASSERT_EQ(pixel, expected) << "pixel " << i << ", label " << labelled[i].label;
+    holes += finite ? 0 : 1;
+    no_plane += finite && labelled[i].label == 0 ? 1 : 0;
+    planes += labelled[i].label != 0 ? 1 : 0;
+  }
+  EXPECT_EQ(holes, 16u) << "the scene's block without returns";
+  EXPECT_GE(no_plane, 50u) << "the scattered points";
+  EXPECT_GT(planes, labelled.size() / 2);
+  EXPECT_NE(floodplane::io::kHoleColor, floodplane::io::kNoPlaneColor);
+}
+
+// --overlay: the input's own colours with each plane's colour blended half over it, holes white.
+TEST_F(PcdSegment, OverlayBlendsThePlaneColoursOverTheInputsColours) {
+  const Cloud scene = twoPlaneScene();
+  pcl::PointCloud<pcl::PointXYZRGB> coloured;
+  pcl::copyPointCloud(scene, coloured);
+  for (std::size_t i = 0; i < coloured.size(); ++i) {
+    coloured[i].r = static_cast<std::uint8_t>(i);
+    coloured[i].g = static_cast<std::uint8_t>(i / 7);
+    coloured[i].b = static_cast<std::uint8_t>(255 - i % 200);
+  }
+  ASSERT_EQ(pcl::io::savePCDFileBinary(path("rgb.pcd").string(), coloured), 0);
+  const Result result = run({path("rgb.pcd").string(), "-o", path("one/frame.pcd").string(), "--overlay"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("one/frame.pcd").string(), labelled), 0);
+  const floodplane::io::RgbImage overlay = readPng(path("one/frame.overlay.png"));
+  ASSERT_EQ(overlay.width, labelled.width);
+  ASSERT_EQ(overlay.height, labelled.height);
+  std::size_t blended = 0;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    const std::array<int, 3> own{coloured[i].r, coloured[i].g, coloured[i].b};
+    const bool finite = std::isfinite(labelled[i].z);
+    const bool on_plane = labelled[i].label != 0 && finite;
+    const auto colour = floodplane::io::labelColor(labelled[i].label);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int expected = !finite ? floodplane::io::kHoleColor[c] : on_plane ? (own[c] + colour[c] + 1) / 2 : own[c];
+      ASSERT_EQ(overlay.pixels[3 * i + c], expected) << "pixel " << i << ", channel " << c;
+    }
+    blended += on_plane ? 1 : 0;
+  }
+  EXPECT_GT(blended, labelled.size() / 2);
+}
+
+// An input without colour gets a note, not an overlay and not an error; the batch goes on.
+TEST_F(PcdSegment, OverlayOfAnInputWithoutColourIsANote) {
+  const std::string input = writeScene("plain.pcd");
+  const Result result = run({input, "-o", path("out").string(), "--overlay"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+  EXPECT_TRUE(contains(result.err, "pcd_segment: note: " + input + ": no colour")) << result.err;
+  EXPECT_TRUE(fs::exists(path("out/plain.labels.pcd")));
+  EXPECT_FALSE(fs::exists(path("out/plain.overlay.png")));
+  const Result quiet = run({input, "-o", path("out").string(), "--overlay", "-q"});
+  ASSERT_EQ(quiet.exit_code, 0);
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
 }
 
 TEST_F(PcdSegment, WritesNoColourFieldWhenTheInputHasNone) {
@@ -578,39 +667,70 @@ TEST_F(PcdSegment, RejectsACloudWithoutXyz) {
   expectRejected(path("normals.pcd").string(), "no x y z");
 }
 
-TEST_F(PcdSegment, RejectsBadOptionValuesWithUsageAndExitCodeTwo) {
+// One line naming the flag, not the library's field or setter, and not the whole help.
+TEST_F(PcdSegment, RejectsBadOptionValuesInOneLineNamingTheFlag) {
   const std::string input = writeScene("scene.pcd");
-  const std::vector<std::vector<std::string>> bad = {{"--distance-threshold", "-0.01"},
-                                                     {"--seed-size", "0"},
-                                                     {"--angular-threshold", "2"},
-                                                     {"--merge-distance", "nan"},
-                                                     {"--subsample", "3"},
-                                                     {"--min-inliers", "-4"},
-                                                     {"--seed-size", "abc"},
-                                                     {"--depth-noise-coefficient", "-1"},
-                                                     {"--jobs", "0"},
-                                                     {"-j", "many"},
-                                                     {"--no-such-option"}};
-  for (const auto& option : bad) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+      {{"--distance-threshold", "-0.01"}, "--distance-threshold must be"},
+      {{"--seed-size", "0"}, "--seed-size must be"},
+      {{"--angular-threshold", "2"}, "--angular-threshold must be"},
+      {{"--merge-distance", "nan"}, "--merge-distance must be"},
+      {{"--subsample", "3"}, "--subsample must be 1, 2, 4 or 8, got 3"},
+      {{"--min-inliers", "-4"}, "--min-inliers"},
+      {{"--maximum-curvature", "-1"}, "--maximum-curvature must be"},
+      {{"--seed-size", "abc"}, "--seed-size"},
+      {{"--depth-noise-coefficient", "-1"}, "--depth-noise-coefficient must be"},
+      {{"--depth-noise-constant", "-1"}, "--depth-noise-constant must be"},
+      {{"--jobs", "0"}, "--jobs"},
+      {{"-j", "many"}, "--jobs"},
+      {{"--no-such-option"}, "--no-such-option"}};
+  for (const auto& [option, message] : bad) {
     std::vector<std::string> arguments = {input, "-o", path("out").string()};
     arguments.insert(arguments.end(), option.begin(), option.end());
     SCOPED_TRACE(option[0]);
     const Result result = run(arguments);
-    EXPECT_EQ(result.exit_code, 2) << result.err;
-    EXPECT_TRUE(contains(result.err, "error")) << result.err;
-    EXPECT_TRUE(contains(result.err, "Usage:")) << result.err;
+    expectUsageError(result, "pcd_segment", message);
+    for (const std::string library_name : {"subsampling", "setSubsampling", "seed_size", "floodplane::"}) {
+      EXPECT_FALSE(contains(result.err, library_name)) << result.err;
+    }
     EXPECT_FALSE(fs::exists(path("out"))) << "nothing is written after a usage error";
   }
-  // The library's message names the setter that refused the value.
-  const Result subsample = run({input, "-o", path("out").string(), "--subsample", "3"});
-  EXPECT_TRUE(contains(subsample.err, "setSubsampling")) << subsample.err;
+  expectUsageError(run({input}), "pcd_segment", "--output is required");
+  expectUsageError(run({"-o", path("out").string()}), "pcd_segment", "INPUT is required");
 }
 
 TEST_F(PcdSegment, RefusesASinglePcdOutputForSeveralInputs) {
   const Result result = run({writeScene("a.pcd"), writeScene("b.pcd"), "-o", path("both.pcd").string()});
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(contains(result.err, "2 inputs")) << result.err;
+  expectUsageError(result, "pcd_segment", "2 inputs");
   EXPECT_FALSE(fs::exists(path("both.pcd")));
+  // A folder is several inputs when it holds several files.
+  fs::create_directory(path("in"));
+  writeScene("in/a.pcd");
+  writeScene("in/b.pcd");
+  expectUsageError(run({path("in").string(), "-o", path("both.pcd").string()}), "pcd_segment", "2 inputs");
+  EXPECT_FALSE(fs::exists(path("both.pcd")));
+}
+
+// -o is a file when it ends in .pcd, a directory when it ends in / or has no extension or
+// exists as one; any other extension is refused rather than made a directory of that name.
+TEST_F(PcdSegment, OutputIsAPcdFileOrADirectoryAndNothingElse) {
+  const std::string input = writeScene("scene.pcd");
+  for (const std::string refused : {"o/x.txt", "o/x.png", "o/x.json", "o/results.v2"}) {
+    SCOPED_TRACE(refused);
+    expectUsageError(run({input, "-o", path(refused).string()}), "pcd_segment",
+                     "-o " + path(refused).string() + " looks like a");
+    EXPECT_FALSE(fs::exists(path("o")));
+  }
+  ASSERT_EQ(run({input, "-o", path("o/x.pcd").string(), "--png"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/x.pcd")));
+  EXPECT_TRUE(fs::is_regular_file(path("o/x.png")));
+  ASSERT_EQ(run({input, "-o", path("o/results.v2").string() + "/"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/results.v2/scene.labels.pcd")));
+  // An existing directory stays a directory, whatever its name.
+  ASSERT_EQ(run({input, "-o", path("o/results.v2").string(), "--json"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/results.v2/scene.planes.json")));
+  ASSERT_EQ(run({input, "-o", path("o/plain").string()}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/plain/scene.labels.pcd")));
 }
 
 TEST_F(PcdSegment, HelpShowsTheLibraryDefaultsAndVersionPrintsTheVersion) {

@@ -141,8 +141,26 @@ TEST_F(PcdSegmentDepth, ReadsADirectorysDepthImagesOnlyWithIntrinsics) {
 TEST_F(PcdSegmentDepth, APngWithoutIntrinsicsIsAUsageError) {
   const std::string input = writeDepth("frame.png");
   const Result result = run({input, "-o", path("out").string()});
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(contains(result.err, "needs --intrinsics fx,fy,cx,cy")) << result.err;
+  expectUsageError(result, "pcd_segment", "needs --intrinsics fx,fy,cx,cy");
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
+// A folder of depth images and no PCD files: what is missing is --intrinsics, not PCD files.
+TEST_F(PcdSegmentDepth, AFolderOfPngsWithoutIntrinsicsSaysThatIntrinsicsIsMissing) {
+  fs::create_directory(path("depth"));
+  writeDepth("depth/a.png");
+  writeDepth("depth/b.png");
+  const Result result = run({path("depth").string(), "-o", path("out").string()});
+  expectUsageError(result, "pcd_segment",
+                   path("depth").string() + ": directory contains no .pcd files; its 2 .png files");
+  EXPECT_TRUE(contains(result.err, "--intrinsics is missing")) << result.err;
+  EXPECT_FALSE(fs::exists(path("out")));
+}
+
+TEST_F(PcdSegmentDepth, OverlayOfDepthImagesAloneIsAUsageError) {
+  const std::string input = writeDepth("frame.png");
+  expectUsageError(run({input, "-o", path("out").string(), "--intrinsics", kIntrinsics, "--overlay"}), "pcd_segment",
+                   "--overlay lays the labels over the input's colours, and depth images have none");
   EXPECT_FALSE(fs::exists(path("out")));
 }
 
@@ -160,12 +178,15 @@ TEST_F(PcdSegmentDepth, RefusesBadIntrinsicsWithUsageAndExitCodeTwo) {
     arguments.insert(arguments.end(), option.begin(), option.end());
     SCOPED_TRACE(option[1] + (option.size() > 2 ? " " + option[3] : ""));
     const Result result = run(arguments);
-    EXPECT_EQ(result.exit_code, 2) << result.err;
-    EXPECT_TRUE(contains(result.err, "error")) << result.err;
+    expectUsageError(result, "pcd_segment", option[option.size() - 2]);
     EXPECT_FALSE(fs::exists(path("out")));
   }
   const Result named = run({input, "-o", path("out").string(), "--intrinsics", "0,525,319.5,239.5"});
-  EXPECT_TRUE(contains(named.err, "fx must be")) << named.err;
+  EXPECT_TRUE(contains(named.err, "--intrinsics fx,fy,cx,cy: fx must be")) << named.err;
+  const Result scale = run({input, "-o", path("out").string(), "--intrinsics", kIntrinsics, "--depth-scale", "0"});
+  EXPECT_TRUE(contains(scale.err, "--depth-scale must be")) << scale.err;
+  expectUsageError(run({input, "-o", path("out").string(), "--depth-scale", "5000"}), "pcd_segment",
+                   "--depth-scale requires --intrinsics");
 }
 
 TEST_F(PcdSegmentDepth, RejectsAnEightBitPng) {

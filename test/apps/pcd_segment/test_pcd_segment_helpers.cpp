@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <iterator>
 #include <stdexcept>
 #include <mutex>
@@ -29,8 +30,6 @@ TEST(OutputPaths, PutsOutputsOfADirectoryRunUnderTheInputsName) {
 }
 
 TEST(OutputPaths, PutsPngAndJsonNextToASingleOutputFileWithItsStem) {
-  EXPECT_TRUE(pcd_segment::namesPcdFile("res/scene.pcd"));
-  EXPECT_FALSE(pcd_segment::namesPcdFile("res/scene.pcd/"));
   const auto paths = pcd_segment::outputPaths("in.pcd", "res/scene.pcd", true);
   EXPECT_EQ(paths.pcd, "res/scene.pcd");
   EXPECT_EQ(paths.png, "res/scene.png");
@@ -144,19 +143,28 @@ TEST(TrackSummary, RefusesAFrameTheTrackerDidNotTake) {
 }
 
 // The items finish in reverse order (the first sleeps longest), yet are reported in order,
-// each once, with its own result; every thread makes one worker.
+// each once, with its own result; every thread that works makes its one worker, and no more
+// threads work than there are jobs.
 TEST(RunInOrder, ReportsItemsInOrderWhateverOrderTheyFinishIn) {
   constexpr std::size_t kItems = 12;
-  std::atomic<int> workers{0};
+  std::mutex mutex;
+  std::vector<std::thread::id> worker_threads;
+  std::set<std::thread::id> work_threads;
   std::vector<std::size_t> reported;
   std::vector<std::string> results;
   pcd_segment::runInOrder(
       kItems, 3,
-      [&workers]() {
-        ++workers;
+      [&]() {
+        std::lock_guard<std::mutex> lock(mutex);
+        worker_threads.push_back(std::this_thread::get_id());
         return std::this_thread::get_id();
       },
-      [](std::thread::id&, std::size_t i) {
+      [&](std::thread::id& worker, std::size_t i) {
+        EXPECT_EQ(worker, std::this_thread::get_id()) << "a worker is its own thread's";
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          work_threads.insert(std::this_thread::get_id());
+        }
         std::this_thread::sleep_for(std::chrono::milliseconds(2 * static_cast<int>(kItems - i)));
         return "item " + std::to_string(i);
       },
@@ -169,18 +177,19 @@ TEST(RunInOrder, ReportsItemsInOrderWhateverOrderTheyFinishIn) {
     EXPECT_EQ(reported[i], i);
     EXPECT_EQ(results[i], "item " + std::to_string(i));
   }
-  EXPECT_EQ(workers.load(), 3);
+  EXPECT_EQ(worker_threads.size(), work_threads.size());
+  EXPECT_EQ(std::set<std::thread::id>(worker_threads.begin(), worker_threads.end()), work_threads);
+  EXPECT_LE(work_threads.size(), 3u);
 }
 
-// Work runs on other threads than the reports, and never more than 2 * jobs items ahead of
-// the last report: a slow first item holds the rest back.
+// Items run at once on several threads, and never more than 2 * jobs items ahead of the last
+// report: a slow first item holds the rest back.
 TEST(RunInOrder, RunsOnThreadsAndKeepsAtMostTwiceTheJobsWaiting) {
   constexpr unsigned kJobs = 2;
   std::mutex mutex;
   std::size_t reported = 0;
   std::size_t furthest_ahead = 0;
   std::set<std::thread::id> work_threads;
-  const std::thread::id caller = std::this_thread::get_id();
   pcd_segment::runInOrder(
       20, kJobs, []() { return 0; },
       [&](int&, std::size_t i) {
@@ -198,8 +207,39 @@ TEST(RunInOrder, RunsOnThreadsAndKeepsAtMostTwiceTheJobsWaiting) {
       });
   EXPECT_EQ(reported, 20u);
   EXPECT_LE(furthest_ahead, 2 * kJobs);
-  EXPECT_EQ(work_threads.count(caller), 0u);
-  EXPECT_GE(work_threads.size(), 1u);
+  EXPECT_EQ(work_threads.size(), kJobs);
+}
+
+// -j N means N items at once, also beyond the machine's cores (a batch waiting on a network
+// file system, say): four items that each wait for all four to have started all start.
+TEST(RunInOrder, RunsAsManyItemsAtOnceAsJobsBeyondTheCores) {
+  constexpr unsigned kJobs = 4;
+  std::mutex mutex;
+  std::condition_variable started_changed;
+  std::size_t started = 0;
+  std::size_t all_started = 0;
+  pcd_segment::runInOrder(
+      kJobs, kJobs, []() { return 0; },
+      [&](int&, std::size_t) {
+        std::unique_lock<std::mutex> lock(mutex);
+        ++started;
+        started_changed.notify_all();
+        // Bounded: with fewer threads than jobs the others never start and this gives up.
+        const bool all = started_changed.wait_for(lock, std::chrono::seconds(5), [&] { return started == kJobs; });
+        return all ? 1 : 0;
+      },
+      [&](std::size_t, int& all) { all_started += static_cast<std::size_t>(all); });
+  EXPECT_EQ(all_started, kJobs);
+}
+
+// An item's failure is its result: the others are reported after it, in order.
+TEST(RunInOrder, GoesOnPastAnItemWhoseResultIsAnError) {
+  std::vector<std::string> reports;
+  pcd_segment::runInOrder(
+      6, 2, []() { return 0; },
+      [](int&, std::size_t i) { return i == 2 ? std::string("error") : "item " + std::to_string(i); },
+      [&](std::size_t, std::string& result) { reports.push_back(result); });
+  EXPECT_EQ(reports, (std::vector<std::string>{"item 0", "item 1", "error", "item 3", "item 4", "item 5"}));
 }
 
 // One job: everything on the calling thread, in order, without threads.

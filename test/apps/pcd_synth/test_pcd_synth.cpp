@@ -4,15 +4,20 @@
 // every seed and sensor, scenes made again one at a time byte for byte, saved scene files that
 // render the same frames, sequences of a walking camera (--sequence: every frame's files, the
 // poses a walking step apart, frame 0 the single render, determinism, saved rooms walked as
-// scene files, --look-away turning the camera away and back on the same walk), the boards family
-// (--family boards: its own names and files, none and kinect only), the quirks of real sensors (only their
-// own sensors' frames change, the ground truth lists them), and a clear error and exit code 2 for every bad combination
-// of arguments.
+// scene files, --look-away turning the camera away and back on the same walk), the boards
+// family (--family boards: its own names and files, none and kinect only), the quirks of real
+// sensors (only their own sensors' frames change, the ground truth lists them), the label PNG,
+// and a clear error and exit code 2 for every bad combination of arguments.
 
 #include <gtest/gtest.h>
 
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -21,7 +26,9 @@
 #include <string>
 #include <vector>
 
+#include "io/label_palette.h"
 #include "support/app_run.h"
+#include "support/png_images.h"
 
 namespace floodplane::test {
 namespace {
@@ -34,16 +41,13 @@ class PcdSynth : public AppTest {
     return runShell("exec " + commandLine(PCD_SYNTH_BINARY, arguments));
   }
 
-  // Checks the error naming `reason` in its first line, the usage after it (as every
-  // floodplane app prints), exit code 2, and that nothing was written.
+  // Checks the one-line usage error naming `reason` (as every floodplane app prints it), exit
+  // code 2, and that nothing was written.
   void expectRejected(const std::vector<std::string>& arguments, const std::string& reason) const {
     std::vector<std::string> all = arguments;
     all.insert(all.end(), {"-o", path("rejected").string()});
-    const Result result = run(all);
-    EXPECT_EQ(result.exit_code, 2) << result.err;
-    EXPECT_TRUE(contains(result.err, "Usage: pcd_synth")) << result.err;
-    const std::string first_line = result.err.substr(0, result.err.find('\n'));
-    EXPECT_TRUE(contains(first_line, reason)) << "expected '" << reason << "' in: " << result.err;
+    SCOPED_TRACE(reason);
+    expectUsageError(run(all), "pcd_synth", reason);
     EXPECT_FALSE(fs::exists(path("rejected")));
   }
 };
@@ -327,6 +331,29 @@ TEST_F(PcdSynth, QuirksChangeOnlyTheirSensorsFramesAndTheGroundTruthListsThem) {
   }
 }
 
+// --png draws the ground truth as pcd_segment --png draws labels: a plane's colour where a
+// point is on it, near-black on no plane, white where the sensor saw nothing.
+TEST_F(PcdSynth, LabelPngShowsTheGroundTruthWithHolesWhite) {
+  const Result result = run({std::string(FLOODPLANE_SOURCE_DIR) + "/data/scenes/tabletop.json", "--sensor", "kinect",
+                             "--width", "160", "--height", "120", "--png", "-q", "-o", path("out").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  pcl::PointCloud<pcl::PointXYZL> cloud;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/tabletop.kinect.pcd").string(), cloud), 0);
+  const floodplane::io::RgbImage image = readPng(path("out/tabletop.kinect.labels.png"));
+  ASSERT_EQ(image.width, cloud.width);
+  ASSERT_EQ(image.height, cloud.height);
+  std::size_t holes = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const bool finite = std::isfinite(cloud[i].z);
+    const std::array<std::uint8_t, 3> expected =
+        finite ? floodplane::io::labelColor(cloud[i].label) : floodplane::io::kHoleColor;
+    const std::array<std::uint8_t, 3> pixel{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
+    ASSERT_EQ(pixel, expected) << "pixel " << i;
+    holes += finite ? 0 : 1;
+  }
+  EXPECT_GT(holes, 0u) << "the Kinect model loses returns";
+}
+
 TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "0"}, "--random");
   expectRejected({"--random", "2", "scene.json"}, "not both");
@@ -360,6 +387,13 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   expectRejected({"--random", "1", "--family", "boards", "--sensor", "scanner"}, "--family boards has no scanner");
   expectRejected({"--random", "1", "--family", "boards", "--sensor", "all"}, "--family boards has no scanner");
   expectRejected({"--random", "1", "--family", "boards", "--sequence", "3"}, "--family boards renders single frames");
+  // -o names a directory: a file's name is refused, not made a directory.
+  for (const std::string file : {"scenes.pcd", "scenes.txt"}) {
+    SCOPED_TRACE(file);
+    expectUsageError(run({"--random", "1", "-o", path(file).string()}), "pcd_synth",
+                     "-o " + path(file).string() + " looks like a");
+    EXPECT_FALSE(fs::exists(path(file)));
+  }
 }
 
 }  // namespace

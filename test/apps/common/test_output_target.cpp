@@ -1,0 +1,63 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+// The one rule by which every app's output options name a file or a directory.
+
+#include "common/output_target.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "support/app_run.h"
+
+namespace floodplane::test {
+namespace {
+
+using apps::OutputKind;
+using apps::outputKind;
+
+class OutputTarget : public AppTest {};
+
+OutputKind kindOf(const std::string& output) { return outputKind("-o", output, {".pcd"}, "-o names a .pcd file"); }
+
+TEST_F(OutputTarget, IsAFileWhenItEndsInAnExtensionTheOptionWritesInAnyCase) {
+  EXPECT_EQ(kindOf("res/scene.pcd"), OutputKind::file);
+  EXPECT_EQ(kindOf("res/SCENE.PCD"), OutputKind::file);
+}
+
+TEST_F(OutputTarget, IsADirectoryWithoutExtensionWithATrailingSlashOrWhenItIsOne) {
+  EXPECT_EQ(kindOf("res/out"), OutputKind::directory);
+  EXPECT_EQ(kindOf("res/scene.pcd/"), OutputKind::directory);
+  EXPECT_EQ(kindOf("res/results.v2/"), OutputKind::directory);
+  EXPECT_EQ(kindOf("."), OutputKind::directory);
+  EXPECT_EQ(kindOf(".."), OutputKind::directory);
+  EXPECT_EQ(kindOf(".hidden"), OutputKind::directory);
+  std::filesystem::create_directory(path("old.pcd"));
+  EXPECT_EQ(kindOf(path("old.pcd").string()), OutputKind::directory);
+}
+
+TEST_F(OutputTarget, RefusesAnyOtherExtensionNamingTheFlagAndTheValue) {
+  for (const std::string output : {"o/x.txt", "o/x.png", "o/results.v2"}) {
+    try {
+      kindOf(output);
+      ADD_FAILURE() << output << " was accepted";
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      EXPECT_EQ(message.rfind("-o " + output + " looks like a ", 0), 0u) << message;
+      EXPECT_TRUE(contains(message, "-o names a .pcd file")) << message;
+      EXPECT_TRUE(contains(message, "end a new directory's name with /")) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+  EXPECT_THROW(kindOf(""), std::invalid_argument);
+}
+
+TEST_F(OutputTarget, NamesDirectoriesOnlyWhenTheOptionWritesNoFile) {
+  EXPECT_EQ(outputKind("--png", "pictures", {}, "--png names a directory"), OutputKind::directory);
+  EXPECT_THROW(outputKind("--png", "pictures.png", {}, "--png names a directory"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace floodplane::test

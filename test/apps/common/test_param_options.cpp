@@ -1,0 +1,95 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+// The library's messages about parameters in the apps' terms: the flag of every field.
+
+#include "common/param_options.h"
+
+#include <gtest/gtest.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "floodplane/flood_fill_plane_segmentation.h"
+
+namespace floodplane::test {
+namespace {
+
+struct BadValue {
+  std::string flag;
+  std::function<void(Params&)> spoil;
+};
+
+// One bad value per field that can have one, with the flag the message must name.
+const std::vector<BadValue>& badValues() {
+  static const std::vector<BadValue> values = {
+      {"--distance-threshold", [](Params& p) { p.distance_threshold = -0.01; }},
+      {"--seed-size", [](Params& p) { p.seed_size = 0.0; }},
+      {"--angular-threshold", [](Params& p) { p.angular_threshold = 2.0; }},
+      {"--merge-distance", [](Params& p) { p.merge_distance = std::nan(""); }},
+      {"--subsample", [](Params& p) { p.subsampling = 3; }},
+      {"--maximum-curvature", [](Params& p) { p.maximum_curvature = -1.0; }},
+      {"--depth-noise-coefficient", [](Params& p) { p.depth_noise_coefficient = -1.0; }},
+      {"--depth-noise-constant", [](Params& p) { p.depth_noise_constant = -1.0; }},
+  };
+  return values;
+}
+
+void expectInFlagTerms(const std::string& message, const std::string& flag) {
+  EXPECT_EQ(message.rfind(flag + " ", 0), 0u) << message;
+  for (const std::string library_name :
+       {"floodplane::", "distance_threshold", "seed_size", "angular_threshold", "merge_distance", "subsampling",
+        "maximum_curvature", "depth_noise", "setSubsampling", "setParams"}) {
+    EXPECT_EQ(message.find(library_name), std::string::npos) << message;
+  }
+}
+
+TEST(InFlagTerms, NamesTheFlagOfEveryFieldParamsProblemNames) {
+  for (const BadValue& bad : badValues()) {
+    SCOPED_TRACE(bad.flag);
+    Params params;
+    bad.spoil(params);
+    ASSERT_FALSE(params.problem().empty());
+    expectInFlagTerms(apps::inFlagTerms(params.problem()), bad.flag);
+  }
+  EXPECT_EQ(apps::inFlagTerms(Params().problem()), "");
+}
+
+TEST(InFlagTerms, NamesTheFlagInPlaceOfTheSetterThatRefusedTheValue) {
+  for (const BadValue& bad : badValues()) {
+    SCOPED_TRACE(bad.flag);
+    Params params;
+    bad.spoil(params);
+    try {
+      FloodFillPlaneSegmentation<pcl::PointXYZ>().setParams(params);
+      ADD_FAILURE() << "setParams took a bad value";
+    } catch (const std::invalid_argument& error) {
+      expectInFlagTerms(apps::inFlagTerms(error.what()), bad.flag);
+    }
+  }
+  try {
+    FloodFillPlaneSegmentation<pcl::PointXYZ>().setSubsampling(3);
+    ADD_FAILURE() << "setSubsampling took 3";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(apps::inFlagTerms(error.what()), "--subsample must be 1, 2, 4 or 8, got 3");
+  }
+}
+
+TEST(InFlagTerms, LeavesWordsThatOnlyContainAFieldsNameAlone) {
+  EXPECT_EQ(apps::inFlagTerms("subsamplings and my_seed_size stay"), "subsamplings and my_seed_size stay");
+}
+
+// The mapping's flags are the options' names: every flag a message can name is an option.
+TEST(AddParameterOptions, AddsAnOptionForEveryFlagTheMessagesName) {
+  CLI::App app;
+  Params params;
+  apps::addParameterOptions(app, params);
+  for (const BadValue& bad : badValues()) EXPECT_NO_THROW(app.get_option(bad.flag)) << bad.flag;
+  EXPECT_NO_THROW(app.get_option("--min-inliers"));
+}
+
+}  // namespace
+}  // namespace floodplane::test
