@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerTracking();
   floodplane::bench::registerHeadStart();
   floodplane::bench::registerMemoryFloor();
+  floodplane::bench::registerInterleavedMethods();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -25,5 +25,6 @@ void registerTracking();
 void registerHeadStart();
 /// One pass that reads every point and writes a label: the floor under any segmentation.
 void registerMemoryFloor();
+void registerInterleavedMethods();
 
 }  // namespace floodplane::bench

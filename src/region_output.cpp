@@ -87,15 +87,23 @@ void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSeg
   candidate_of_segment_.assign(merged.segment_count, 0);
   const BlockGrid* blocks = frame.blocks;
   if (blocks) {
-    // The clusters' sums of their blocks' means, each counted as many times as it has
-    // measured pixels: the sizes min_inliers counts, and a scatter about the plane that the
-    // block grid's tolerances describe (the sums of the pixels themselves come with the
-    // full-resolution write).
+    // The clusters' sums of their blocks' means, each counted as many times as it has measured
+    // pixels: the sizes min_inliers counts, and a scatter about the plane that the block grid's
+    // tolerances describe. A cluster one block wide is a line of means, whose plane turns
+    // freely about it: it takes its pixels' own sums (the full-resolution write sums the
+    // pixels of every plane anyway).
     cluster_sums_.assign(merged.segment_count, PlaneSums());
+    cluster_pixel_sums_.assign(merged.segment_count, PlaneSums());
     for (std::size_t i = 0; i < frame.grid.size(); ++i) {
       const std::int32_t segment = merged.labels[i];
-      if (segment != 0) blocks->addMeanTo(i, cluster_sums_[static_cast<std::size_t>(merged.root[segment])]);
+      if (segment == 0) continue;
+      const std::size_t root = static_cast<std::size_t>(merged.root[segment]);
+      blocks->addMeanTo(i, cluster_sums_[root]);
+      blocks->addTo(i, cluster_pixel_sums_[root]);
     }
+    for (std::size_t s = 1; s < merged.segment_count; ++s)
+      if (!std::isfinite(normalUncertainty(cluster_sums_[s].fit(), cluster_sums_[s].count)))
+        cluster_sums_[s] = cluster_pixel_sums_[s];
   }
   // Refinement only adds pixels: drop small ones now. (A filled-in hole counts here, and
   // leaves the count when the labels are written.) At s > 1 the full-resolution write adds

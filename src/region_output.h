@@ -70,7 +70,8 @@ class RegionBuilder {
   PlaneCandidates candidates_;
   std::vector<std::uint32_t> candidate_of_segment_;  // 0 = none, k = candidates_[k]
   std::vector<std::uint32_t> block_labels_;          // s > 1: the label image of the blocks
-  std::vector<PlaneSums> cluster_sums_;              // s > 1: per cluster, of its measured pixels
+  std::vector<PlaneSums> cluster_sums_;              // s > 1: per cluster, of its blocks' means
+  std::vector<PlaneSums> cluster_pixel_sums_;        // s > 1: per cluster, of its measured pixels
   std::vector<std::size_t> queue_;                   // the refinement's
   PlanarityTest planarity_;
   std::vector<PlaneFit> fits_;

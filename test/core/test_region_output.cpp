@@ -54,6 +54,7 @@ struct Merged {
     segmented = full.grid();
     if (s > 1) {
       blocks.read(full.grid(), s);
+      blocks.separateSurfaces(full.grid(), NoiseModel(), kPitch);  // exact data
       segmented = blocks.means();
     }
     // A block takes the segment of its pixels where they all have one, none where it straddles
