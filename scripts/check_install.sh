@@ -76,6 +76,9 @@ check_consumer() {
 
 check_core() {
   grep -qi pcl "$config_dir"/floodplane-core-targets*.cmake && fail "floodplane-core-targets mentions PCL"
+  if [ "$with_pcl" = no ] && [ -n "$(find "$prefix" -name 'flood_fill_plane_segmentation.*')" ]; then
+    fail "the PCL class's headers are installed without the PCL class"
+  fi
   # With PCL findable: the core's package does not look for it.
   configure "$root/examples/consumer/core" "$work/core"
   grep -q '^PCL_DIR' "$work/core/CMakeCache.txt" && fail "find_package(floodplane COMPONENTS core) looked for PCL"
