@@ -1,23 +1,174 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
-# Installs the build tree's floodplane into a temporary prefix, then configures, builds and
-# runs examples/consumer against it: the PCL drop-in, the PCL-free core, and every installed
-# header compiled on its own. Usage: scripts/check_install.sh <build-dir>
+# Installs a build tree's floodplane into a temporary prefix and checks it as its users see it.
+# Usage: scripts/check_install.sh <build-dir> <check>...   with the checks
+#   consumer    examples/consumer (CMake, both components): the PCL drop-in, a point type of
+#               its own both ways the README gives, every installed header on its own
+#   core        examples/consumer/core (CMake, COMPONENTS core) where PCL cannot be found
+#   components  what find_package(floodplane) answers to unknown, missing and optional components
+#   pkg-config  one-file programs built with `pkg-config --cflags --libs` floodplane-core (and
+#               floodplane, when the PCL class is installed)
+# When the install has shared libraries (BUILD_SHARED_LIBS=ON), the programs are also checked to
+# use them.
+#
+# "Where PCL cannot be found" stands for a machine without PCL: CMAKE_DISABLE_FIND_PACKAGE_PCL
+# makes every find_package(PCL) in the project fail as if PCL were not installed, PCL's headers
+# are on no default include path (/usr/include/pcl-1.13), so a header that included one would
+# not compile, and `ldd` shows that no PCL library is linked. The same project configured with
+# PCL findable leaves no PCL_DIR in its cache: nothing even looked for PCL.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+[ $# -ge 2 ] || { echo "usage: $0 <build-dir> <consumer|core|components|pkg-config>..." >&2; exit 2; }
 build=$(cd "$1" && pwd)
+shift
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
-cmake -S "$root/examples/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" || { cat "$work/configure.log"; exit 1; }
-cmake --build "$work/consumer" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
-"$work/consumer/consumer"
-"$work/consumer/core_consumer"
-"$work/consumer/headers_link"
-# The core needs no PCL at run time either.
-if ldd "$work/consumer/core_consumer" | grep -q libpcl_; then
-  echo "check_install: core_consumer links PCL, but floodplane::core should not need it" >&2
-  exit 1
-fi
+
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
+cxx=$(cache_value CMAKE_CXX_COMPILER)
+prefix=$work/prefix
+cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+config=$(find "$prefix" -name floodplaneConfig.cmake)
+config_dir=$(dirname "$config")
+libdir=$(dirname "$(find "$prefix" -name 'libfloodplane_core.*' | head -n 1)")
+shared=no
+[ -e "$libdir/libfloodplane_core.so" ] && shared=yes
+with_pcl=no
+[ -f "$config_dir/floodplane-pcl-targets.cmake" ] && with_pcl=yes
+
+fail() { echo "check_install: $*" >&2; exit 1; }
+# Runs a command with its output in a log, which is shown when it fails.
+logged() {
+  local log=$1
+  shift
+  "$@" > "$log" 2>&1 || { cat "$log"; fail "failed: $*"; }
+}
+configure() {  # <source> <binary-dir> [cmake options...]
+  local source=$1 binary=$2
+  shift 2
+  logged "$binary.configure.log" cmake -S "$source" -B "$binary" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix" "$@"
+}
+# A program that segments, built against the install, uses floodplane's shared libraries from
+# the install when they are shared, and no PCL library when it needs none.
+check_links() {  # <program> <needs-pcl: yes|no>
+  local libraries
+  libraries=$(ldd "$1")
+  if [ "$shared" = yes ] && ! grep -q "libfloodplane_core\.so.* => $libdir/" <<< "$libraries"; then
+    fail "$(basename "$1") does not use the installed libfloodplane_core.so:"$'\n'"$libraries"
+  fi
+  if [ "$2" = no ] && grep -q libpcl_ <<< "$libraries"; then
+    fail "$(basename "$1") links PCL, but floodplane::core should not need it"
+  fi
+}
+
+check_consumer() {
+  [ "$with_pcl" = yes ] || fail "consumer: this install has no PCL class (FLOODPLANE_WITH_PCL=OFF)"
+  configure "$root/examples/consumer" "$work/consumer"
+  logged "$work/consumer.build.log" cmake --build "$work/consumer" --parallel "$(nproc)"
+  for program in consumer custom_point_no_precompile custom_point_impl_headers; do
+    "$work/consumer/$program"
+    check_links "$work/consumer/$program" yes
+  done
+  "$work/consumer/headers_link"  # calls nothing: the linker may drop the libraries
+}
+
+check_core() {
+  grep -qi pcl "$config_dir"/floodplane-core-targets*.cmake && fail "floodplane-core-targets mentions PCL"
+  if [ "$with_pcl" = no ] && [ -n "$(find "$prefix" -name 'flood_fill_plane_segmentation.*')" ]; then
+    fail "the PCL class's headers are installed without the PCL class"
+  fi
+  # With PCL findable: the core's package does not look for it.
+  configure "$root/examples/consumer/core" "$work/core"
+  grep -q '^PCL_DIR' "$work/core/CMakeCache.txt" && fail "find_package(floodplane COMPONENTS core) looked for PCL"
+  # Without: it configures, builds and runs all the same.
+  configure "$root/examples/consumer/core" "$work/core" -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
+  logged "$work/core.build.log" cmake --build "$work/core" --parallel "$(nproc)"
+  "$work/core/core_consumer"
+  check_links "$work/core/core_consumer" no
+  "$work/core/core_headers_link"
+}
+
+# find_package(floodplane) from test/package/find_components, expected to fail with a message
+# that contains `expected` (CMake wraps messages: lines are joined before comparing).
+expect_find_failure() {  # <name> <expected> [cmake options...]
+  local name=$1 expected=$2
+  shift 2
+  if cmake -S "$root/test/package/find_components" -B "$work/$name" -DCMAKE_PREFIX_PATH="$prefix" "$@" \
+       > "$work/$name.log" 2>&1; then
+    cat "$work/$name.log"
+    fail "components: $name: find_package(floodplane) succeeded, expected it to fail"
+  fi
+  local message
+  message=$(tr -s '\n ' '  ' < "$work/$name.log")
+  if ! grep -qF -- "$expected" <<< "$message"; then
+    cat "$work/$name.log"
+    fail "components: $name: the message does not say \"$expected\""
+  fi
+  echo "components: $name fails as it should: $(sed -n 's/.*Reason given by package: *//; s/ -- Configuring incomplete.*//p' <<< "$message")"
+}
+# ... and expected to succeed with the result line `expected` (find_components prints it).
+expect_find() {  # <name> <expected> [cmake options...]
+  local name=$1 expected=$2
+  shift 2
+  logged "$work/$name.log" cmake -S "$root/test/package/find_components" -B "$work/$name" \
+    -DCMAKE_PREFIX_PATH="$prefix" "$@"
+  grep -qF -- "$expected" "$work/$name.log" || { cat "$work/$name.log"; fail "components: $name: expected \"$expected\""; }
+  echo "components: $name: $expected"
+}
+
+check_components() {
+  expect_find_failure unknown "unknown component 'nonsense': floodplane's components are core" \
+    -DFLOODPLANE_COMPONENTS="core;nonsense"
+  expect_find core-without-pcl "find_components: core=TRUE pcl= targets: core=yes floodplane=no" \
+    -DFLOODPLANE_COMPONENTS=core -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
+  expect_find optional-pcl-without-pcl "find_components: core=TRUE pcl=FALSE targets: core=yes floodplane=no" \
+    -DFLOODPLANE_COMPONENTS=core -DFLOODPLANE_OPTIONAL_COMPONENTS=pcl -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
+  if [ "$with_pcl" = yes ]; then
+    expect_find_failure pcl-without-pcl "component pcl (floodplane::floodplane) needs PCL 1.10 or later" \
+      -DFLOODPLANE_COMPONENTS=pcl -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
+    expect_find_failure default-without-pcl "component pcl (floodplane::floodplane) needs PCL" \
+      -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
+    expect_find pcl "find_components: core=TRUE pcl=TRUE targets: core=yes floodplane=yes" -DFLOODPLANE_COMPONENTS=pcl
+    expect_find default "find_components: core=TRUE pcl=TRUE targets: core=yes floodplane=yes"
+  else
+    expect_find_failure pcl-not-built "component pcl: this floodplane was built without it" \
+      -DFLOODPLANE_COMPONENTS=pcl
+  fi
+}
+
+check_pkg_config() {
+  local pc_dir
+  pc_dir=$(dirname "$(find "$prefix" -name floodplane-core.pc)")
+  export PKG_CONFIG_PATH=$pc_dir
+  # A shared library outside the loader's path is found through LD_LIBRARY_PATH, as a
+  # pkg-config user would run it.
+  export LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  # shellcheck disable=SC2046  # pkg-config's output is a list of words
+  logged "$work/pc-core.log" "$cxx" -std=c++17 -O2 "$root/examples/consumer/core/core_main.cpp" \
+    $(pkg-config --cflags --libs floodplane-core) -o "$work/core_pkg_config"
+  "$work/core_pkg_config"
+  check_links "$work/core_pkg_config" no
+  if [ "$with_pcl" = yes ]; then
+    [ -f "$pc_dir/floodplane.pc" ] || fail "pkg-config: the PCL class is installed, but floodplane.pc is not"
+    # shellcheck disable=SC2046
+    logged "$work/pc-pcl.log" "$cxx" -std=c++17 -O2 "$root/examples/consumer/main.cpp" \
+      $(pkg-config --cflags --libs floodplane) -o "$work/pkg_config"
+    "$work/pkg_config"
+    check_links "$work/pkg_config" yes
+  elif [ -f "$pc_dir/floodplane.pc" ]; then
+    fail "pkg-config: floodplane.pc is installed without the PCL class"
+  fi
+}
+
+for check in "$@"; do
+  case $check in
+    consumer) check_consumer ;;
+    core) check_core ;;
+    components) check_components ;;
+    pkg-config) check_pkg_config ;;
+    *) echo "check_install: unknown check '$check'" >&2; exit 2 ;;
+  esac
+  echo "check_install: $check: passed"
+done
