@@ -107,8 +107,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Bytes cloud_header(data, size);
   Bytes depth_header(data, size);
   constexpr std::size_t kHeader = 48;
-  const std::vector<std::uint8_t> message = size > kHeader ? std::vector<std::uint8_t>(data + kHeader, data + size)
-                                                           : std::vector<std::uint8_t>();
+  const std::vector<std::uint8_t> message =
+      size > kHeader ? std::vector<std::uint8_t>(data + kHeader, data + size) : std::vector<std::uint8_t>();
   fuzzCloud(cloud_header, message);
   fuzzDepth(depth_header, message);
   return 0;
