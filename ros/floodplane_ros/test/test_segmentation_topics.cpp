@@ -1,0 +1,503 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+// The rostest of the node and the nodelet: frames in on their topics (the real frames of
+// ../shared/data/real when they are there, rendered ones otherwise; rendered depth images in
+// millimetres and in metres), the published planes, label cloud and markers compared with the
+// library's own output for the same frames, parameters changed by dynamic_reconfigure, track
+// ids, and bad messages (an unorganized cloud, NaN everywhere, a wrong encoding) answered by
+// an error in the log and nothing else: the node goes on with the next frame.
+//
+// The tests run in order against one node, whose stream of frames the test follows with its
+// own Segmenter and PlaneTracker (head starts make a frame's result depend on the frames
+// before it).
+
+#include <dynamic_reconfigure/Reconfigure.h>
+#include <floodplane_ros/Planes.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Log.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/point_cloud2_iterator.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "floodplane/plane_tracker.h"
+#include "floodplane/segmenter.h"
+#include "io/depth_camera.h"
+#include "io/pcd_input.h"
+#include "synth/room_walk.h"
+
+namespace {
+
+using floodplane::Segmentation;
+
+constexpr double kWaitSeconds = 60.0;
+
+// One frame: x y z on its grid (stride 3, NaN for no return) and, when it was rendered, the
+// camera that saw it (for depth images).
+struct Frame {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<float> xyz;
+  floodplane::io::DepthCamera camera;
+  floodplane::PointGrid grid() const {
+    floodplane::PointGrid grid;
+    grid.data = xyz.data();
+    grid.width = width;
+    grid.height = height;
+    return grid;
+  }
+};
+
+std::vector<Frame> renderedFrames() {
+  std::vector<Frame> frames;
+  int index = 0;
+  for (const auto& rendered : floodplane::synth::renderRoomWalk(11, 3, floodplane::synth::SensorModel::kinect)) {
+    Frame frame;
+    frame.name = "rendered walk frame " + std::to_string(index++);
+    frame.width = rendered.intrinsics.width;
+    frame.height = rendered.intrinsics.height;
+    for (const auto& p : rendered.points) frame.xyz.insert(frame.xyz.end(), {p.x(), p.y(), p.z()});
+    frame.camera = {rendered.intrinsics.fx, rendered.intrinsics.fy, rendered.intrinsics.cx, rendered.intrinsics.cy,
+                    1000.0};
+    frames.push_back(std::move(frame));
+  }
+  return frames;
+}
+
+// The real frames when ../shared/data/real is there (sorted by name: the three consecutive
+// desk frames stay in order), rendered ones otherwise.
+std::vector<Frame> cloudFrames() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> paths;
+  const fs::path folder(FLOODPLANE_REAL_DATA_DIR);
+  if (fs::is_directory(folder)) {
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      if (entry.path().extension() == ".pcd") paths.push_back(entry.path().string());
+    }
+  }
+  if (paths.empty()) {
+    std::cout << "[ INFO     ] no real frames in " << folder << ": playing rendered ones\n";
+    return renderedFrames();
+  }
+  std::sort(paths.begin(), paths.end());
+  std::vector<Frame> frames;
+  for (const std::string& path : paths) {
+    const auto input = floodplane::io::readPcdFrame(path);
+    Frame frame;
+    frame.name = fs::path(path).filename().string();
+    frame.width = static_cast<int>(input.xyz.width);
+    frame.height = static_cast<int>(input.xyz.height);
+    for (const auto& p : input.xyz.points) frame.xyz.insert(frame.xyz.end(), {p.x, p.y, p.z});
+    frames.push_back(std::move(frame));
+  }
+  return frames;
+}
+
+// PCL's PointXYZRGB layout as a driver publishes it (x y z, padding, rgb: 32 bytes).
+sensor_msgs::PointCloud2 cloudMessage(const Frame& frame) {
+  sensor_msgs::PointCloud2 cloud;
+  cloud.header.frame_id = "camera_depth_optical_frame";
+  sensor_msgs::PointCloud2Modifier modifier(cloud);
+  modifier.setPointCloud2FieldsByString(2, "xyz", "rgb");
+  modifier.resize(static_cast<std::size_t>(frame.width) * static_cast<std::size_t>(frame.height));
+  cloud.width = static_cast<std::uint32_t>(frame.width);
+  cloud.height = static_cast<std::uint32_t>(frame.height);
+  cloud.row_step = cloud.width * cloud.point_step;
+  cloud.is_dense = false;
+  sensor_msgs::PointCloud2Iterator<float> x(cloud, "x");
+  for (std::size_t i = 0; i < frame.xyz.size() / 3; ++i, ++x) {
+    x[0] = frame.xyz[3 * i];
+    x[1] = frame.xyz[3 * i + 1];
+    x[2] = frame.xyz[3 * i + 2];
+  }
+  return cloud;
+}
+
+// A frame's depth image (16UC1 millimetres, rounded, or 32FC1 metres) and its CameraInfo,
+// and the points the library makes of them (io::backProjectPixel, as pcd_segment does).
+struct DepthFrame {
+  sensor_msgs::Image image;
+  sensor_msgs::CameraInfo info;
+  Frame points;
+};
+
+DepthFrame depthFrame(const Frame& frame, bool millimetres) {
+  DepthFrame depth;
+  depth.image.header.frame_id = depth.info.header.frame_id = "camera_depth_optical_frame";
+  depth.image.width = depth.info.width = static_cast<std::uint32_t>(frame.width);
+  depth.image.height = depth.info.height = static_cast<std::uint32_t>(frame.height);
+  depth.image.encoding = millimetres ? "16UC1" : "32FC1";
+  depth.image.step = depth.image.width * (millimetres ? 2 : 4);
+  depth.image.data.resize(static_cast<std::size_t>(depth.image.step) * depth.image.height);
+  depth.info.K = {frame.camera.fx, 0.0, frame.camera.cx, 0.0, frame.camera.fy, frame.camera.cy, 0.0, 0.0, 1.0};
+  depth.info.distortion_model = "plumb_bob";
+  depth.points = frame;
+  floodplane::io::DepthCamera camera = frame.camera;
+  camera.depth_scale = millimetres ? 1000.0 : 1.0;
+  for (int v = 0; v < frame.height; ++v) {
+    for (int u = 0; u < frame.width; ++u) {
+      const std::size_t i =
+          static_cast<std::size_t>(v) * static_cast<std::size_t>(frame.width) + static_cast<std::size_t>(u);
+      const float z = frame.xyz[3 * i + 2];
+      double units = 0.0;
+      if (millimetres) {
+        const auto mm = static_cast<std::uint16_t>(std::isfinite(z) ? std::lround(z * 1000.0) : 0);
+        std::memcpy(depth.image.data.data() + 2 * i, &mm, 2);
+        units = mm;
+      } else {
+        const float metres = std::isfinite(z) ? z : std::numeric_limits<float>::quiet_NaN();
+        std::memcpy(depth.image.data.data() + 4 * i, &metres, 4);
+        units = std::isfinite(metres) ? metres : 0.0;
+      }
+      floodplane::io::backProjectPixel(u, v, units, camera, &depth.points.xyz[3 * i]);
+    }
+  }
+  return depth;
+}
+
+// The points of a cloud message as the library reads them in place (cloudMessage's layout).
+floodplane::PointGrid pointsOf(const sensor_msgs::PointCloud2& cloud) {
+  floodplane::PointGrid grid;
+  grid.data = reinterpret_cast<const float*>(cloud.data.data());
+  grid.stride = cloud.point_step / sizeof(float);
+  grid.width = static_cast<int>(cloud.width);
+  grid.height = static_cast<int>(cloud.height);
+  return grid;
+}
+
+// What the node published for one frame.
+struct Published {
+  floodplane_ros::PlanesConstPtr planes;
+  sensor_msgs::PointCloud2ConstPtr labels;
+  visualization_msgs::MarkerArrayConstPtr markers;
+  bool complete() const { return planes && labels && markers; }
+};
+
+// The node's topics, seen from outside, and the test's mirror of its stream.
+class NodeUnderTest {
+ public:
+  NodeUnderTest() {
+    points_ = nh_.advertise<sensor_msgs::PointCloud2>("points", 2);
+    image_ = nh_.advertise<sensor_msgs::Image>("image_rect", 2);
+    camera_info_ = nh_.advertise<sensor_msgs::CameraInfo>("camera_info", 2);
+    planes_sub_ = nh_.subscribe("planes", 10, &NodeUnderTest::onPlanes, this);
+    labels_sub_ = nh_.subscribe("labels", 10, &NodeUnderTest::onLabels, this);
+    markers_sub_ = nh_.subscribe("plane_markers", 10, &NodeUnderTest::onMarkers, this);
+    rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
+    options_.head_start = true;  // the node's default
+  }
+
+  // Whether every topic is connected both ways within the wait.
+  bool connect() {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kWaitSeconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+      if (points_.getNumSubscribers() > 0 && image_.getNumSubscribers() > 0 && camera_info_.getNumSubscribers() > 0 &&
+          planes_sub_.getNumPublishers() > 0 && labels_sub_.getNumPublishers() > 0 &&
+          markers_sub_.getNumPublishers() > 0 && ros::service::exists("/floodplane/set_parameters", false)) {
+        return true;
+      }
+      ros::WallDuration(0.05).sleep();
+    }
+    return false;
+  }
+
+  Published sendCloud(sensor_msgs::PointCloud2 cloud) {
+    cloud.header.stamp = nextStamp();
+    points_.publish(cloud);
+    return waitFor(cloud.header.stamp);
+  }
+
+  Published sendDepth(DepthFrame depth) {
+    depth.image.header.stamp = depth.info.header.stamp = nextStamp();
+    camera_info_.publish(depth.info);
+    image_.publish(depth.image);
+    return waitFor(depth.image.header.stamp);
+  }
+
+  // Sends a bad cloud or depth image and returns the error the node logged ("" if none came
+  // within the wait); nothing may have been published for it.
+  std::string sendBadCloud(sensor_msgs::PointCloud2 cloud) {
+    cloud.header.stamp = nextStamp();
+    const std::size_t logs = logCount();
+    points_.publish(cloud);
+    return waitForError(logs, cloud.header.stamp);
+  }
+  std::string sendBadDepth(DepthFrame depth) {
+    depth.image.header.stamp = depth.info.header.stamp = nextStamp();
+    const std::size_t logs = logCount();
+    camera_info_.publish(depth.info);
+    image_.publish(depth.image);
+    return waitForError(logs, depth.image.header.stamp);
+  }
+
+  // Sets parameters through dynamic_reconfigure as rqt_reconfigure would.
+  bool reconfigure(const std::map<std::string, int>& ints, const std::map<std::string, bool>& bools) {
+    dynamic_reconfigure::Reconfigure service;
+    for (const auto& [name, value] : ints) {
+      dynamic_reconfigure::IntParameter parameter;
+      parameter.name = name;
+      parameter.value = value;
+      service.request.config.ints.push_back(parameter);
+    }
+    for (const auto& [name, value] : bools) {
+      dynamic_reconfigure::BoolParameter parameter;
+      parameter.name = name;
+      parameter.value = value;
+      service.request.config.bools.push_back(parameter);
+    }
+    return ros::service::call("/floodplane/set_parameters", service);
+  }
+
+  // The test's own copy of the node's stream: what the library gives for the same frames.
+  floodplane::Segmenter library;
+  floodplane::PlaneTracker tracker;
+  floodplane::Segmenter::Options options_;
+  bool tracking = false;
+
+ private:
+  ros::Time nextStamp() { return ros::Time(1000 + ++frames_sent_, 0); }
+
+  Published waitFor(const ros::Time& stamp) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds),
+                      [&] { return published_[stamp].complete() || !ros::ok(); });
+    return published_[stamp];
+  }
+
+  std::size_t logCount() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return errors_.size();
+  }
+
+  std::string waitForError(std::size_t before, const ros::Time& stamp) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const bool logged = arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds),
+                                          [&] { return errors_.size() > before || !ros::ok(); });
+    const Published& published = published_[stamp];
+    EXPECT_FALSE(published.planes || published.labels || published.markers) << "published for a bad frame";
+    return logged ? errors_[before] : std::string();
+  }
+
+  void onPlanes(const floodplane_ros::PlanesConstPtr& planes) {
+    store(planes->header.stamp, [&](Published& p) { p.planes = planes; });
+  }
+  void onLabels(const sensor_msgs::PointCloud2ConstPtr& labels) {
+    store(labels->header.stamp, [&](Published& p) { p.labels = labels; });
+  }
+  void onMarkers(const visualization_msgs::MarkerArrayConstPtr& markers) {
+    if (markers->markers.empty()) return;  // never: a DELETEALL leads every array
+    store(markers->markers.front().header.stamp, [&](Published& p) { p.markers = markers; });
+  }
+  void onLog(const rosgraph_msgs::LogConstPtr& log) {
+    if (log->level != rosgraph_msgs::Log::ERROR || log->msg.find("frame skipped") == std::string::npos) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    errors_.push_back(log->msg);
+    arrived_.notify_all();
+  }
+  template <typename Set>
+  void store(const ros::Time& stamp, Set set) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    set(published_[stamp]);
+    arrived_.notify_all();
+  }
+
+  ros::NodeHandle nh_;
+  ros::Publisher points_, image_, camera_info_;
+  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_;
+  std::mutex mutex_;
+  std::condition_variable arrived_;
+  std::map<ros::Time, Published> published_;
+  std::vector<std::string> errors_;
+  std::uint32_t frames_sent_ = 0;
+};
+
+NodeUnderTest* node = nullptr;
+
+// Compares what the node published for `frame` with the library's result for the points in
+// `layout`: the frame's points as the node got them. The layout matters to the last bits of
+// the plane fits (the core sums points in another order for PCL's 8-float stride than for 3).
+void expectLibrarysResult(const Published& published, const Frame& frame, const floodplane::PointGrid& layout) {
+  ASSERT_TRUE(published.complete()) << frame.name << ": the node published nothing within " << kWaitSeconds << " s";
+  const Segmentation& expected = node->library.segment(layout, node->options_);
+  std::vector<std::uint32_t> labels(expected.planes.size());
+  for (std::size_t k = 0; k < labels.size(); ++k) labels[k] = static_cast<std::uint32_t>(k + 1);
+  std::vector<std::uint32_t> track_ids;
+  if (node->tracking) labels = track_ids = node->tracker.update(expected);
+
+  const auto& planes = published.planes->planes;
+  ASSERT_EQ(planes.size(), expected.planes.size()) << frame.name;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const auto& fit = expected.planes[k].fit;
+    EXPECT_EQ(planes[k].label, labels[k]) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].track_id, node->tracking ? track_ids[k] : 0u) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].inlier_count, expected.planes[k].inlier_count) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].plane.coef[0], fit.normal.x()) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].plane.coef[1], fit.normal.y()) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].plane.coef[2], fit.normal.z()) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].plane.coef[3], fit.offset) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].centroid.x, fit.centroid.x()) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].centroid.z, fit.centroid.z()) << frame.name << " plane " << k;
+  }
+
+  const sensor_msgs::PointCloud2& cloud = *published.labels;
+  ASSERT_EQ(cloud.width, static_cast<std::uint32_t>(frame.width));
+  ASSERT_EQ(cloud.height, static_cast<std::uint32_t>(frame.height));
+  sensor_msgs::PointCloud2ConstIterator<float> x(cloud, "x");
+  sensor_msgs::PointCloud2ConstIterator<std::uint32_t> label(cloud, "label");
+  std::size_t wrong_labels = 0, wrong_points = 0;
+  for (std::size_t i = 0; i < expected.labels.size(); ++i, ++x, ++label) {
+    const std::uint32_t k = expected.labels[i];
+    if (*label != (k == 0 ? 0u : labels[k - 1])) ++wrong_labels;
+    for (int axis = 0; axis < 3; ++axis) {
+      const float want = frame.xyz[3 * i + static_cast<std::size_t>(axis)];
+      if (!(x[axis] == want || (std::isnan(want) && std::isnan(x[axis])))) ++wrong_points;
+    }
+  }
+  EXPECT_EQ(wrong_labels, 0u) << frame.name;
+  EXPECT_EQ(wrong_points, 0u) << frame.name;
+
+  const auto& markers = published.markers->markers;
+  ASSERT_EQ(markers.size(), 1 + 2 * expected.planes.size()) << frame.name;
+  EXPECT_EQ(markers[0].action, visualization_msgs::Marker::DELETEALL);
+  for (std::size_t k = 0; k < expected.planes.size(); ++k) {
+    const auto& outline = markers[1 + 2 * k];
+    const auto& arrow = markers[2 + 2 * k];
+    EXPECT_EQ(outline.type, visualization_msgs::Marker::LINE_STRIP);
+    EXPECT_GE(outline.points.size(), 4u);
+    EXPECT_EQ(arrow.type, visualization_msgs::Marker::ARROW);
+    ASSERT_EQ(arrow.points.size(), 2u);
+    EXPECT_NEAR(arrow.points[0].x, expected.planes[k].fit.centroid.x(), 1e-6);
+    EXPECT_EQ(outline.header.frame_id, "camera_depth_optical_frame");
+  }
+}
+
+TEST(SegmentationNode, PublishesTheLibrarysPlanesForEachOrganizedCloud) {
+  for (const Frame& frame : cloudFrames()) {
+    const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+    expectLibrarysResult(node->sendCloud(cloud), frame, pointsOf(cloud));
+    if (HasFatalFailure()) return;
+  }
+}
+
+TEST(SegmentationNode, PublishesTheLibrarysPlanesForDepthImagesInMillimetres) {
+  for (const Frame& frame : renderedFrames()) {
+    const DepthFrame depth = depthFrame(frame, true);
+    expectLibrarysResult(node->sendDepth(depth), depth.points, depth.points.grid());
+    if (HasFatalFailure()) return;
+  }
+}
+
+TEST(SegmentationNode, PublishesTheLibrarysPlanesForDepthImagesInMetres) {
+  for (const Frame& frame : renderedFrames()) {
+    const DepthFrame depth = depthFrame(frame, false);
+    expectLibrarysResult(node->sendDepth(depth), depth.points, depth.points.grid());
+    if (HasFatalFailure()) return;
+  }
+}
+
+TEST(SegmentationNode, TakesNewParametersThroughDynamicReconfigure) {
+  const Frame frame = renderedFrames().front();
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  ASSERT_TRUE(node->reconfigure({{"subsampling", 2}}, {}));
+  floodplane::Params params;
+  params.subsampling = 2;
+  node->library.setParams(params);
+  const Published subsampled = node->sendCloud(cloud);
+  expectLibrarysResult(subsampled, frame, pointsOf(cloud));
+
+  ASSERT_TRUE(node->reconfigure({{"subsampling", 1}}, {}));
+  node->library.setParams(floodplane::Params());
+  const Published full = node->sendCloud(cloud);
+  expectLibrarysResult(full, frame, pointsOf(cloud));
+  // The parameter reached the segmentation: sub-sampled planes are fitted to other points.
+  ASSERT_TRUE(subsampled.complete() && full.complete());
+  EXPECT_NE(subsampled.planes->planes.front().plane.coef, full.planes->planes.front().plane.coef);
+}
+
+TEST(SegmentationNode, GivesThePlanesTrackIdsWhenTracking) {
+  ASSERT_TRUE(node->reconfigure({}, {{"tracking", true}}));
+  node->library.setParams(floodplane::Params());  // the node's reconfigure sets its parameters again
+  node->tracking = true;
+  std::uint32_t last_id = 0;
+  std::size_t planes_seen = 0;
+  for (const Frame& frame : renderedFrames()) {
+    const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+    const Published published = node->sendCloud(cloud);
+    expectLibrarysResult(published, frame, pointsOf(cloud));
+    if (HasFatalFailure()) return;
+    for (const auto& plane : published.planes->planes) last_id = std::max(last_id, plane.track_id);
+    planes_seen += published.planes->planes.size();
+  }
+  // Three frames of a walk: ids persist from frame to frame, so fewer ids than planes seen.
+  EXPECT_GT(last_id, 0u);
+  EXPECT_LT(last_id, planes_seen);
+  ASSERT_TRUE(node->reconfigure({}, {{"tracking", false}}));
+  node->library.setParams(floodplane::Params());
+  node->tracking = false;
+}
+
+TEST(SegmentationNode, LogsAnErrorForAnUnorganizedCloud) {
+  Frame frame = renderedFrames().front();
+  sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  cloud.width *= cloud.height;
+  cloud.height = 1;
+  cloud.row_step = cloud.width * cloud.point_step;
+  const std::string error = node->sendBadCloud(cloud);
+  EXPECT_NE(error.find("frame skipped: points: the cloud is not organized"), std::string::npos) << error;
+}
+
+TEST(SegmentationNode, LogsAnErrorForACloudOfNaNsOnly) {
+  Frame frame = renderedFrames().front();
+  std::fill(frame.xyz.begin(), frame.xyz.end(), std::numeric_limits<float>::quiet_NaN());
+  const std::string error = node->sendBadCloud(cloudMessage(frame));
+  EXPECT_NE(error.find("frame skipped: points: no point of the 640x480 frame is finite"), std::string::npos) << error;
+}
+
+TEST(SegmentationNode, LogsAnErrorForADepthImageOfAnotherEncoding) {
+  DepthFrame depth = depthFrame(renderedFrames().front(), true);
+  depth.image.encoding = "mono8";
+  const std::string error = node->sendBadDepth(depth);
+  EXPECT_NE(error.find("frame skipped: image_rect: depth image encoding 'mono8'"), std::string::npos) << error;
+}
+
+TEST(SegmentationNode, GoesOnWithTheNextFrameAfterBadOnes) {
+  const Frame frame = renderedFrames().back();
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  expectLibrarysResult(node->sendCloud(cloud), frame, pointsOf(cloud));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "floodplane_test");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  NodeUnderTest under_test;
+  node = &under_test;
+  if (!under_test.connect()) {
+    std::cerr << "the node's topics and its set_parameters service did not come up within " << kWaitSeconds << " s\n";
+    return 1;
+  }
+  const int result = RUN_ALL_TESTS();
+  node = nullptr;
+  return result;
+}

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
+# Installs the optional ROS 1 part's packages from Debian 12 (ROS Noetic's libraries as Debian
+# packages them; Debian 12 has no ROS 2): what ros/floodplane_ros needs to build, its nodelet
+# and node, dynamic reconfigure, and rostest with a master to run its test. The rest of
+# floodplane needs none of them (scripts/install_deps.sh). As root it installs them;
+# otherwise it prints the command to run and fails, so nothing half-happens.
+set -euo pipefail
+
+packages=(
+  ros-core-dev                               # catkin, roscpp, rosbag, the std/sensor/shape/visualization messages
+  libnodeletlib-dev libnodeletlib-tools      # the nodelet and the `nodelet` manager executable
+  libimage-transport-dev                     # depth image + CameraInfo subscription (depth_image_proc's way)
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure  # dynamic_reconfigure (C++ and its cfg generator)
+  python3-rostest                            # rostest (roslaunch with a master on a port of its own)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_ros_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+cmd="apt-get install -y --no-install-recommends ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install_ros_deps: missing packages: ${missing[*]}" >&2
+  echo "install_ros_deps: run as root:  apt-get update && $cmd" >&2
+  exit 1
+fi
+echo "install_ros_deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+$cmd
