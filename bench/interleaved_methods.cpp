@@ -70,7 +70,7 @@ void runInterleaved(benchmark::State& state, const Frame& frame) {
   OmpsRun omps;
   FloodplaneRun s1(1), s2(2), s4(4);
   const std::array<std::function<void(const Frame&)>, 4> methods = {std::ref(omps), std::ref(s1), std::ref(s2),
-                                                                     std::ref(s4)};
+                                                                    std::ref(s4)};
   std::array<std::vector<double>, 4> times;
   for (const auto& method : methods) method(frame);  // the buffers, once, before the clock
   using Clock = std::chrono::steady_clock;
@@ -84,8 +84,7 @@ void runInterleaved(benchmark::State& state, const Frame& frame) {
     }
     ++round;
   }
-  const double omps_ms = median(times[0]), s1_ms = median(times[1]), s2_ms = median(times[2]),
-               s4_ms = median(times[3]);
+  const double omps_ms = median(times[0]), s1_ms = median(times[1]), s2_ms = median(times[2]), s4_ms = median(times[3]);
   state.counters["omps_ms"] = omps_ms;
   state.counters["s1_ms"] = s1_ms;
   state.counters["s2_ms"] = s2_ms;

@@ -204,6 +204,7 @@ void FullResolutionWrite::write(const PointGrid& frame, const BlockGrid& blocks,
     plane.sums = PlaneSums();
     plane.first_pixel = kNoPixel;
   }
+  body_start_.assign(planes.list().size() + 1, kNoPixel);
   const int s = blocks.factor();
   const PointGrid& grid = blocks.means();
   const std::size_t frame_width = static_cast<std::size_t>(frame.width);
@@ -233,12 +234,14 @@ void FullResolutionWrite::write(const PointGrid& frame, const BlockGrid& blocks,
             if (blocks.complete(first_block + static_cast<std::size_t>(bx))) {
               std::fill(out_row + u_begin, out_row + u_end, k);
               if (plane.first_pixel == kNoPixel) plane.first_pixel = row_start + static_cast<std::size_t>(u_begin);
+              if (body_start_[k] == kNoPixel) body_start_[k] = row_start + static_cast<std::size_t>(u_begin);
             } else {
               for (int u = u_begin; u < u_end; ++u) {
                 const std::size_t pixel = row_start + static_cast<std::size_t>(u);
                 const bool measured = finitePoint(frame.point(pixel));
                 out_row[u] = measured ? k : 0u;
                 if (measured && plane.first_pixel == kNoPixel) plane.first_pixel = pixel;
+                if (measured && body_start_[k] == kNoPixel) body_start_[k] = pixel;
               }
             }
             break;
@@ -252,6 +255,18 @@ void FullResolutionWrite::write(const PointGrid& frame, const BlockGrid& blocks,
         }
       }
     }
+  }
+  // A pixel decided one by one can fit a plane without touching it (a pixel of clutter within
+  // the plane's band), and the first pixel in raster order may be such a stray: its boundary
+  // would be a single pixel. A plane's boundary starts instead on its body, at the left end of
+  // the row through the first pixel of its first inner block; only a plane without one
+  // starts at its first pixel.
+  const std::size_t width = static_cast<std::size_t>(frame.width);
+  for (std::uint32_t k = 1; k < body_start_.size(); ++k) {
+    std::size_t start = body_start_[k];
+    if (start == kNoPixel) continue;
+    while (start % width != 0 && labels[start - 1] == k) --start;
+    planes[k].first_pixel = start;
   }
 }
 

@@ -28,7 +28,9 @@ namespace floodplane {
 /// that plane's noise band (Eq. 2 at the pixel's own noise), else none. Blocks with no plane
 /// around are written as no plane without a test.
 ///
-/// Rows are written in raster order, so that a plane's first pixel is the first it gets.
+/// Rows are written in raster order. A plane's first pixel, where its boundary starts, is on its
+/// body (a block inside it), at the left end of that pixel row, so that a pixel of clutter that
+/// fits the plane apart from it does not become the plane's boundary.
 class FullResolutionWrite {
  public:
   /// Writes `labels` (frame size) from the block labels `block_labels` (the planes' current
@@ -70,6 +72,7 @@ class FullResolutionWrite {
   static constexpr std::uint32_t kEmpty = 0xffffffffu;  // classifyRow: a block with no measured pixel
   std::vector<Block> blocks_;                           // one block row
   std::vector<std::uint32_t> above_, row_, below_;      // classifyRow's block labels, one row each
+  std::vector<std::size_t> body_start_;                 // per plane: the first pixel of its first inner block
 };
 
 }  // namespace floodplane

@@ -31,7 +31,8 @@ void traceRegionBoundary(const std::uint32_t* labels, int width, int height, std
     return -1;
   };
 
-  // The start is the first pixel in raster order, so its west neighbour is outside.
+  // The start is a pixel whose west neighbour is outside (the first pixel in raster order, or
+  // the left end of a row of the region).
   const int first = next(start_x, start_y, 4);
   if (first < 0) return;
   int x = start_x, y = start_y, direction = first;

@@ -24,15 +24,13 @@ constexpr double kSmoothingGain = 2.0;
 
 // ---- RegionBuilder ---------------------------------------------------------------------
 
-void RegionBuilder::build(const PreparedFrame& frame, const MergedSegments& merged, const Params& params, bool refine,
-                          Segmentation& out) {
+void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& merged, const Params& params,
+                             bool refine, Segmentation& out) {
   params_ = params;
   const std::uint32_t min_inliers = frame.tolerances.minInliers();
   const bool blocks = frame.blocks != nullptr;
   std::vector<std::uint32_t>& labels = blocks ? block_labels_ : out.labels;
   selectCandidates(frame, merged, params);
-  out.width = frame.measured.width;
-  out.height = frame.measured.height;
   labels.resize(frame.grid.size());
   // The plane tests of selectCandidates ran on the merged clusters; refinement adds points,
   // which can tip a plane over the curvature limit or, rarely (an outlier far along a ray),
@@ -62,15 +60,19 @@ void RegionBuilder::build(const PreparedFrame& frame, const MergedSegments& merg
                              MergeCriterion(params, frame.tolerances), frame.tolerances, frame.pitch))
     candidates_.composeRenumbering();
   if (dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
-  if (blocks) {
+}
+
+void RegionBuilder::write(const PreparedFrame& frame, const Params& params, Segmentation& out) {
+  out.width = frame.measured.width;
+  out.height = frame.measured.height;
+  if (frame.blocks) {
     writeFullResolution(frame, params, out);
   } else {
     // A plane's centroid, covariance and fit are those of its inliers as the caller measured
     // them, not as they were smoothed for segmenting.
-    if (frame.measured.data != frame.grid.data) sumMeasuredPoints(frame.measured, candidates_.labels(labels));
-    candidates_.applyRenumbering(labels);
+    if (frame.measured.data != frame.grid.data) sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
+    candidates_.applyRenumbering(out.labels);
   }
-
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
     SegmentedPlane plane;
@@ -191,7 +193,9 @@ void RegionBuilder::writeFullResolution(const PreparedFrame& frame, const Params
   full_resolution_.write(frame.measured, *frame.blocks, labels, criteria_, centroids_, candidates_, out.labels);
   // The pixels decided one by one at the borders change the sizes a little: a plane may now
   // fall short of min_inliers or change places with one of about its size.
-  if (candidates_.sortBySize(frame.tolerances.minInliers(), &params)) candidates_.renumberImage(out.labels);
+  // (The planes' first pixels move with them.)
+  if (candidates_.sortBySize(frame.tolerances.minInliers(), &params))
+    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
 }
 
 void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const RenumberedLabels& labels) {

@@ -45,8 +45,11 @@ struct MergedSegments {
 /// second pass over the cloud for them.
 class RegionBuilder {
  public:
-  void build(const PreparedFrame& frame, const MergedSegments& merged, const Params& params, bool refine,
-             Segmentation& out);
+  /// The planes on the segmented grid (`out.labels` holds their label image at s = 1).
+  void assemble(const PreparedFrame& frame, const MergedSegments& merged, const Params& params, bool refine,
+                Segmentation& out);
+  /// The labels at full resolution and the planes of `out`.
+  void write(const PreparedFrame& frame, const Params& params, Segmentation& out);
 
  private:
   // One candidate per flat cluster; candidate_of_segment_ maps every segment to its cluster's.

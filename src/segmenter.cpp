@@ -262,8 +262,10 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
                            previous.noise.patches >= NoiseEstimator::kMinimumPatches;
   previous.valid = false;  // until this frame is done
   result_.stats.head_start = reuse_noise;
-  // The pipeline: prepared frame -> segment image (seeds and floods, relabelled) -> clusters
-  // (merged) -> planes (labels at full resolution, refined, checked).
+  // The pipeline, coarse to fine: the prepared frame (at s > 1 the frame read once into
+  // blocks) -> the segment image (seeds and floods, relabelled) -> clusters (merged) -> planes
+  // on the segmented grid (refined, occluded pieces joined, curved ones dropped) -> labels at
+  // full resolution (at s > 1 written once).
   PreparedFrame frame;
   {
     PhaseTimer timer(timed, result_.phases.preparation);
@@ -283,7 +285,8 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   }
   {
     PhaseTimer timer(timed, result_.phases.region_output);
-    ws.regions.build(frame, clusters, params_, options.refine, result_);
+    ws.regions.assemble(frame, clusters, params_, options.refine, result_);
+    ws.regions.write(frame, params_, result_);
   }
   previous.valid = true;
   previous.width = full.width;

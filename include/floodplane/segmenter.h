@@ -61,7 +61,10 @@ struct NoiseModel {
 struct SegmentedPlane {
   PlaneFit fit;                    ///< least-squares plane of the inliers (sensor frame)
   std::uint32_t inlier_count = 0;  ///< pixels at full resolution
-  std::size_t first_pixel = 0;     ///< its first pixel in raster order (starts its boundary)
+  /// Where its boundary starts: its first pixel in raster order; at sub-sampling s > 1 the left
+  /// end of the row through the first pixel of its body (the first block inside it), so
+  /// that a stray pixel that fits the plane apart from it does not stand for its boundary.
+  std::size_t first_pixel = 0;
 };
 
 /// The result: a label per pixel of the full-resolution grid and the planes.

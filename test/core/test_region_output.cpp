@@ -101,7 +101,8 @@ struct Merged {
     frame.pixel_tolerances = Tolerances(params, {}, kPitch, full.data.size() / full.stride);
     frame.holes = &holes;
     frame.blocks = s > 1 ? &blocks : nullptr;
-    builder.build(frame, merged, params, refine, out);
+    builder.assemble(frame, merged, params, refine, out);
+    builder.write(frame, params, out);
     return out;
   }
 

@@ -77,7 +77,17 @@ TEST(Segmenter, NumbersPlanesBySizeAndCountsTheirPixels) {
         }
         for (std::size_t k = 0; k < result.planes.size(); ++k) {
           EXPECT_EQ(result.planes[k].inlier_count, counts[k + 1]);
-          EXPECT_EQ(result.planes[k].first_pixel, first[k + 1]);
+          // The boundary's start: the first pixel in raster order at s = 1; at s > 1 a pixel of the
+          // plane whose west neighbour is not (on the plane's body: see SegmentedPlane).
+          const std::size_t start = result.planes[k].first_pixel;
+          if (subsampling == 1) {
+            EXPECT_EQ(start, first[k + 1]);
+          } else {
+            ASSERT_LT(start, result.labels.size());
+            EXPECT_EQ(result.labels[start], k + 1);
+            EXPECT_GE(start, first[k + 1]);
+            if (start % static_cast<std::size_t>(result.width) != 0) EXPECT_NE(result.labels[start - 1], k + 1);
+          }
           if (k > 0) {
             EXPECT_GE(result.planes[k - 1].inlier_count, result.planes[k].inlier_count);
           }
