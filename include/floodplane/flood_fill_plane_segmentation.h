@@ -119,7 +119,8 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
     setParam(&Params::merge_distance, std::optional<double>(merge_distance), "setMergeDistance");
   }
   double getMergeDistance() const { return params_.merge_distance.value_or(0.0); }
-  /// Sub-sampling factor: 1, 2, 4 or 8 (Table III). Labels are always full resolution.
+  /// Sub-sampling factor: 1, 2, 4 or 8 (Table III): s > 1 segments s x s blocks of the cloud
+  /// (see Params::subsampling). Labels are always full resolution.
   void setSubsampling(int factor) { setParam(&Params::subsampling, factor, "setSubsampling"); }
   int getSubsampling() const { return params_.subsampling; }
   /// c [1/m] of the depth noise sigma(r) = sigma_0 + c r^2. Setting it (or sigma_0) turns

@@ -54,8 +54,9 @@ struct Params {
   bool project_points = false;
 
   // --- beyond the paper ---
-  /// Sub-sampling factor s in {1, 2, 4, 8}: segment every s-th pixel of every s-th row
-  /// (Table III), then bring the labels back to full resolution, pixel by pixel.
+  /// Sub-sampling factor s in {1, 2, 4, 8} (Table III): s > 1 segments the means of s x s
+  /// blocks (the frame read once), then writes the labels at full resolution once: pixels of a
+  /// block inside a plane take it, pixels of blocks on a border are decided one by one.
   int subsampling = 1;
   /// c [1/m] of the depth noise along a viewing ray, sigma(r) = sigma_0 + c r^2. Unset (and
   /// depth_noise_constant unset): both are measured on each frame (self-calibration). Set
