@@ -155,7 +155,8 @@ TEST(BlockGrid, KeepsTheSurfaceOfTheFirstPixelWhereABlockStraddlesAStep) {
   EXPECT_NEAR(blocks.means().point(2)[2], 1.8, 1e-6);
   EXPECT_FALSE(blocks.complete(1));
 
-  const Grid tilted(16, 8, [](int u, int v) { return 2.0 + 0.015 * u + 0.01 * v; }, 4);
+  const Grid tilted(
+      16, 8, [](int u, int v) { return 2.0 + 0.015 * u + 0.01 * v; }, 4);
   blocks.read(tilted.grid(), 4);
   blocks.separateSurfaces(tilted.grid(), noise, static_cast<float>(1.0 / test::kPinholeFocal));
   for (std::size_t i = 0; i < blocks.means().size(); ++i) EXPECT_FALSE(blocks.split(i)) << i;

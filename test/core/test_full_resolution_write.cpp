@@ -64,8 +64,10 @@ struct Written {
 };
 
 TEST(FullResolutionWrite, GivesEveryPixelOfABlockInsideAPlaneItsLabel) {
-  const Grid grid(32, 24, [](int, int) { return 2.0; }, 4);
-  const Written w(grid, 4, [](int, int) { return 1u; }, {{{0, 0, -1}, {0, 0, 2}}}, 0.0);
+  const Grid grid(
+      32, 24, [](int, int) { return 2.0; }, 4);
+  const Written w(
+      grid, 4, [](int, int) { return 1u; }, {{{0, 0, -1}, {0, 0, 2}}}, 0.0);
   for (const std::uint32_t label : w.labels) ASSERT_EQ(label, 1u);
   EXPECT_EQ(w.planes.list()[0].sums.count, 32.0 * 24.0);
   EXPECT_EQ(w.planes.list()[0].first_pixel, 0u);
@@ -76,7 +78,8 @@ TEST(FullResolutionWrite, DecidesTheBlockOfAnObjectInFrontOfAPlanePixelByPixel) 
   const auto depth = [](int u, int v) { return u == 13 && v == 9 ? 1.9 : 2.0; };
   for (const std::size_t stride : {3u, 4u}) {
     const Grid grid(32, 24, depth, stride);
-    const Written w(grid, 4, [](int, int) { return 1u; }, {{{0, 0, -1}, {0, 0, 2}}}, 0.0);
+    const Written w(
+        grid, 4, [](int, int) { return 1u; }, {{{0, 0, -1}, {0, 0, 2}}}, 0.0);
     for (int v = 0; v < 24; ++v)
       for (int u = 0; u < 32; ++u)
         ASSERT_EQ(w.labels[grid.index(u, v)], u == 13 && v == 9 ? 0u : 1u) << u << ", " << v << " stride " << stride;
@@ -88,7 +91,8 @@ TEST(FullResolutionWrite, LeavesHolesAndBlocksWithoutAPlaneAroundUnlabelled) {
   const auto depth = [](int u, int v) { return (u + v) % 5 == 0 ? kNaN : 2.0; };
   const Grid grid(32, 24, depth, 4);
   // Planes on the left half of the blocks only.
-  const Written w(grid, 4, [](int bx, int) { return bx < 4 ? 1u : 0u; }, {{{0, 0, -1}, {0, 0, 2}}}, 0.0);
+  const Written w(
+      grid, 4, [](int bx, int) { return bx < 4 ? 1u : 0u; }, {{{0, 0, -1}, {0, 0, 2}}}, 0.0);
   double count = 0.0;
   for (int v = 0; v < 24; ++v)
     for (int u = 0; u < 32; ++u) {
@@ -117,8 +121,9 @@ TEST(FullResolutionWrite, SumsAndFirstPixelsAreThoseOfTheLabelledPixels) {
   // Two walls meeting at column 20; noise of 4 mm.
   const auto depth = [&](int u, int v) { return (u < 20 ? 2.0 : 2.0 + 0.02 * (u - 20)) + offsets[v * 40 + u]; };
   const Grid grid(40, 32, depth, 4);
-  const Written w(grid, 4, [](int bx, int) { return bx < 5 ? 1u : 2u; },
-                  {{{0, 0, -1}, {0, 0, 2}}, {{0.2f, 0, -1}, {0.1f, 0, 2.05f}}}, 0.004);
+  const Written w(
+      grid, 4, [](int bx, int) { return bx < 5 ? 1u : 2u; },
+      {{{0, 0, -1}, {0, 0, 2}}, {{0.2f, 0, -1}, {0.1f, 0, 2.05f}}}, 0.004);
   for (std::uint32_t k = 1; k <= 2; ++k) {
     PlaneSums expected;
     std::size_t first = kNoPixel;
@@ -152,15 +157,19 @@ TEST(FullResolutionWrite, GivesThePixelsAlongACreaseThePlaneOnTheirSide) {
     };
     const Grid grid(64, 16, depth, 4);
     // The planes through the noise-free points, as fits of the two sides would give them.
-    const Grid exact(64, 16, [&](int u, int) { return u < 32 ? 3.0 : 3.0 + slope * (u - 31.5); }, 4);
+    const Grid exact(
+        64, 16, [&](int u, int) { return u < 32 ? 3.0 : 3.0 + slope * (u - 31.5); }, 4);
     const Vec3 left_a = exact.point(0, 0), left_b = exact.point(0, 15), left_c = exact.point(20, 0);
     const Vec3 right_a = exact.point(63, 0), right_b = exact.point(63, 15), right_c = exact.point(44, 0);
     const Vec3 left_normal = (left_b - left_a).cross(left_c - left_a);
     const Vec3 right_normal = (right_b - right_a).cross(right_c - right_a);
     const auto facing = [](Vec3 n, Vec3 p) { return n.dot(p) > 0 ? n * -1.f : n; };
     const Vec3 centre_left = exact.point(10, 8), centre_right = exact.point(53, 8);
-    const Written w(grid, 4, [](int bx, int) { return bx < 7 ? 1u : bx > 8 ? 2u : 0u; },
-                    {{facing(left_normal, left_a), centre_left}, {facing(right_normal, right_a), centre_right}}, 0.01);
+    const Written w(
+        grid, 4, [](int bx, int) { return bx < 7   ? 1u
+                                          : bx > 8 ? 2u
+                                                   : 0u; },
+        {{facing(left_normal, left_a), centre_left}, {facing(right_normal, right_a), centre_right}}, 0.01);
     int wrong = 0;
     for (int v = 0; v < 16; ++v)
       for (int u = 26; u < 38; ++u) {
