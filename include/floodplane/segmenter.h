@@ -102,7 +102,7 @@ class Segmenter {
     /// on too few flat patches. A cold start on the first frame, after setParams, after a
     /// failed call, when the size changed, and when Params fix the noise. Planes are those of
     /// a cold start up to the frame-to-frame scatter of the noise estimate (see
-    /// bench/README.md, "Head start").
+    /// bench/HISTORY.md, "Head start").
     bool head_start = false;
   };
 
