@@ -55,7 +55,8 @@ class SeedSelector {
  public:
   /// Prepares the tests for one grid. `angular_pitch` is the angle between the viewing rays
   /// of neighbouring pixels (1/f for a pinhole camera of focal length f pixels).
-  /// `scale` shrinks the seed cube's fixed part (the finer second pass: 1/2).
+  /// `scale` shrinks the seed cube's fixed part (the finer second pass: 1/2, 1/3 on frames
+  /// without noise, see segmenter.cpp).
   void configure(const Params& params, const Tolerances& tolerances, double scale, float angular_pitch, int width,
                  int height);
 

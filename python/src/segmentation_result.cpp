@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "decimal_text.h"
 #include "result_pickling.h"
 
 namespace floodplane::python {
@@ -17,11 +18,6 @@ namespace {
 
 namespace py = pybind11;
 
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
-}
 
 void bindNoiseModel(py::module_& m) {
   py::class_<NoiseModel>(m, "NoiseModel",

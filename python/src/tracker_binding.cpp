@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "decimal_text.h"
 #include "errors.h"
 #include "floodplane/plane_tracker.h"
 #include "params_kwargs.h"
@@ -170,11 +171,6 @@ std::optional<PlaneTrack> trackWithId(const Tracker& self, py::handle id) {
   return *track;
 }
 
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
-}
 
 std::string vectorText(const Eigen::Vector3d& v) {
   return "[" + fixed(v.x(), 4) + ", " + fixed(v.y(), 4) + ", " + fixed(v.z(), 4) + "]";

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Plane tracking quality against ground truth (issue 28): whether a ground-truth plane keeps
+// Plane tracking quality against ground truth: whether a ground-truth plane keeps
 // one track id over a sequence of frames. Fed frame by frame, in order, with the ground-truth
 // label image, the valid mask and the predicted label image holding track ids (0: no plane).
 // Plain arrays, no PCL, no I/O. bench/track_sequences.py counts the same in Python from label

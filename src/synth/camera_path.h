@@ -35,7 +35,7 @@ namespace floodplane::synth {
 /// interval, angle, side and hold are drawn per glance. At the defaults and 30 Hz a glance turns
 /// 60-90 degrees and is over in 22-38 frames, so a small surface in the middle of a Kinect's
 /// 63-degree wide view is out of it for about 13-29 frames: within plane tracking's 30-frame
-/// memory (issue 28). The draws have a random stream of their own: the walk is the same with
+/// memory. The draws have a random stream of their own: the walk is the same with
 /// and without glances.
 struct LookAwaySettings {
   bool enabled = false;

@@ -30,7 +30,7 @@ Scene generateRoomScene(std::uint64_t seed);
 /// by the structured-light scanner (scannerIntrinsics()).
 Scene generateBlocksScene(std::uint64_t seed);
 
-/// The boards family (issue 26, thin faces): the thickness of every board, metres.
+/// The boards family (thin faces): the thickness of every board, metres.
 inline constexpr double kBoardThickness = 0.02;
 
 /// "boards_0007": the name of the boards scene of `seed` (at least 4 digits), so that it can
