@@ -18,7 +18,6 @@ namespace {
 
 namespace py = pybind11;
 
-
 void bindNoiseModel(py::module_& m) {
   py::class_<NoiseModel>(m, "NoiseModel",
                          "The depth noise a segmentation assumed: sigma(r) = sigma_constant + sigma_quadratic r^2 "

@@ -171,7 +171,6 @@ std::optional<PlaneTrack> trackWithId(const Tracker& self, py::handle id) {
   return *track;
 }
 
-
 std::string vectorText(const Eigen::Vector3d& v) {
   return "[" + fixed(v.x(), 4) + ", " + fixed(v.y(), 4) + ", " + fixed(v.z(), 4) + "]";
 }

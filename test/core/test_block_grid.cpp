@@ -70,13 +70,13 @@ TEST(BlockGrid, SumsEachBlocksMeasuredPixels) {
           // The sums reproduce the pixels' own, covariance included.
           const PlaneSums sums = blocks.sums(i);
           EXPECT_DOUBLE_EQ(sums.count, expected.count);
-          const Eigen::Vector3d s = Eigen::Vector3d(sums.sx, sums.sy, sums.sz) / sums.count;
-          EXPECT_NEAR((s - mean).norm(), 0.0, 1e-6);
+          const Eigen::Vector3d centroid = Eigen::Vector3d(sums.sx, sums.sy, sums.sz) / sums.count;
+          EXPECT_NEAR((centroid - mean).norm(), 0.0, 1e-6);
           const auto covariance = [](const PlaneSums& q) {
             const Eigen::Vector3d c(q.sx / q.count, q.sy / q.count, q.sz / q.count);
-            Eigen::Matrix3d m;
-            m << q.sxx, q.sxy, q.sxz, q.sxy, q.syy, q.syz, q.sxz, q.syz, q.szz;
-            return Eigen::Matrix3d(m / q.count - c * c.transpose());
+            Eigen::Matrix3d products;
+            products << q.sxx, q.sxy, q.sxz, q.sxy, q.syy, q.syz, q.sxz, q.syz, q.szz;
+            return Eigen::Matrix3d(products / q.count - c * c.transpose());
           };
           EXPECT_LT((covariance(sums) - covariance(expected)).norm(), 1e-8);
         }

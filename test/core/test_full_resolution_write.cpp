@@ -107,9 +107,13 @@ TEST(FullResolutionWrite, LeavesHolesAndBlocksWithoutAPlaneAroundUnlabelled) {
       count += label == 1u ? 1.0 : 0.0;
     }
   // The border block column (16-19) is decided pixel by pixel: its pixels are on the plane.
-  for (int v = 0; v < 24; ++v)
-    for (int u = 16; u < 20; ++u)
-      if ((u + v) % 5 != 0) EXPECT_EQ(w.labels[grid.index(u, v)], 1u);
+  for (int v = 0; v < 24; ++v) {
+    for (int u = 16; u < 20; ++u) {
+      if ((u + v) % 5 != 0) {
+        EXPECT_EQ(w.labels[grid.index(u, v)], 1u);
+      }
+    }
+  }
   EXPECT_EQ(w.planes.list()[0].sums.count, count);
 }
 

@@ -86,7 +86,9 @@ TEST(Segmenter, NumbersPlanesBySizeAndCountsTheirPixels) {
             ASSERT_LT(start, result.labels.size());
             EXPECT_EQ(result.labels[start], k + 1);
             EXPECT_GE(start, first[k + 1]);
-            if (start % static_cast<std::size_t>(result.width) != 0) EXPECT_NE(result.labels[start - 1], k + 1);
+            if (start % static_cast<std::size_t>(result.width) != 0) {
+              EXPECT_NE(result.labels[start - 1], k + 1);
+            }
           }
           if (k > 0) {
             EXPECT_GE(result.planes[k - 1].inlier_count, result.planes[k].inlier_count);
