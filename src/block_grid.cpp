@@ -143,7 +143,6 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
   const int width = means_.width;
   const std::size_t first = static_cast<std::size_t>(by) * static_cast<std::size_t>(width);
   const int v_begin = by * s, v_end = std::min(v_begin + s, full.height);
-  const std::size_t frame_width = static_cast<std::size_t>(full.width);
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   for (int bx = 0; bx < width; ++bx) {
     const std::size_t i = first + static_cast<std::size_t>(bx);
@@ -156,6 +155,7 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
       // block row stay in the cache from one block to the next. A block with a hole goes pixel
       // by pixel below; the additions come in the same order either way, so both give the
       // same bits.
+      const std::size_t frame_width = static_cast<std::size_t>(full.width);
       const float* p =
           full.point(static_cast<std::size_t>(v_begin) * frame_width + static_cast<std::size_t>(span.u_begin));
       const std::size_t row_step = frame_width * full.stride;
