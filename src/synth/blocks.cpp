@@ -34,7 +34,10 @@ Assembly profileBlock(const std::vector<Eigen::Vector2d>& profile, double width)
 }
 
 Assembly boxBlock(double s, RandomSource& random) {
-  const Eigen::Vector3d size(random.uniform(3, 10) * s, random.uniform(3, 10) * s, random.uniform(2, 10) * s);
+  Eigen::Vector3d size;
+  size.z() = random.uniform(2, 10) * s;
+  size.y() = random.uniform(3, 10) * s;
+  size.x() = random.uniform(3, 10) * s;
   Assembly block;
   block.add("",
             Box{Eigen::Vector3d(0, 0, size.z() / 2.0) * kCentimetre, size * kCentimetre, Eigen::Matrix3d::Identity()});

@@ -58,9 +58,9 @@ BlocksLayout placeBlocks(RandomSource& random) {
   for (int attempt = 0; attempt < 100 && layout.count < wanted; ++attempt) {
     Assembly block = makeBlock(randomBlockKind(random), 1.0, random);
     const double yaw = random.uniform(0, 2 * kPi);
-    const Footprint footprint{Eigen::Vector2d(random.uniform(-kClusterHalfSize, kClusterHalfSize),
-                                              random.uniform(-kClusterHalfSize, kClusterHalfSize)),
-                              block.half_size, yaw};
+    const double y = random.uniform(-kClusterHalfSize, kClusterHalfSize);
+    const double x = random.uniform(-kClusterHalfSize, kClusterHalfSize);
+    const Footprint footprint{Eigen::Vector2d(x, y), block.half_size, yaw};
     if (!table.fits(footprint, random.uniform(0.005, 0.025), 0.0)) continue;
     table.add(footprint);
     paint(block, random);
@@ -131,7 +131,9 @@ Scene generateBlocksScene(std::uint64_t seed) {
       const double turn = azimuth + random.uniform(-0.3, 0.3);
       const Eigen::Vector3d forward(std::cos(elevation) * std::cos(turn), std::cos(elevation) * std::sin(turn),
                                     -std::sin(elevation));
-      const Eigen::Vector3d target = centre + 0.02 * Eigen::Vector3d(random.gaussian(), random.gaussian(), 0.0);
+      const double jitter_y = random.gaussian();
+      const double jitter_x = random.gaussian();
+      const Eigen::Vector3d target = centre + 0.02 * Eigen::Vector3d(jitter_x, jitter_y, 0.0);
       const Eigen::Vector3d up = Eigen::AngleAxisd(degrees(random.uniform(-8, 8)), forward) * Eigen::Vector3d::UnitZ();
       scene.world_from_camera = lookAt(target - distance * forward, target, up);
       if (meetsRequirements(summarizeView(scene, requirements), requirements)) {

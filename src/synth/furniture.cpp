@@ -64,7 +64,10 @@ Assembly makeTable(double height, RandomSource& random) {
 
 Assembly makeBoxStack(RandomSource& random) {
   Assembly stack;
-  Eigen::Vector3d size(random.uniform(0.3, 1.0), random.uniform(0.3, 1.0), random.uniform(0.2, 0.9));
+  Eigen::Vector3d size;
+  size.z() = random.uniform(0.2, 0.9);
+  size.y() = random.uniform(0.3, 1.0);
+  size.x() = random.uniform(0.3, 1.0);
   stack.add("", uprightBox({0, 0, size.z() / 2}, size));
   stack.half_size = size.head<2>() / 2.0;
   double base = size.z();
@@ -74,8 +77,10 @@ Assembly makeBoxStack(RandomSource& random) {
     // A box no wider than 0.7 of the smaller side below, turned up to 25 degrees, stays on the
     // box below: its half diagonal is under half that side.
     const double room = std::min(size.x(), size.y());
-    const Eigen::Vector3d upper(random.uniform(0.35, 0.7) * room, random.uniform(0.35, 0.7) * room,
-                                random.uniform(0.15, 0.5));
+    Eigen::Vector3d upper;
+    upper.z() = random.uniform(0.15, 0.5);
+    upper.y() = random.uniform(0.35, 0.7) * room;
+    upper.x() = random.uniform(0.35, 0.7) * room;
     yaw += random.uniform(-degrees(25), degrees(25));
     stack.add("on top " + std::to_string(level), turnedBox({0, 0, base + upper.z() / 2}, upper, yaw));
     base += upper.z();
@@ -172,7 +177,10 @@ Assembly makeRamp(RandomSource& random) {
 }
 
 Assembly makePlatform(RandomSource& random) {
-  const Eigen::Vector3d size(random.uniform(1.0, 2.5), random.uniform(0.8, 2.0), random.uniform(0.1, 0.45));
+  Eigen::Vector3d size;
+  size.z() = random.uniform(0.1, 0.45);
+  size.y() = random.uniform(0.8, 2.0);
+  size.x() = random.uniform(1.0, 2.5);
   Assembly platform;
   platform.add("", uprightBox({0, 0, size.z() / 2}, size));
   platform.half_size = size.head<2>() / 2;
@@ -217,7 +225,10 @@ Assembly makeLeaningBoard(double wall_height, RandomSource& random) {
 }
 
 Assembly makeColumn(double height, RandomSource& random) {
-  const Eigen::Vector3d size(random.uniform(0.25, 0.6), random.uniform(0.25, 0.6), height);
+  Eigen::Vector3d size;
+  size.z() = height;
+  size.y() = random.uniform(0.25, 0.6);
+  size.x() = random.uniform(0.25, 0.6);
   Assembly column;
   column.add("", uprightBox({0, 0, height / 2}, size));
   column.half_size = size.head<2>() / 2;
@@ -256,7 +267,10 @@ Assembly makeTableItem(double max_height, RandomSource& random) {
     Assembly item;
     const int kind = random.integer(0, 5);
     if (kind == 0) {
-      const Eigen::Vector3d size(random.uniform(0.06, 0.35), random.uniform(0.06, 0.35), random.uniform(0.04, 0.3));
+      Eigen::Vector3d size;
+      size.z() = random.uniform(0.04, 0.3);
+      size.y() = random.uniform(0.06, 0.35);
+      size.x() = random.uniform(0.06, 0.35);
       item.add("", uprightBox({0, 0, size.z() / 2}, size));
       item.half_size = size.head<2>() / 2;
       item.height = size.z();
@@ -272,7 +286,9 @@ Assembly makeTableItem(double max_height, RandomSource& random) {
       item.half_size = Eigen::Vector2d::Constant(radius);
       item.height = 2 * radius;
     } else {
-      item = makeBlock(random.pick(allBlockKinds()), random.uniform(2.0, 3.0), random);
+      const double scale = random.uniform(2.0, 3.0);
+      const BlockKind block_kind = random.pick(allBlockKinds());
+      item = makeBlock(block_kind, scale, random);
     }
     item.interest = {Eigen::Vector3d(0.0, 0.0, item.height / 2)};
     if (item.height <= max_height) {

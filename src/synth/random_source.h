@@ -5,6 +5,13 @@
 // every platform (our own generator and arithmetic, never the standard distributions, whose
 // results differ between standard libraries) and with no global state, so one seed always
 // gives the same scene and two generators never disturb each other.
+//
+// Every draw is a statement of its own: C++ leaves open the order in which a call's arguments
+// (`Eigen::Vector3d(random.uniform(), random.uniform(), ...)`) or the operands of `+` are
+// evaluated, so two draws in one expression give other scenes under another compiler. Where
+// the draws stand in an order that reads backwards (y before x), it is the order in which GCC
+// evaluated the expression they replace: the seeds keep the scenes every recorded figure was
+// measured on (test/synth/test_scene_checksums.cpp holds them to it under GCC and Clang).
 
 #include <cstddef>
 #include <cstdint>

@@ -89,10 +89,16 @@ class RoomLayout {
   // Anywhere on the floor, turned square to the walls or at random.
   bool placeOnFloor(const Assembly& object, const std::string& kind) {
     for (int attempt = 0; attempt < 40; ++attempt) {
-      const double yaw = random_.chance(0.5) ? random_.integer(0, 3) * kPi / 2 + random_.uniform(-0.1, 0.1)
-                                             : random_.uniform(0, 2 * kPi);
-      const Footprint footprint{Eigen::Vector2d(random_.uniform(0, shell_.width), random_.uniform(0, shell_.depth)),
-                                object.half_size, yaw};
+      double yaw = 0.0;
+      if (random_.chance(0.5)) {
+        const int quarter_turns = random_.integer(0, 3);
+        yaw = quarter_turns * kPi / 2 + random_.uniform(-0.1, 0.1);
+      } else {
+        yaw = random_.uniform(0, 2 * kPi);
+      }
+      const double y = random_.uniform(0, shell_.depth);
+      const double x = random_.uniform(0, shell_.width);
+      const Footprint footprint{Eigen::Vector2d(x, y), object.half_size, yaw};
       if (!floor_.fits(footprint, kObjectGap, 0.1)) continue;
       place(object, kind, standingPose(footprint.center.x(), footprint.center.y(), 0, yaw), footprint);
       return true;
@@ -131,9 +137,9 @@ class RoomLayout {
       if (object.parts.empty()) continue;
       for (int attempt = 0; attempt < 15; ++attempt) {
         const double yaw = random_.uniform(0, 2 * kPi);
-        const Footprint footprint{Eigen::Vector2d(random_.uniform(surface.low.x(), surface.high.x()),
-                                                  random_.uniform(surface.low.y(), surface.high.y())),
-                                  object.half_size, yaw};
+        const double y = random_.uniform(surface.low.y(), surface.high.y());
+        const double x = random_.uniform(surface.low.x(), surface.high.x());
+        const Footprint footprint{Eigen::Vector2d(x, y), object.half_size, yaw};
         if (!support.plan.fits(footprint, 0.03, 0.0)) continue;
         support.plan.add(footprint);
         const Eigen::Isometry3d on_support =
@@ -205,7 +211,9 @@ class RoomLayout {
 
 Opening randomDoor(double room_height, RandomSource& random) {
   const double width = random.uniform(0.8, 1.0);
-  return {0.0, width, 0.0, random.uniform(1.95, std::min(2.2, room_height - 0.2)), random.uniform(0.04, 0.15), true};
+  const double top = random.uniform(1.95, std::min(2.2, room_height - 0.2));
+  const double depth = random.uniform(0.04, 0.15);
+  return {0.0, width, 0.0, top, depth, true};
 }
 
 // A niche in the wall (0.4-1.4 m wide, from 0.4-1.2 m above the floor) or, one time in three, an
@@ -213,12 +221,15 @@ Opening randomDoor(double room_height, RandomSource& random) {
 Opening randomRecess(double room_height, RandomSource& random) {
   if (random.chance(1.0 / 3.0)) {
     const double width = random.uniform(0.6, 1.6);
-    return {0.0, width, 0.0, random.uniform(1.0, std::min(2.2, room_height - 0.2)), random.uniform(0.2, 0.6), false};
+    const double top = random.uniform(1.0, std::min(2.2, room_height - 0.2));
+    const double depth = random.uniform(0.2, 0.6);
+    return {0.0, width, 0.0, top, depth, false};
   }
   const double width = random.uniform(0.4, 1.4);
   const double bottom = random.uniform(0.4, 1.2);
   const double top = bottom + random.uniform(0.3, std::max(0.31, std::min(1.2, room_height - bottom - 0.3)));
-  return {0.0, width, bottom, top, random.uniform(0.15, 0.5), false};
+  const double depth = random.uniform(0.15, 0.5);
+  return {0.0, width, bottom, top, depth, false};
 }
 
 void addTables(RoomLayout& layout, int tables, RandomSource& random) {
@@ -228,6 +239,12 @@ void addTables(RoomLayout& layout, int tables, RandomSource& random) {
     if (t > 0 && !random.chance(0.5)) height = random.uniform(0.65, 0.8);
     if (layout.placeOnFloor(makeTable(height, random), "table")) layout.addItems(random.integer(1, 5));
   }
+}
+
+// A column 0.15-1 m out of a wall (the distance drawn before the column).
+void addColumn(RoomLayout& layout, double height, RandomSource& random) {
+  const double depth = random.uniform(0.15, 1.0);
+  layout.placeAtWall(makeColumn(height, random), "column", depth);
 }
 
 void addShelves(RoomLayout& layout, int shelves, RandomSource& random) {
@@ -252,8 +269,7 @@ void furnishOffice(RoomLayout& layout, RandomSource& random) {
   repeat(random.integer(0, 1), [&] { layout.placeAtWall(makeLeaningBoard(height, random), "leaning board"); });
   repeat(random.integer(0, 2), [&] { layout.placeOnFloor(makeBoxStack(random), "box"); });
   repeat(random.integer(0, 1), [&] { layout.placeOnFloor(makeCurvedObject(random), "round object"); });
-  repeat(random.integer(0, 1),
-         [&] { layout.placeAtWall(makeColumn(height, random), "column", random.uniform(0.15, 1.0)); });
+  repeat(random.integer(0, 1), [&] { addColumn(layout, height, random); });
 }
 
 void furnishHall(RoomLayout& layout, RandomSource& random) {
@@ -263,8 +279,7 @@ void furnishHall(RoomLayout& layout, RandomSource& random) {
   layout.placeAtWall(makeStairs(height - 0.8, random), "staircase");
   if (random.chance(0.6)) layout.placeOnFloor(makeRamp(random), "ramp");
   if (random.chance(0.4)) layout.placeOnFloor(makePlatform(random), "platform");
-  repeat(random.integer(0, 2),
-         [&] { layout.placeAtWall(makeColumn(height, random), "column", random.uniform(0.15, 1.0)); });
+  repeat(random.integer(0, 2), [&] { addColumn(layout, height, random); });
   repeat(random.integer(0, 2), [&] { layout.placeAtWall(makeWallBoard(height, random), "board"); });
   repeat(random.integer(0, 1), [&] { layout.placeAtWall(makeLeaningBoard(height, random), "leaning board"); });
   repeat(random.integer(0, 2), [&] { layout.placeOnFloor(makeBoxStack(random), "box"); });
@@ -289,7 +304,8 @@ void furnishStorage(RoomLayout& layout, RandomSource& random) {
 bool placeCamera(Scene& scene, const Assembly& room, const RoomShell& shell, RandomSource& random) {
   const ViewRequirements requirements;
   for (int attempt = 0; attempt < kPoseAttempts; ++attempt) {
-    const Eigen::Vector3d jitter(random.gaussian(), random.gaussian(), random.gaussian());
+    Eigen::Vector3d jitter;
+    for (int axis = 2; axis >= 0; --axis) jitter[axis] = random.gaussian();
     const Eigen::Vector3d target = random.pick(room.interest) + 0.1 * jitter;
     // Mostly 1-5 m (a view of a part of the room), sometimes a close-up.
     const double distance = random.chance(0.15) ? random.uniform(0.6, 1.0) : random.uniform(1.0, 5.0);
@@ -324,8 +340,11 @@ Scene generateRoomScene(std::uint64_t seed) {
   for (int layout_attempt = 0; layout_attempt < kLayoutAttempts; ++layout_attempt) {
     const auto kind = static_cast<RoomKind>(random.integer(0, 2));
     const double min_side = kind == RoomKind::hall ? 4.0 : 3.0;
-    RoomShell shell = makeRoomShell(random.uniform(min_side, 8.0), random.uniform(min_side, 8.0),
-                                    random.uniform(2.4, 3.2), random.chance(0.5));
+    const bool ceiling = random.chance(0.5);
+    const double height = random.uniform(2.4, 3.2);
+    const double depth = random.uniform(min_side, 8.0);
+    const double width = random.uniform(min_side, 8.0);
+    RoomShell shell = makeRoomShell(width, depth, height, ceiling);
     RoomLayout layout(std::move(shell), random);
     switch (kind) {
       case RoomKind::office:
