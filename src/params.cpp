@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "params_table.h"
+
 namespace floodplane {
 
 bool isValidSubsampling(int factor) { return factor == 1 || factor == 2 || factor == 4 || factor == 8; }
@@ -28,21 +30,35 @@ std::string nonNegative(const std::optional<double>& value, const char* name) {
   return value ? nonNegative(*value, name) : std::string();
 }
 
+// The rule of each kind of value (params_table.h); `name` is the field's.
+std::string problemOf(params_table::Length, const std::optional<double>& value, const char* name) {
+  return positive(value, name, "metres");
+}
+std::string problemOf(params_table::Angle, double value, const char* name) {
+  std::string problem = positive(value, name, "radians");
+  if (problem.empty() && value >= M_PI / 2)
+    problem = std::string(name) + " must be < pi/2 radians, got " + std::to_string(value);
+  return problem;
+}
+std::string problemOf(params_table::Count, const std::optional<std::uint32_t>&, const char*) { return {}; }
+std::string problemOf(params_table::Fraction, double value, const char* name) { return nonNegative(value, name); }
+std::string problemOf(params_table::Subsampling, int value, const char* name) {
+  if (isValidSubsampling(value)) return {};
+  return std::string(name) + " must be 1, 2, 4 or 8, got " + std::to_string(value);
+}
+std::string problemOf(params_table::Noise, const std::optional<double>& value, const char* name) {
+  return nonNegative(value, name);
+}
+
 }  // namespace
 
 std::string Params::problem() const {
-  for (std::string problem :
-       {positive(distance_threshold, "distance_threshold", "metres"), positive(seed_size, "seed_size", "metres"),
-        positive(angular_threshold, "angular_threshold", "radians"),
-        positive(merge_distance, "merge_distance", "metres"), nonNegative(maximum_curvature, "maximum_curvature"),
-        nonNegative(depth_noise_coefficient, "depth_noise_coefficient"),
-        nonNegative(depth_noise_constant, "depth_noise_constant")}) {
-    if (!problem.empty()) return problem;
-  }
-  if (angular_threshold >= M_PI / 2)
-    return "angular_threshold must be < pi/2 radians, got " + std::to_string(angular_threshold);
-  if (!isValidSubsampling(subsampling)) return "subsampling must be 1, 2, 4 or 8, got " + std::to_string(subsampling);
-  return {};
+  std::string problem;
+#define FLOODPLANE_CHECK(field, kind, flag, setter, help) \
+  if (problem.empty()) problem = problemOf(params_table::kind{}, field, #field);
+  FLOODPLANE_PARAMETERS(FLOODPLANE_CHECK)
+#undef FLOODPLANE_CHECK
+  return problem;
 }
 
 void Params::validate() const {

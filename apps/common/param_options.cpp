@@ -5,6 +5,9 @@
 #include <CLI/CLI.hpp>
 
 #include <cctype>
+#include <optional>
+
+#include "params_table.h"
 
 namespace floodplane::apps {
 namespace {
@@ -16,23 +19,19 @@ struct ParameterName {
   const char* setter;
 };
 
-constexpr ParameterName kParameterNames[] = {
-    {"distance_threshold", "--distance-threshold", "setDistanceThreshold"},
-    {"seed_size", "--seed-size", "setSeedSize"},
-    {"angular_threshold", "--angular-threshold", "setAngularThreshold"},
-    {"merge_distance", "--merge-distance", "setMergeDistance"},
-    {"min_inliers", "--min-inliers", "setMinInliers"},
-    {"subsampling", "--subsample", "setSubsampling"},
-    {"maximum_curvature", "--maximum-curvature", "setMaximumCurvature"},
-    {"depth_noise_coefficient", "--depth-noise-coefficient", "setDepthNoiseCoefficient"},
-    {"depth_noise_constant", "--depth-noise-constant", "setDepthNoiseConstant"},
-};
+#define FLOODPLANE_NAMES(field, kind, flag, setter, help) {#field, flag, #setter},
+constexpr ParameterName kParameterNames[] = {FLOODPLANE_PARAMETERS(FLOODPLANE_NAMES)};
+#undef FLOODPLANE_NAMES
 
-std::string flagOf(const std::string& field) {
-  for (const ParameterName& name : kParameterNames) {
-    if (field == name.field) return name.flag;
-  }
-  return field;  // unreachable for the fields listed above; a typo shows in --help
+// An option writing into `member`; a field with a default shows it in --help, one the library
+// derives from the frame stays unset unless given.
+template <typename T>
+void addOption(CLI::App& app, const char* flag, std::optional<T>& member, const char* help) {
+  app.add_option(flag, member, help);
+}
+template <typename T>
+void addOption(CLI::App& app, const char* flag, T& member, const char* help) {
+  app.add_option(flag, member, help)->capture_default_str();
 }
 
 bool isWordCharacter(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
@@ -58,29 +57,9 @@ std::string replaceWord(std::string text, const std::string& word, const std::st
 // The paper's lengths are left out by default: then they follow the frame's noise and pixel
 // footprint (scale-free); given, they are fixed lengths as in the paper.
 void addParameterOptions(CLI::App& app, Params& params) {
-  app.add_option(flagOf("distance_threshold"), params.distance_threshold,
-                 "sigma_plane [m]: largest point-to-plane distance in the flood (Eq. 2); default: "
-                 "3 noise deviations (the paper: 0.01)");
-  app.add_option(flagOf("seed_size"), params.seed_size,
-                 "sigma_seed [m]: side of the seed cube; default: from the noise and the pixel size (the paper: 0.06)");
-  app.add_option(flagOf("angular_threshold"), params.angular_threshold,
-                 "theta_angle [rad]: largest angle between normals in the seed and merge tests")
-      ->capture_default_str();
-  app.add_option(flagOf("merge_distance"), params.merge_distance,
-                 "sigma_plane-merge [m]: largest centroid-to-plane distance of merging planes; default: "
-                 "3 noise deviations (the paper: 0.03)");
-  app.add_option(flagOf("min_inliers"), params.min_inliers,
-                 "Smallest number of points of a plane; default: one pixel in a thousand");
-  app.add_option(flagOf("subsampling"), params.subsampling,
-                 "Segment every n-th pixel of every n-th row (1, 2, 4 or 8); labels stay full size")
-      ->capture_default_str();
-  app.add_option(flagOf("maximum_curvature"), params.maximum_curvature,
-                 "Largest curvature of a plane (1/3 accepts every plane)")
-      ->capture_default_str();
-  app.add_option(flagOf("depth_noise_coefficient"), params.depth_noise_coefficient,
-                 "c [1/m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
-  app.add_option(flagOf("depth_noise_constant"), params.depth_noise_constant,
-                 "sigma_0 [m] of the depth noise sigma_0 + c r^2; default: measured on each frame");
+#define FLOODPLANE_OPTION(field, kind, flag, setter, help) addOption(app, flag, params.field, help);
+  FLOODPLANE_PARAMETERS(FLOODPLANE_OPTION)
+#undef FLOODPLANE_OPTION
 }
 
 std::string inFlagTerms(const std::string& message) {

@@ -107,8 +107,10 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   double getMaximumCurvature() const { return params_.maximum_curvature; }
   /// Project the regions' contour points onto their plane along the viewing rays, as OMPS's
   /// segmentAndRefine does. Default false.
-  void setProjectPoints(bool project_points) { params_.project_points = project_points; }
-  bool getProjectPoints() const { return params_.project_points; }
+  /// Not a parameter of the segmentation (Params): it only changes the contours this class
+  /// builds.
+  void setProjectPoints(bool project_points) { project_points_ = project_points; }
+  bool getProjectPoints() const { return project_points_; }
 
   // ---- the paper's parameters and floodplane's own --------------------------------------
   /// sigma_seed [m]: side of the seed cube (Sec. III-C). Default: derived (the paper's 0.06).
@@ -243,6 +245,7 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   void finishPhases();
 
   Params params_;
+  bool project_points_ = false;
   bool measure_phases_ = false;
   bool head_start_ = false;
   bool params_changed_ = true;  // params_ still to be handed to segmenter_ (which then starts cold)

@@ -18,6 +18,9 @@ namespace floodplane {
 /// 0.5-8 m, a structured-light scanner at 1 m with 0.5 mm pixels and exact data. Setting one
 /// of them gives it the paper's meaning, a fixed length (the noise still widens it where 3
 /// standard deviations are more). `problem()` names values the method cannot use.
+///
+/// A new field goes into the list of src/params_table.h too, from which its validation, JSON,
+/// Python keyword and command-line flag follow (CONTRIBUTING.md).
 struct Params {
   // --- Sec. III-B, the distance function of the flood (Eqs. 1-4) ---
   /// sigma_plane [m]: largest point-to-plane distance of a pixel joining a flood (Eq. 2).
@@ -50,8 +53,6 @@ struct Params {
   /// the planarity test judges flatness against the noise instead, and OMPS's default of
   /// 0.001 rejects far, noisy walls.
   double maximum_curvature = 1.0 / 3.0;
-  /// Project each plane's boundary contour onto the plane along the viewing rays (as OMPS).
-  bool project_points = false;
 
   // --- beyond the paper ---
   /// Sub-sampling factor s in {1, 2, 4, 8} (Table III): s > 1 segments the means of s x s

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "errors.h"
+#include "params_table.h"
 
 namespace floodplane::python {
 
@@ -40,14 +41,6 @@ long long toInteger(py::handle value, const std::string& where, long long low, l
 
 namespace {
 
-bool toBool(py::handle value, const std::string& where) {
-  const py::module_ numpy = py::module_::import("numpy");
-  if (!PyBool_Check(value.ptr()) && !py::isinstance(value, numpy.attr("bool_"))) {
-    raiseTypeError(where + " must be True or False, got " + typeName(value));
-  }
-  return value.cast<bool>();
-}
-
 // One field: its name, how a Python value is stored into Params, and how it is read back.
 struct Field {
   const char* name;
@@ -55,52 +48,38 @@ struct Field {
   std::function<py::object(const Params&)> get;
 };
 
+// How a Python value is stored into a field of each type (None unsets an optional field).
+void assign(std::optional<double>& member, py::handle value, const std::string& where) {
+  member = value.is_none() ? std::nullopt : std::optional<double>(toDouble(value, where));
+}
+void assign(double& member, py::handle value, const std::string& where) { member = toDouble(value, where); }
+void assign(std::optional<std::uint32_t>& member, py::handle value, const std::string& where) {
+  if (value.is_none()) {
+    member.reset();
+  } else {
+    member = static_cast<std::uint32_t>(toInteger(value, where, 0, std::numeric_limits<std::uint32_t>::max()));
+  }
+}
+void assign(int& member, py::handle value, const std::string& where) {
+  member = static_cast<int>(toInteger(value, where, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+}
+
 template <typename T>
-py::object optionalObject(const std::optional<T>& value) {
+py::object toPython(const T& value) {
+  return py::cast(value);
+}
+template <typename T>
+py::object toPython(const std::optional<T>& value) {
   return value ? py::cast(*value) : py::none();
 }
 
+// Every field of params_table.h, in its order.
 const std::vector<Field>& fields() {
-  using Length = std::optional<double> Params::*;
-  const auto optionalLength = [](const char* name, Length member) {
-    return Field{name,
-                 [member](Params& p, py::handle v, const std::string& where) {
-                   p.*member = v.is_none() ? std::nullopt : std::optional<double>(toDouble(v, where));
-                 },
-                 [member](const Params& p) { return optionalObject(p.*member); }};
-  };
-  const auto number = [](const char* name, double Params::*member) {
-    return Field{name, [member](Params& p, py::handle v, const std::string& where) { p.*member = toDouble(v, where); },
-                 [member](const Params& p) { return py::cast(p.*member); }};
-  };
-  static const std::vector<Field> table = {
-      optionalLength("distance_threshold", &Params::distance_threshold),
-      optionalLength("seed_size", &Params::seed_size),
-      number("angular_threshold", &Params::angular_threshold),
-      optionalLength("merge_distance", &Params::merge_distance),
-      Field{"min_inliers",
-            [](Params& p, py::handle v, const std::string& where) {
-              if (v.is_none()) {
-                p.min_inliers.reset();
-              } else {
-                p.min_inliers =
-                    static_cast<std::uint32_t>(toInteger(v, where, 0, std::numeric_limits<std::uint32_t>::max()));
-              }
-            },
-            [](const Params& p) { return optionalObject(p.min_inliers); }},
-      number("maximum_curvature", &Params::maximum_curvature),
-      Field{"project_points",
-            [](Params& p, py::handle v, const std::string& where) { p.project_points = toBool(v, where); },
-            [](const Params& p) { return py::cast(p.project_points); }},
-      Field{"subsampling",
-            [](Params& p, py::handle v, const std::string& where) {
-              p.subsampling = static_cast<int>(
-                  toInteger(v, where, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
-            },
-            [](const Params& p) { return py::cast(p.subsampling); }},
-      optionalLength("depth_noise_coefficient", &Params::depth_noise_coefficient),
-      optionalLength("depth_noise_constant", &Params::depth_noise_constant),
-  };
+#define FLOODPLANE_FIELD(field, kind, flag, setter, help)                                             \
+  Field{#field, [](Params& p, py::handle v, const std::string& where) { assign(p.field, v, where); }, \
+        [](const Params& p) { return toPython(p.field); }},
+  static const std::vector<Field> table = {FLOODPLANE_PARAMETERS(FLOODPLANE_FIELD)};
+#undef FLOODPLANE_FIELD
   return table;
 }
 

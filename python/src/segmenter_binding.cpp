@@ -18,6 +18,7 @@
 #include "file_segmentation.h"
 #include "floodplane/segmenter.h"
 #include "params_kwargs.h"
+#include "params_table.h"
 #include "point_arrays.h"
 #include "segmentation_result.h"
 
@@ -102,6 +103,9 @@ std::string segmenterRepr(const SharedSegmenter& self) {
 
 }  // namespace
 
+// " distance_threshold" and so on: the keywords in Segmenter's docstring.
+#define FLOODPLANE_KEYWORD(field, kind, flag, setter, help) " " #field
+
 void bindSegmenter(py::module_& m) {
   py::class_<SharedSegmenter>(
       m, "Segmenter",
@@ -114,8 +118,7 @@ void bindSegmenter(py::module_& m) {
       .def(py::init([](const py::kwargs& keywords) {
              return std::make_unique<SharedSegmenter>(paramsFromKeywords(keywords, "Segmenter"));
            }),
-           "Segmenter(**params): distance_threshold, seed_size, angular_threshold, merge_distance, min_inliers, "
-           "maximum_curvature, project_points, subsampling, depth_noise_coefficient, depth_noise_constant")
+           "Segmenter(**params), the keywords:" FLOODPLANE_PARAMETERS(FLOODPLANE_KEYWORD))
       .def_property_readonly(
           "params", [](const SharedSegmenter& self) { return paramsToDict(self.core.params()); },
           "every parameter as a dict (None: derived from the frame)")

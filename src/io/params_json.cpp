@@ -4,6 +4,8 @@
 
 #include <sstream>
 
+#include "params_table.h"
+
 namespace floodplane::io {
 
 namespace {
@@ -11,6 +13,10 @@ namespace {
 template <class Value>
 nlohmann::ordered_json orNull(const std::optional<Value>& value) {
   return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+}
+template <class Value>
+nlohmann::ordered_json orNull(const Value& value) {
+  return nlohmann::ordered_json(value);
 }
 
 template <class Value>
@@ -20,20 +26,26 @@ std::string orAuto(const std::optional<Value>& value, const char* unit) {
   text << *value << unit;
   return text.str();
 }
+template <class Value>
+std::string orAuto(const Value& value, const char* unit) {
+  return orAuto(std::optional<Value>(value), unit);
+}
+
+const char* unitOf(params_table::Length) { return " m"; }
+const char* unitOf(params_table::Angle) { return " rad"; }
+const char* unitOf(params_table::Count) { return ""; }
+const char* unitOf(params_table::Fraction) { return ""; }
+const char* unitOf(params_table::Subsampling) { return ""; }
+const char* unitOf(params_table::Noise) { return ""; }
 
 }  // namespace
 
 nlohmann::ordered_json paramsJson(const Params& p) {
-  return {{"distance_threshold", orNull(p.distance_threshold)},
-          {"seed_size", orNull(p.seed_size)},
-          {"angular_threshold", p.angular_threshold},
-          {"merge_distance", orNull(p.merge_distance)},
-          {"min_inliers", orNull(p.min_inliers)},
-          {"subsampling", p.subsampling},
-          {"maximum_curvature", p.maximum_curvature},
-          {"project_points", p.project_points},
-          {"depth_noise_coefficient", orNull(p.depth_noise_coefficient)},
-          {"depth_noise_constant", orNull(p.depth_noise_constant)}};
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+#define FLOODPLANE_TO_JSON(field, kind, flag, setter, help) json[#field] = orNull(p.field);
+  FLOODPLANE_PARAMETERS(FLOODPLANE_TO_JSON)
+#undef FLOODPLANE_TO_JSON
+  return json;
 }
 
 nlohmann::ordered_json noiseJson(const NoiseModel& noise) {
@@ -47,14 +59,13 @@ nlohmann::ordered_json noiseJson(const NoiseModel& noise) {
 
 std::string describeParams(const Params& p) {
   std::ostringstream text;
-  text << "distance threshold " << orAuto(p.distance_threshold, " m") << ", seed size " << orAuto(p.seed_size, " m")
-       << ", angular threshold " << p.angular_threshold << " rad, merge distance " << orAuto(p.merge_distance, " m")
-       << ", min inliers " << orAuto(p.min_inliers, "") << ", maximum curvature " << p.maximum_curvature
-       << ", depth noise "
-       << (p.estimatesNoise()
-               ? std::string("estimated per frame")
-               : "c " + orAuto(p.depth_noise_coefficient, " 1/m") + ", sigma_0 " + orAuto(p.depth_noise_constant, " m"))
-       << ", sub-sampling " << p.subsampling;
+  const char* separator = "";
+#define FLOODPLANE_DESCRIBE(field, kind, flag, setter, help)                           \
+  text << separator << #field << " " << orAuto(p.field, unitOf(params_table::kind{})); \
+  separator = ", ";
+  FLOODPLANE_PARAMETERS(FLOODPLANE_DESCRIBE)
+#undef FLOODPLANE_DESCRIBE
+  if (p.estimatesNoise()) text << " (the noise estimated per frame)";
   return text.str();
 }
 

@@ -16,7 +16,8 @@ namespace floodplane::io {
 
 nlohmann::ordered_json paramsJson(const Params& params);
 nlohmann::ordered_json noiseJson(const NoiseModel& noise);
-/// "distance threshold auto, seed size 0.06 m, ..." for a configuration header.
+/// "distance_threshold auto, seed_size 0.06 m, ..." for a configuration header: every field
+/// of params_table.h by its name.
 std::string describeParams(const Params& params);
 
 }  // namespace floodplane::io

@@ -282,6 +282,7 @@ test::ScenePlane randomPlane(std::mt19937& rng, const test::Pinhole& camera, int
 struct RandomCloud {
   Cloud::Ptr cloud;
   Params params;
+  bool project_points = false;  // the PCL class's own setting, not a Params field
   std::string description;
 };
 
@@ -346,7 +347,7 @@ RandomCloud randomCloud(std::mt19937& rng, int width, int height) {
   out.params.maximum_curvature = curvature[rng() % 4];
   const double noise_choice = u01(rng);  // estimated, exact or a Kinect's
   if (noise_choice > 1.0 / 3.0) out.params.depth_noise_coefficient = noise_choice < 2.0 / 3.0 ? 0.0 : 0.0019;
-  out.params.project_points = u01(rng) < 0.3;
+  out.project_points = u01(rng) < 0.3;
   description << "; min_inliers " << *out.params.min_inliers << ", subsampling " << out.params.subsampling
               << ", max curvature " << out.params.maximum_curvature << ", noise coefficient "
               << (out.params.depth_noise_coefficient ? std::to_string(*out.params.depth_noise_coefficient)
@@ -379,6 +380,7 @@ TEST(SegmentationProperties, OutputsSatisfyTheInvariantsOnRandomClouds) {
     const RandomCloud random = randomCloud(rng, sizes[c].first, sizes[c].second);
     SCOPED_TRACE("cloud " + std::to_string(c) + ": " + random.description);
     Seg seg(random.params);
+    seg.setProjectPoints(random.project_points);
     const Output out = segmentAndRefine(seg, random.cloud);
     ASSERT_TRUE(satisfiesInvariants(*random.cloud, out, random.params));
     planes += out.planes();
@@ -409,12 +411,14 @@ TEST(SegmentationProperties, ACopyGivesTheSameResultInAFreshOrAReusedInstance) {
   for (std::size_t c = 0; c < clouds.size(); ++c) {
     SCOPED_TRACE("cloud " + std::to_string(c) + ": " + clouds[c].description);
     Seg fresh(clouds[c].params);
+    fresh.setProjectPoints(clouds[c].project_points);
     const Output original = segmentAndRefine(fresh, clouds[c].cloud);
     planes += original.planes();
 
     const Cloud::Ptr copy(new Cloud(*clouds[c].cloud));
     ASSERT_NE(&(*copy)[0], &(*clouds[c].cloud)[0]);
     reused.setParams(clouds[c].params);
+    reused.setProjectPoints(clouds[c].project_points);
     const Output again = segmentAndRefine(reused, copy);
     // And the fresh instance once more, on the copy.
     const Output fresh_again = segmentAndRefine(fresh, copy);

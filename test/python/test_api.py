@@ -158,13 +158,23 @@ def test_keywords_are_the_fields_of_params(scene):
     assert segmenter.params["subsampling"] == 1
 
     given = dict(distance_threshold=0.02, seed_size=0.05, angular_threshold=0.2, merge_distance=0.04,
-                 min_inliers=50, maximum_curvature=0.01, project_points=True, subsampling=2,
+                 min_inliers=50, maximum_curvature=0.01, subsampling=2,
                  depth_noise_coefficient=0.001, depth_noise_constant=0.0005)
     assert set(given) == set(fields)
     assert floodplane.Segmenter(**given).params == given
     assert "distance_threshold=0.02" in repr(floodplane.Segmenter(**given))
     # numpy scalars are numbers too
     assert floodplane.Segmenter(min_inliers=np.int64(7), seed_size=np.float32(0.5)).params["min_inliers"] == 7
+
+
+def test_the_ros_node_reconfigures_every_field_of_params():
+    """The ROS node's dynamic_reconfigure list is written by hand (0 for a derived length, a
+    measure_noise switch): it must still offer every field of Params."""
+    source = pathlib.Path(os.environ["FLOODPLANE_SOURCE_DIR"])
+    cfg = (source / "ros/floodplane_ros/cfg/Segmentation.cfg").read_text()
+    offered = set(re.findall(r'gen\.add\("(\w+)"', cfg))
+    missing = [name for name in floodplane.PARAMETER_NAMES if name not in offered]
+    assert not missing, f"Segmentation.cfg lacks {missing}"
 
 
 def test_parameters_change_the_result(scene):

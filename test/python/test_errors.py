@@ -80,7 +80,6 @@ def test_refuses_parameter_values_the_method_cannot_use(params, message):
     (dict(min_inliers=10.5), "min_inliers must be an integer, got float"),
     (dict(subsampling="2"), "subsampling must be an integer, got str"),
     (dict(subsampling=None), "subsampling must be an integer, got NoneType"),
-    (dict(project_points=1), "project_points must be True or False, got int"),
     (dict(distance_treshold=0.01), "unexpected keyword argument 'distance_treshold'.*distance_threshold"),
 ])
 def test_refuses_parameters_of_the_wrong_type_or_name(params, message):

@@ -252,7 +252,7 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
     typename PointCloud::VectorType contour(contour_.size());
     for (std::size_t j = 0; j < contour_.size(); ++j) {
       contour[j] = (*input_)[contour_[j]];
-      if (params_.project_points) {
+      if (project_points_) {
         // Along the viewing ray from the viewpoint onto the plane, as OMPS.
         const Eigen::Vector3f n = plane.coefficients.template head<3>();
         const Eigen::Vector3f ray = contour[j].getVector3fMap() - viewpoint;

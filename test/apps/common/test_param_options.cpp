@@ -9,11 +9,14 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
+#include "io/params_json.h"
+#include "params_table.h"
 
 namespace floodplane::test {
 namespace {
@@ -89,6 +92,60 @@ TEST(AddParameterOptions, AddsAnOptionForEveryFlagTheMessagesName) {
   apps::addParameterOptions(app, params);
   for (const BadValue& bad : badValues()) EXPECT_NO_THROW(app.get_option(bad.flag)) << bad.flag;
   EXPECT_NO_THROW(app.get_option("--min-inliers"));
+}
+
+// ---- the list of params_table.h reaches every field through every interface ---------------
+
+// The list has every field of Params: the structured binding names exactly as many as the
+// struct has (it does not compile otherwise), the list counts as many entries.
+TEST(ParamsTable, ListsEveryFieldOfParams) {
+  [[maybe_unused]] const auto& [f1, f2, f3, f4, f5, f6, f7, f8, f9] = Params();
+  static_assert(params_table::kCount == 9, "a Params field missing from params_table.h, or one too many");
+}
+
+// A value of each kind that differs from its default and passes Params::problem().
+double valueOf(params_table::Length) { return 0.02; }
+double valueOf(params_table::Angle) { return 0.2; }
+unsigned valueOf(params_table::Count) { return 50; }
+double valueOf(params_table::Fraction) { return 0.01; }
+int valueOf(params_table::Subsampling) { return 2; }
+double valueOf(params_table::Noise) { return 0.001; }
+
+template <typename T>
+std::string asText(T value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// Every parameter through its flag, its PCL setter and JSON: each lands in its own field.
+// Python's keywords are tested by test_api.py (PARAMETER_NAMES are the fields of params.h).
+TEST(ParamsTable, EveryParameterIsReachableFromEachInterface) {
+  int checked = 0;
+#define FLOODPLANE_REACH(field, kind, flag, setter, help)                                         \
+  {                                                                                               \
+    SCOPED_TRACE(#field);                                                                         \
+    const auto value = valueOf(params_table::kind{});                                             \
+    CLI::App app;                                                                                 \
+    Params from_flag;                                                                             \
+    apps::addParameterOptions(app, from_flag);                                                    \
+    const std::vector<std::string> arguments = {asText(value), flag};                             \
+    std::vector<std::string> reversed = arguments;                                                \
+    app.parse(reversed);                                                                          \
+    EXPECT_TRUE(from_flag.field == value) << flag;                                                \
+    FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;                                       \
+    segmentation.setter(value);                                                                   \
+    EXPECT_TRUE(segmentation.getParams().field == value) << #setter;                              \
+    const nlohmann::ordered_json json = io::paramsJson(from_flag);                                \
+    ASSERT_TRUE(json.contains(#field));                                                           \
+    EXPECT_TRUE(json[#field] == value);                                                           \
+    EXPECT_NE(apps::inFlagTerms(std::string(#field) + " must be").find(flag), std::string::npos); \
+    ++checked;                                                                                    \
+  }
+  FLOODPLANE_PARAMETERS(FLOODPLANE_REACH)
+#undef FLOODPLANE_REACH
+  EXPECT_EQ(checked, params_table::kCount);
+  EXPECT_EQ(io::paramsJson(Params()).size(), static_cast<std::size_t>(params_table::kCount));
 }
 
 }  // namespace
