@@ -7,8 +7,8 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include <functional>
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>

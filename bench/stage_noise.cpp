@@ -1,13 +1,13 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The noise estimation alone (noise_estimation.h) on the real frames and on one scene at every
+// The noise estimation alone (noise_estimator.h) on the real frames and on one scene at every
 // frame size of floodplane/s1/size. It fits about a thousand patches whatever the frame's size
 // (kPatchesPerFrame), so it is a fixed cost per call: this measures how large.
 #include <benchmark/benchmark.h>
 
 #include "bench_frames.h"
 #include "methods.h"
-#include "noise_estimation.h"
+#include "stages/noise_estimator.h"
 
 namespace floodplane::bench {
 

@@ -6,10 +6,10 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_frames.h"
-#include "depth_smoothing.h"
 #include "methods.h"
-#include "noise_estimation.h"
-#include "simd.h"
+#include "stages/depth_smoothing.h"
+#include "stages/noise_estimator.h"
+#include "util/simd.h"
 
 namespace floodplane::bench {
 

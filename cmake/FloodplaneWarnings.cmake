@@ -16,7 +16,7 @@ endfunction()
 # -march=native objects with it changes Eigen's alignment and crashes at free(), so the
 # option also sets PCL_NO_PRECOMPILE to build PCL's templates with the same flags.
 # -ffp-contract=off: on a CPU with FMA the compiler would otherwise fuse a multiply and an add
-# in some loops and not in others, and the scalar, four- and eight-lane code (src/simd.h) would
+# in some loops and not in others, and the scalar, four- and eight-lane code (src/util/simd.h) would
 # no longer give the same floats, nor the same labels as the baseline build.
 function(floodplane_set_arch target)
   if(FLOODPLANE_NATIVE)
@@ -27,7 +27,7 @@ endfunction()
 
 # The one SIMD switch: FLOODPLANE_SIMD=OFF builds the core's four-pixel loops pixel by pixel
 # (as on CPUs without SSE2), through a private definition of every target that compiles the
-# core's sources or reaches its internals (the unit tests); src/simd.h reads it.
+# core's sources or reaches its internals (the unit tests); src/util/simd.h reads it.
 function(floodplane_set_simd target)
   if(NOT FLOODPLANE_SIMD)
     target_compile_definitions(${target} PRIVATE FLOODPLANE_NO_SIMD)

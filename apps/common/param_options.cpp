@@ -7,7 +7,7 @@
 #include <cctype>
 #include <optional>
 
-#include "params_table.h"
+#include "params/params_table.h"
 
 namespace floodplane::apps {
 namespace {

@@ -7,8 +7,8 @@
 // report in report.cpp, the pictures in comparison_image.cpp; the baselines' tuning and the
 // tables beyond the means are bench/tune_baselines.py and bench/compare_tables.py.
 
-#include <CLI/CLI.hpp>
 #include <pcl/pcl_config.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdint>

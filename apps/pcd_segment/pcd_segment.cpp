@@ -4,9 +4,9 @@
 // writes the labels (PCD, and optionally PNG and a JSON report). Argument parsing and file
 // I/O only; the segmentation is floodplane::FloodFillPlaneSegmentation.
 
-#include <CLI/CLI.hpp>
 #include <pcl/console/print.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -33,9 +33,9 @@
 #include "synth/ground_truth_json.h"
 #include "synth/point_cloud.h"
 #include "synth/renderer.h"
+#include "synth/room_walk.h"
 #include "synth/scene_file.h"
 #include "synth/scene_generator.h"
-#include "synth/room_walk.h"
 #include "synth/sequence_labels.h"
 
 namespace {

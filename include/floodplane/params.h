@@ -19,7 +19,7 @@ namespace floodplane {
 /// of them gives it the paper's meaning, a fixed length (the noise still widens it where 3
 /// standard deviations are more). `problem()` names values the method cannot use.
 ///
-/// A new field goes into the list of src/params_table.h too, from which its validation, JSON,
+/// A new field goes into the list of src/params/params_table.h too, from which its validation, JSON,
 /// Python keyword and command-line flag follow (CONTRIBUTING.md).
 struct Params {
   // --- Sec. III-B, the distance function of the flood (Eqs. 1-4) ---

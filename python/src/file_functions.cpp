@@ -16,11 +16,11 @@
 
 #include "camera_intrinsics.h"
 #include "errors.h"
-#include "params_kwargs.h"
 #include "io/depth_png.h"
 #include "io/input_frame.h"
 #include "io/pcd_file.h"
 #include "io/pcd_input.h"
+#include "params_kwargs.h"
 #include "point_arrays.h"
 
 namespace floodplane::python {

@@ -3,8 +3,8 @@
 #include "file_segmentation.h"
 
 #include <chrono>
-#include <string>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "io/input_frame.h"

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "errors.h"
-#include "params_table.h"
+#include "params/params_table.h"
 
 namespace floodplane::python {
 

@@ -17,8 +17,8 @@
 #include "errors.h"
 #include "file_segmentation.h"
 #include "floodplane/segmenter.h"
+#include "params/params_table.h"
 #include "params_kwargs.h"
-#include "params_table.h"
 #include "point_arrays.h"
 #include "segmentation_result.h"
 

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "params_table.h"
+#include "params/params_table.h"
 
 namespace floodplane::io {
 

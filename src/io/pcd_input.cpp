@@ -8,18 +8,18 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <new>
 #include <sstream>
-#include <exception>
 #include <stdexcept>
 #include <system_error>
 #include <vector>

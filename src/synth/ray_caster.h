@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "surfaces.h"
 #include "synth/rendered_frame.h"
 #include "synth/scene.h"
-#include "surfaces.h"
 
 namespace floodplane::synth {
 

@@ -10,6 +10,7 @@
 
 #include "projector_view.h"
 #include "ray_caster.h"
+#include "synth/plane_fold.h"
 #include "synth/scanner_speckle.h"
 
 namespace floodplane::synth {
@@ -113,17 +114,7 @@ void mergeTouchingCoplanarFaces(RenderedFrame& frame, const std::vector<std::uin
     if (i % width + 1 < width) unite(surface[i], surface[i + 1]);
     if (i + width < surface.size()) unite(surface[i], surface[i + width]);
   }
-  bool merged = false;
-  for (GroundTruthPlane& plane : frame.planes) {
-    const std::uint32_t into = find(plane.id);
-    if (into == plane.id) continue;
-    plane.merged_into = into;
-    frame.planes[into - 1].pixel_count += plane.pixel_count;
-    plane.pixel_count = 0;
-    merged = true;
-  }
-  if (!merged) return;
-  for (std::uint32_t& label : frame.labels) label = find(label);
+  foldPlanes(frame, find);
 }
 
 }  // namespace

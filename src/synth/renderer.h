@@ -7,8 +7,8 @@
 
 #include "synth/depth_warp.h"
 #include "synth/rendered_frame.h"
-#include "synth/scene.h"
 #include "synth/scanner_model.h"
+#include "synth/scene.h"
 #include "synth/sensor_model.h"
 
 namespace floodplane::synth {

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "synth/plane_fold.h"
+
 namespace floodplane::synth {
 
 std::uint32_t SequenceSurfaces::root(std::uint32_t id) const {
@@ -40,14 +42,7 @@ void SequenceSurfaces::relabel(RenderedFrame& frame) const {
     throw std::invalid_argument("SequenceSurfaces::relabel: the frame has " + std::to_string(frame.planes.size()) +
                                 " planes, the sequence " + std::to_string(parent_.size() - 1));
   }
-  for (GroundTruthPlane& plane : frame.planes) {
-    const std::uint32_t group = root(plane.id);
-    if (group == plane.id) continue;
-    plane.merged_into = group;
-    frame.planes[group - 1].pixel_count += plane.pixel_count;
-    plane.pixel_count = 0;
-  }
-  for (std::uint32_t& label : frame.labels) label = root(label);
+  foldPlanes(frame, [this](std::uint32_t id) { return root(id); });
 }
 
 }  // namespace floodplane::synth

@@ -11,9 +11,9 @@
 #include <limits>
 #include <vector>
 
-#include "block_grid.h"
-#include "simd.h"
+#include "stages/block_grid.h"
 #include "support/pinhole_grid.h"
+#include "util/simd.h"
 
 namespace floodplane {
 namespace {

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "depth_smoothing.h"
-#include "simd.h"
+#include "stages/depth_smoothing.h"
 #include "test_scenes.h"
+#include "util/simd.h"
 
 namespace floodplane {
 namespace {

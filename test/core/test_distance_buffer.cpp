@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "distance_buffer.h"
+#include "util/distance_buffer.h"
 
 namespace floodplane {
 namespace {

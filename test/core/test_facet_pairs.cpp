@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "facet_pairs.h"
-#include "plane_candidates.h"
+#include "models/facet_pairs.h"
+#include "stages/plane_candidates.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

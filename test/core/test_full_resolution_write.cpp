@@ -11,9 +11,9 @@
 #include <random>
 #include <vector>
 
-#include "full_resolution_write.h"
-#include "simd.h"
+#include "stages/full_resolution_write.h"
 #include "support/pinhole_grid.h"
+#include "util/simd.h"
 
 namespace floodplane {
 namespace {

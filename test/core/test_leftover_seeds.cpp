@@ -8,10 +8,10 @@
 #include <functional>
 #include <vector>
 
-#include "distance_buffer.h"
-#include "leftover_seeds.h"
+#include "stages/leftover_seeds.h"
+#include "stages/tolerances.h"
 #include "support/pinhole_grid.h"
-#include "tolerances.h"
+#include "util/distance_buffer.h"
 
 namespace floodplane {
 namespace {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "occlusion_merging.h"
+#include "stages/occlusion_merging.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

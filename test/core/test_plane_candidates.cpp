@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "plane_candidates.h"
+#include "stages/plane_candidates.h"
 
 namespace floodplane {
 namespace {

@@ -12,10 +12,10 @@
 #include <limits>
 #include <vector>
 
-#include "distance_buffer.h"
-#include "plane_flood.h"
-#include "simd.h"
+#include "stages/plane_flood.h"
 #include "support/pinhole_grid.h"
+#include "util/distance_buffer.h"
+#include "util/simd.h"
 
 namespace floodplane {
 namespace {

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "plane_sums.h"
+#include "models/plane_sums.h"
 
 namespace floodplane {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "refinement.h"
+#include "stages/refinement.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "region_boundary.h"
+#include "stages/region_boundary.h"
 
 namespace floodplane {
 namespace {

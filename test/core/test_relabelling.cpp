@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "plane_candidates.h"
-#include "relabelling.h"
+#include "stages/plane_candidates.h"
+#include "stages/relabelling.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

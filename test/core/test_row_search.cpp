@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "row_search.h"
+#include "util/row_search.h"
 
 namespace floodplane {
 namespace {

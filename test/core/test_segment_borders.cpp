@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "plane_candidates.h"
-#include "segment_borders.h"
+#include "stages/plane_candidates.h"
+#include "stages/segment_borders.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

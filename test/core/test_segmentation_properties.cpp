@@ -770,7 +770,7 @@ TEST(SegmentationProperties, PointsAHundredKilometresAwayLeaveTheNearPlanesAlone
   expectTheNearPlanesAlone(scene, seg);
 }
 
-// Regression (fixed by noiseRangeSq in distance_function.h: the nearer of two neighbours sets
+// Regression (fixed by noiseRangeSq in flood_criterion.h: the nearer of two neighbours sets
 // the noise tolerance). Was: with the default
 // depth_noise_coefficient c = 0.0019, the flood's tolerances for a pixel are evaluated at that
 // pixel's own measured range r: plane distance < 3 c r^2 and neighbour distance < about

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "floodplane/segmenter.h"
-#include "simd.h"
 #include "test_scenes.h"
+#include "util/simd.h"
 
 namespace floodplane {
 namespace {

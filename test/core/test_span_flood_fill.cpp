@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "span_flood_fill.h"
+#include "util/span_flood_fill.h"
 
 namespace floodplane {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstddef>
 
 #include "floodplane/params.h"
-#include "tolerances.h"
+#include "stages/tolerances.h"
 
 namespace floodplane {
 namespace {

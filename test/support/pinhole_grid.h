@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
-#include "vec3.h"
+#include "util/vec3.h"
 
 namespace floodplane::test {
 

@@ -11,12 +11,12 @@
 #include <floodplane_ros/SegmentationConfig.h>
 #include <image_transport/image_transport.h>
 #include <nodelet/nodelet.h>
-#include <pluginlib/class_list_macros.hpp>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <pluginlib/class_list_macros.hpp>
 
 #include <memory>
 #include <mutex>

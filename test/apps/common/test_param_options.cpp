@@ -16,7 +16,7 @@
 
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "io/params_json.h"
-#include "params_table.h"
+#include "params/params_table.h"
 
 namespace floodplane::test {
 namespace {

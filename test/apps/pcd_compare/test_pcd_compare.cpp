@@ -4,9 +4,9 @@
 // its Markdown means, its JSON report, its images and its error reports.
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

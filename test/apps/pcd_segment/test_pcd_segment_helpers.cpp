@@ -8,9 +8,9 @@
 #include <chrono>
 #include <condition_variable>
 #include <iterator>
-#include <stdexcept>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>

@@ -20,9 +20,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <iterator>
 #include <string>
 #include <vector>
 

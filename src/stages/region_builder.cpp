@@ -1,0 +1,310 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "stages/region_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "stages/refinement.h"
+#include "util/row_search.h"
+#include "util/simd.h"
+
+namespace floodplane {
+
+namespace {
+
+// About this many pixels of a plane take part in its planarity test (see samplePlanarity).
+constexpr double kPlanaritySamples = 4000.0;
+// The depth smoothing's gain on the noise of independent pixels (a 3 x 3 mean: 1/3).
+constexpr double kSmoothingGain = 2.0;
+
+}  // namespace
+
+// ---- RegionBuilder ---------------------------------------------------------------------
+
+void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& merged, const Params& params,
+                             bool refine, Segmentation& out) {
+  params_ = params;
+  const std::uint32_t min_inliers = frame.tolerances.minInliers();
+  const bool blocks = frame.blocks != nullptr;
+  std::vector<std::uint32_t>& labels = blocks ? block_labels_ : out.labels;
+  selectCandidates(frame, merged, params);
+  labels.resize(frame.grid.size());
+  // The plane tests of selectCandidates ran on the merged clusters; refinement adds points,
+  // which can tip a plane over the curvature limit or, rarely (an outlier far along a ray),
+  // make its fit degenerate. The last sort of the candidates checks them again, so that what
+  // is reported passes. Filled-in holes (HoleFilling) leave the clusters when their points are
+  // labelled at s = 1, so the counts are known only afterwards.
+  bool renumbered = false;  // labels still to be renumbered by remap()
+  if (blocks || !frame.holes->filled()) {
+    // Counts are known: number the planes by size before writing any label.
+    candidates_.sortBySize(blocks ? 0 : min_inliers, nullptr);
+    for (std::size_t s = 1; s < merged.segment_count; ++s)
+      candidate_of_segment_[s] = candidates_.remap(candidate_of_segment_[s]);
+    labelSegmentedGrid(frame, merged, labels);
+  } else {
+    labelSegmentedGrid(frame, merged, labels);
+    renumbered = candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
+  }
+  if (refine) {
+    refinePlanes(frame.grid, *frame.holes, frame.blocks, labels, candidates_, renumbered, queue_);  // renumbers
+    // Refinement may also have changed the order by size.
+    renumbered = candidates_.sortBySize(0, &params);
+  }
+  // Each stage below renumbers the planes and reads the labels by their current numbers:
+  // through the pending renumbering, so that the image is rewritten once, at the end.
+  candidates_.deferRenumbering(renumbered);
+  if (occlusion_merging_.run(frame.grid, candidates_.labels(labels), candidates_,
+                             MergeCriterion(params, frame.tolerances), frame.tolerances, frame.pitch))
+    candidates_.composeRenumbering();
+  if (dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
+}
+
+void RegionBuilder::write(const PreparedFrame& frame, const Params& params, Segmentation& out) {
+  out.width = frame.measured.width;
+  out.height = frame.measured.height;
+  if (frame.blocks) {
+    writeFullResolution(frame, params, out);
+  } else {
+    // A plane's centroid, covariance and fit are those of its inliers as the caller measured
+    // them, not as they were smoothed for segmenting.
+    if (frame.measured.data != frame.grid.data) sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
+    candidates_.applyRenumbering(out.labels);
+  }
+  out.planes.clear();
+  for (const PlaneCandidate& candidate : candidates_.list()) {
+    SegmentedPlane plane;
+    plane.fit = candidate.sums.fit();
+    plane.inlier_count = static_cast<std::uint32_t>(candidate.sums.count);
+    plane.first_pixel = candidate.first_pixel;
+    out.planes.push_back(plane);
+  }
+}
+
+void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSegments& merged, const Params& params) {
+  std::vector<PlaneCandidate>& list = candidates_.list();
+  list.clear();
+  candidate_of_segment_.assign(merged.segment_count, 0);
+  const BlockGrid* blocks = frame.blocks;
+  if (blocks) {
+    // The clusters' sums of their blocks' means, each counted as many times as it has measured
+    // pixels: the sizes min_inliers counts, and a scatter about the plane that the block grid's
+    // tolerances describe. A cluster one block wide is a line of means, whose plane turns
+    // freely about it: it takes its pixels' own sums (the full-resolution write sums the
+    // pixels of every plane anyway).
+    cluster_sums_.assign(merged.segment_count, PlaneSums());
+    cluster_pixel_sums_.assign(merged.segment_count, PlaneSums());
+    for (std::size_t i = 0; i < frame.grid.size(); ++i) {
+      const std::int32_t segment = merged.labels[i];
+      if (segment == 0) continue;
+      const std::size_t root = static_cast<std::size_t>(merged.root[segment]);
+      blocks->addMeanTo(i, cluster_sums_[root]);
+      blocks->addTo(i, cluster_pixel_sums_[root]);
+    }
+    for (std::size_t s = 1; s < merged.segment_count; ++s)
+      if (!std::isfinite(normalUncertainty(cluster_sums_[s].fit(), cluster_sums_[s].count)))
+        cluster_sums_[s] = cluster_pixel_sums_[s];
+  }
+  // Refinement only adds pixels: drop small ones now. (A filled-in hole counts here, and
+  // leaves the count when the labels are written.) At s > 1 the full-resolution write adds
+  // the pixels of the blocks along a plane's border, which its clusters' blocks leave out: up
+  // to three times a strip's count where the strip is one block wide; the write checks the
+  // size again.
+  const double smallest = frame.tolerances.minInliers() / (blocks ? 4.0 : 1.0);
+  for (std::size_t s = 1; s < merged.segment_count; ++s) {
+    if (merged.root[s] != static_cast<std::int32_t>(s)) continue;
+    const PlaneSums& sums = blocks ? cluster_sums_[s] : merged.sums[s];
+    if (sums.count < smallest) continue;
+    const PlaneFit fit = sums.fit();
+    if (!acceptablePlane(fit, params)) continue;
+    PlaneCandidate candidate;
+    candidate.criterion = planeCriterion(fit, frame.tolerances, frame.pitch);
+    candidate.sums = sums;
+    list.push_back(candidate);
+    candidate_of_segment_[s] = static_cast<std::uint32_t>(list.size());
+  }
+  for (std::size_t s = 1; s < merged.segment_count; ++s)
+    candidate_of_segment_[s] = candidate_of_segment_[static_cast<std::size_t>(merged.root[s])];
+}
+
+void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedSegments& merged,
+                                       std::vector<std::uint32_t>& labels) {
+  // Run by run of one segment: its plane is looked up once.
+  const std::uint32_t* table = candidate_of_segment_.data();
+  const HoleFilling& holes = *frame.holes;
+  const std::size_t width = static_cast<std::size_t>(frame.grid.width);
+  for (std::size_t row = 0; row < frame.grid.size(); row += width) {
+    forEachRunInRow(merged.labels + row, 0, frame.grid.width - 1, [&](std::int32_t segment, int begin, int end) {
+      const std::uint32_t k = table[segment];
+      const std::size_t first = row + static_cast<std::size_t>(begin), last = row + static_cast<std::size_t>(end);
+      if (k == 0 || !holes.filled()) {
+        std::fill(labels.begin() + static_cast<std::ptrdiff_t>(first),
+                  labels.begin() + static_cast<std::ptrdiff_t>(last), k);
+        if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = first;
+        return;
+      }
+      PlaneCandidate& candidate = candidates_[k];
+      for (std::size_t i = first; i < last; ++i) {
+        // A filled-in hole: it helped the flood across, but it was never measured (a filled
+        // block has no measured pixel, and added nothing to the sums).
+        const bool filled = holes.isFilled(i);
+        labels[i] = filled ? 0u : k;
+        if (filled && !frame.blocks) candidate.sums.remove(Vec3::load(frame.grid.point(i)));
+        if (!filled && candidate.first_pixel == kNoPixel) candidate.first_pixel = i;
+      }
+    });
+  }
+}
+
+void RegionBuilder::writeFullResolution(const PreparedFrame& frame, const Params& params, Segmentation& out) {
+  // Each plane decides its border pixels with the plane of its inner blocks: a block on a
+  // crease joins one plane's flood (its mean is near both), but its pixels bend that plane
+  // towards the other, which would take the other's pixels along the crease. A plane with too
+  // few inner blocks for a fit of its own (a strip a block or two wide) keeps the fit of all.
+  const RenumberedLabels labels = candidates_.labels(block_labels_);
+  const std::size_t planes = candidates_.list().size();
+  inner_sums_.assign(planes + 1, PlaneSums());
+  const PointGrid& grid = frame.grid;
+  const std::size_t width = static_cast<std::size_t>(grid.width);
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
+    for (std::size_t x = 1; x + 1 < width; ++x) {
+      const std::size_t i = y * width + x;
+      const std::uint32_t k = labels[i];
+      if (k == 0 || frame.blocks->split(i)) continue;
+      if (labels[i - 1] != k || labels[i + 1] != k || labels[i - width] != k || labels[i + width] != k) continue;
+      frame.blocks->addTo(i, inner_sums_[k]);
+    }
+  }
+  criteria_.clear();
+  centroids_.clear();
+  for (std::uint32_t k = 1; k <= planes; ++k) {
+    const PlaneCandidate& candidate = candidates_.list()[k - 1];
+    const PlaneFit whole = candidate.sums.fit();
+    PlaneFit fit = inner_sums_[k].fit();
+    // The inner blocks of a strip a few blocks wide are a line: their plane turns freely about it.
+    if (!(normalUncertainty(fit, inner_sums_[k].count) <= 2.0 * normalUncertainty(whole, candidate.sums.count)))
+      fit = whole;
+    criteria_.push_back(planeCriterion(fit, frame.pixel_tolerances, frame.full_pitch));
+    centroids_.push_back({static_cast<float>(fit.centroid.x()), static_cast<float>(fit.centroid.y()),
+                          static_cast<float>(fit.centroid.z())});
+  }
+  full_resolution_.write(frame.measured, *frame.blocks, labels, criteria_, centroids_, candidates_, out.labels);
+  // The pixels decided one by one at the borders change the sizes a little: a plane may now
+  // fall short of min_inliers or change places with one of about its size.
+  // (The planes' first pixels move with them.)
+  if (candidates_.sortBySize(frame.tolerances.minInliers(), &params))
+    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
+}
+
+void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const RenumberedLabels& labels) {
+  for (PlaneCandidate& candidate : candidates_.list()) candidate.sums = PlaneSums();
+  const std::size_t width = static_cast<std::size_t>(measured.width);
+  const std::size_t size = width * static_cast<std::size_t>(measured.height);
+  for (std::size_t row = 0; row < size; row += width) {
+    const std::uint32_t* image_row = labels.image + row;
+    int u = 0;
+    while (u < measured.width) {
+      // A run of one plane: runs of image numbers that now carry the same number join.
+      const std::uint32_t k = labels.number[image_row[u]];
+      int end = findInRow(image_row, u, measured.width - 1, image_row[u], false);
+      while (end < measured.width && labels.number[image_row[end]] == k)
+        end = findInRow(image_row, end, measured.width - 1, image_row[end], false);
+      if (k != 0)
+        addRunToSums(candidates_[k].sums, measured, row + static_cast<std::size_t>(u),
+                     static_cast<std::size_t>(end - u));
+      u = end;
+    }
+  }
+}
+
+void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const RenumberedLabels& labels, PlanarityTest& test) {
+  // Interior points only (no neighbour in another plane or none): the points along a plane's
+  // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
+  // A neighbour without a return does not make a border: on a speckled surface there would be
+  // no inside.
+  //
+  // A large plane is sampled on a lattice (every s-th point of every s-th row) of about
+  // kPlanaritySamples measured pixels: its test is then still sensitive to a bend a tenth of
+  // the noise deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
+  // At sub-sampling s > 1 a sampled block adds its measured pixels, not its mean: the test
+  // judges what the sensor measured, with as many points as at full resolution (a strip of a
+  // column a few blocks wide has too few means to show its bend).
+  const PointGrid& grid = frame.grid;
+  const BlockGrid* blocks = frame.blocks;
+  const std::vector<PlaneCandidate>& list = candidates_.list();
+  strides_.assign(list.size() + 1, 1);
+  // The lattice counts points of the grid, the sums measured pixels: at s > 1 a sampled block
+  // stands for its pixels, so that the test has about kPlanaritySamples pixels' worth of points.
+  for (std::size_t k = 1; k <= list.size(); ++k) {
+    const double s = std::floor(std::sqrt(list[k - 1].sums.count / kPlanaritySamples));
+    strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
+  }
+  const std::size_t width = static_cast<std::size_t>(grid.width);
+  const auto inside = [&](std::size_t j, std::uint32_t k) {
+    return labels[j] == k || !grid.isFinite(j) || frame.holes->isFilled(j);
+  };
+  // At s > 1 a block's mean stands for its measured pixels (weighted by their number): the
+  // test then has as many points as at full resolution, at the means' places.
+  const auto addPoint = [&](std::size_t i, std::uint32_t k) {
+    if (!blocks) {
+      test.add(k, Vec3::load(grid.point(i)));
+    } else if (!blocks->split(i)) {  // a split block's other pixels belong elsewhere
+      test.add(k, Vec3::load(grid.point(i)), blocks->count(i));
+    }
+  };
+  // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
+  // up once. Points are added in raster order of the grid.
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
+    const std::size_t row = y * width;
+    forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
+      const std::uint32_t k = labels.number[image_label];
+      if (k == 0 || y % strides_[k] != 0) return;
+      const std::uint32_t s = strides_[k];
+      // The first column of the run on the plane's lattice.
+      const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
+      for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
+        const std::size_t i = row + u;
+        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k)) addPoint(i, k);
+      }
+    });
+  }
+}
+
+bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const RenumberedLabels& labels) {
+  // At s > 1 the test's points stand for measured pixels (samplePlanarity): their noise is the
+  // pixels', over the pixels' footprint. The test's significance was set at s = 1 on the
+  // smoothed frame, whose neighbouring points share their noise, so that a bend shows in more
+  // points than independent ones would show it: the pixels' noise counts kSmoothingGain times
+  // less.
+  Tolerances tolerances = frame.tolerances;
+  if (frame.blocks) {
+    NoiseModel noise = frame.pixel_tolerances.noise();
+    noise.sigma_constant /= kSmoothingGain;
+    noise.sigma_quadratic /= kSmoothingGain;
+    tolerances = frame.pixel_tolerances.withNoise(noise);
+  }
+  const std::vector<PlaneCandidate>& list = candidates_.list();
+  if (list.empty()) return false;
+  fits_.clear();
+  for (const PlaneCandidate& candidate : list) fits_.push_back(candidate.sums.fit());
+  planarity_.reset(fits_);
+  samplePlanarity(frame, labels, planarity_);
+  curved_.assign(list.size() + 1, false);
+  for (std::uint32_t k = 1; k <= list.size(); ++k) curved_[k] = planarity_.curved(k, tolerances);
+  // Touching planes judged as one surface: the facets of a curved one are curved together.
+  // (A pair of planes both dropped already has nothing to add.)
+  judgeable_.assign(list.size() + 1, false);
+  for (std::uint32_t k = 1; k <= list.size(); ++k) judgeable_[k] = planarity_.judgeable(k);
+  facet_pairs_.find(frame.grid, labels, list, fits_, judgeable_);
+  for (const auto& [k, l] : facet_pairs_.pairs()) {
+    if (curved_[k] && curved_[l]) continue;
+    PlaneSums joint = list[k - 1].sums;
+    joint.merge(list[l - 1].sums);
+    if (planarity_.curvedPair(k, l, joint.fit(), tolerances)) curved_[k] = curved_[l] = true;
+  }
+  return candidates_.drop(curved_);
+}
+
+}  // namespace floodplane
