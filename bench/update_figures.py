@@ -1,0 +1,213 @@
+#!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Writes today's figures into bench/README.md and the README's speed sentence, from one run,
+so that no figure there is typed by hand. Each generated part sits between a pair of markers
+(<!-- figures:NAME begin --> ... <!-- figures:NAME end -->) and is replaced whole; the text
+around it is left alone.
+
+Inputs:
+  --speed JSON     bench_segmentation --benchmark_filter='^interleaved/real'
+                   --benchmark_format=json (OMPS and floodplane at s = 1, 2, 4 in one process);
+                   fills "speed" (a row per frame and the medians) and the README's "speed".
+  --report JSON    pcd_compare --methods floodplane,floodplane/2,floodplane/4 --json on the
+                   report split; fills "accuracy" (mean IoU / Hoover correct share / false-plane
+                   fraction per factor and sensor model).
+  --quirks JSON    the same on the report split rendered with the sensor quirks; fills
+                   "accuracy-quirks".
+Any one of them may be given alone. --dry-run prints the parts instead of writing.
+
+Example:
+  build/bench/bench_segmentation --benchmark_filter='^interleaved/real' --benchmark_min_time=3 \\
+      --benchmark_format=json > speed.json
+  bench/update_figures.py --speed speed.json --report report.json --quirks report_quirks.json
+"""
+
+import argparse
+import datetime
+import json
+import pathlib
+import re
+import statistics
+import subprocess
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import compare_tables  # noqa: E402  (the report reader is shared)
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+BENCH_README = ROOT / "bench" / "README.md"
+README = ROOT / "README.md"
+FACTORS = [("floodplane", "s = 1"), ("floodplane/2", "s = 2"), ("floodplane/4", "s = 4")]
+SENSORS = [("none", "exact"), ("kinect", "Kinect"), ("scanner", "scanner")]
+SPEED_COLUMNS = ["omps_ms", "s1_ms", "s2_ms", "s4_ms", "omps_per_s2", "omps_per_s4", "s2_per_s1", "s4_per_s1"]
+SPEED_COUNTERS = SPEED_COLUMNS + ["omps_per_s1"]  # the table's columns and the README sentence's ratio
+
+
+class Unusable(Exception):
+    """An input that cannot give its figures; the message says which and why."""
+
+
+def commit():
+    try:
+        return subprocess.check_output(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"], text=True,
+                                       stderr=subprocess.DEVNULL).strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def stamp(run_date):
+    return f"{run_date}, main at `{commit()}`"
+
+
+# Speed ---------------------------------------------------------------------------------------
+
+def read_speed(path):
+    """frame -> counters of the interleaved benchmark, and the run's date."""
+    try:
+        run = json.loads(pathlib.Path(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError) as error:
+        raise Unusable(f"{path}: {error}") from error
+    frames = {}
+    for entry in run.get("benchmarks", []) if isinstance(run, dict) else []:
+        name = entry.get("name", "")
+        match = re.match(r"interleaved/real:([^/]+)", name)
+        if not match or entry.get("run_type", "iteration") != "iteration":
+            continue
+        missing = [c for c in SPEED_COUNTERS if not isinstance(entry.get(c), (int, float))]
+        if missing:
+            raise Unusable(f"{path}: {name} has no {', '.join(missing)}")
+        frames[match.group(1)] = {c: float(entry[c]) for c in SPEED_COUNTERS}
+    if not frames:
+        raise Unusable(f"{path}: no interleaved/real:<frame> benchmark (run with "
+                       "--benchmark_filter='^interleaved/real' --benchmark_format=json)")
+    run_date = str(run.get("context", {}).get("date", ""))[:16].replace("T", " ") or "unknown date"
+    return frames, run_date
+
+
+def short(frame):
+    # frame_20121214T142255.814212 -> frame_...255.814212, as the tables have always named them.
+    return re.sub(r"^frame_\d{8}T\d{3}", "frame_...", frame)
+
+
+def speed_table(frames, run_date):
+    medians = {c: statistics.median(f[c] for f in frames.values()) for c in SPEED_COUNTERS}
+    out = (f"Run {stamp(run_date)}; medians over the frames of per-frame figures:\n\n"
+           "| frame | OMPS ms | s = 1 ms | s = 2 ms | s = 4 ms | OMPS / s2 | OMPS / s4 | s2 / s1 | s4 / s1 |\n"
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+    for frame in sorted(frames):
+        f = frames[frame]
+        out += (f"| {short(frame)} | " + " | ".join(f"{f[c]:.1f}" for c in SPEED_COLUMNS[:6]) + " | "
+                + " | ".join(f"{f[c]:.2f}" for c in SPEED_COLUMNS[6:]) + " |\n")
+    out += ("| **median** | " + " | ".join(f"{medians[c]:.1f}" for c in SPEED_COLUMNS[:4]) + " | "
+            + " | ".join(f"**{medians[c]:.1f}**" for c in SPEED_COLUMNS[4:6]) + " | "
+            + " | ".join(f"**{medians[c]:.2f}**" for c in SPEED_COLUMNS[6:]) + " |\n")
+    return out, medians
+
+
+def speed_sentence(medians):
+    return (f"takes a median {medians['s1_ms']:.1f} ms ({medians['omps_per_s1']:.1f}x faster than OMPS with its "
+            f"normals, in the same run), {medians['s2_ms']:.1f} ms at sub-sampling 2 and {medians['s4_ms']:.1f} ms "
+            f"at sub-sampling 4 ({medians['omps_per_s4']:.1f}x OMPS; figures from `bench/README.md`)")
+
+
+# Accuracy ------------------------------------------------------------------------------------
+
+def accuracy_cells(scenes, method, sensor):
+    """mean IoU / Hoover correct as a share of the ground-truth planes / false-plane fraction."""
+    iou, correct, planes, false_planes, scored, with_non_plane = 0.0, 0, 0, 0.0, 0, 0
+    for scene in scenes:
+        if scene.sensor != sensor:
+            continue
+        result = scene.find(method)
+        if result is None or not result.scored:
+            continue
+        if result.false_planes == result.false_planes:  # not NaN
+            false_planes += result.false_planes
+            with_non_plane += 1
+        if result.ground_truth_planes == 0:
+            continue
+        scored += 1
+        iou += result.mean_iou
+        correct += result.hoover["correct"]
+        planes += result.ground_truth_planes
+    if scored == 0:
+        return "-"
+    false_text = f"{false_planes / with_non_plane:.3f}" if with_non_plane else "-"
+    return f"{iou / scored:.3f} / {correct / planes:.3f} / {false_text}"
+
+
+def accuracy_table(path, what):
+    _, scenes = compare_tables.read_report(path)
+    sensors = [(key, title) for key, title in SENSORS if any(scene.sensor == key for scene in scenes)]
+    methods = [(m, title) for m, title in FACTORS if any(scene.find(m) for scene in scenes)]
+    if not sensors or not methods:
+        raise Unusable(f"{path}: no floodplane results with a sensor model")
+    files = max(sum(scene.sensor == key for scene in scenes) for key, _ in sensors)
+    out = (f"{what}, {files} files per sensor model, {stamp(datetime.date.today().isoformat())}; mean IoU / "
+           "Hoover correct as a share of the ground-truth planes / false-plane fraction:\n\n"
+           "| | " + " | ".join(title for _, title in sensors) + " |\n|---|" + "---|" * len(sensors) + "\n")
+    for method, title in methods:
+        out += f"| {title} | " + " | ".join(accuracy_cells(scenes, method, key) for key, _ in sensors) + " |\n"
+    return out
+
+
+# Writing -------------------------------------------------------------------------------------
+
+def replace_part(text, name, body, path):
+    begin, end = f"<!-- figures:{name} begin -->", f"<!-- figures:{name} end -->"
+    pattern = re.compile(re.escape(begin) + r".*?" + re.escape(end), re.DOTALL)
+    if len(pattern.findall(text)) != 1:
+        raise Unusable(f"{path} has no single pair of markers {begin} ... {end}")
+    inline = "\n" not in body
+    replacement = f"{begin}{body}{end}" if inline else f"{begin}\n{body}{end}"
+    return pattern.sub(lambda _: replacement, text)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    parser.add_argument("--speed", help="Google Benchmark JSON of interleaved/real")
+    parser.add_argument("--report", help="pcd_compare JSON of the report split")
+    parser.add_argument("--quirks", help="pcd_compare JSON of the report split with the sensor quirks")
+    parser.add_argument("--bench-readme", default=str(BENCH_README), help="the page to update")
+    parser.add_argument("--readme", default=str(README), help="the README whose speed sentence to update")
+    parser.add_argument("--dry-run", action="store_true", help="print the parts, write nothing")
+    args = parser.parse_args()
+    if not (args.speed or args.report or args.quirks):
+        parser.error("give at least one of --speed, --report, --quirks")
+    try:
+        bench_parts, readme_parts = {}, {}
+        if args.speed:
+            frames, run_date = read_speed(args.speed)
+            bench_parts["speed"], medians = speed_table(frames, run_date)
+            readme_parts["speed"] = speed_sentence(medians)
+        if args.report:
+            bench_parts["accuracy"] = accuracy_table(args.report, "Report split (seeds 101-200, never tuned on)")
+        if args.quirks:
+            bench_parts["accuracy-quirks"] = accuracy_table(
+                args.quirks, "Report split with the quirks (--quantize-bits 9 --warp 3 --speckle --bend 0.02)")
+        if args.dry_run:
+            for name, body in {**bench_parts, **{f"README {k}": v for k, v in readme_parts.items()}}.items():
+                print(f"--- {name}\n{body}")
+            return 0
+        updates = []
+        for path, parts in ((pathlib.Path(args.bench_readme), bench_parts), (pathlib.Path(args.readme), readme_parts)):
+            if not parts:
+                continue
+            text = path.read_text(encoding="utf-8")
+            for name, body in parts.items():
+                text = replace_part(text, name, body, path)
+            updates.append((path, text, sorted(parts)))
+        # Every file is checked before any is written.
+        for path, text, names in updates:
+            compare_tables.write_atomically(path, text)
+            print(f"update_figures.py: {', '.join(names)} written into {path}")
+    except (Unusable, OSError) as error:
+        print(f"update_figures.py: {error}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

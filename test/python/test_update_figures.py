@@ -1,0 +1,141 @@
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
+"""bench/update_figures.py, which writes bench/README.md's tables and the README's speed
+sentence from one run: made-up inputs of known figures into copies of pages with markers; the
+text around the markers kept; bad input refused with nothing written; the real pages carry
+every marker the script fills."""
+
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+SOURCE = pathlib.Path(os.environ.get("FLOODPLANE_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+SCRIPT = SOURCE / "bench/update_figures.py"
+
+BENCH_PAGE = """# Page
+before
+<!-- figures:speed begin -->
+old speed
+<!-- figures:speed end -->
+middle
+<!-- figures:accuracy begin -->
+<!-- figures:accuracy end -->
+<!-- figures:accuracy-quirks begin -->
+<!-- figures:accuracy-quirks end -->
+after
+"""
+README_PAGE = "A frame <!-- figures:speed begin -->old<!-- figures:speed end -->; more.\n"
+
+
+def interleaved(frame, omps, s1, s2, s4):
+    return {"name": f"interleaved/real:{frame}/min_time:3.000", "run_type": "iteration", "omps_ms": omps,
+            "s1_ms": s1, "s2_ms": s2, "s4_ms": s4, "omps_per_s1": omps / s1, "omps_per_s2": omps / s2,
+            "omps_per_s4": omps / s4, "s2_per_s1": s2 / s1, "s4_per_s1": s4 / s1}
+
+
+def speed_run():
+    return {"context": {"date": "2026-12-05T07:00:00+00:00"},
+            "benchmarks": [interleaved("office1", 30.0, 20.0, 10.0, 5.0),
+                           interleaved("frame_20121214T142255.814212", 40.0, 10.0, 8.0, 2.0),
+                           interleaved("five_people", 36.0, 30.0, 12.0, 6.0)]}
+
+
+def result(iou, correct, planes, false_planes):
+    return {"median_ms": 1.0, "min_ms": 1.0, "planes": planes, "mean_iou": iou, "weighted_iou": iou,
+            "false_plane_fraction": false_planes, "ground_truth_planes": planes,
+            "hoover": {"correct": correct, "over": 0, "under": 0, "missed": planes - correct, "noise": 0}}
+
+
+def compare_report():
+    """Two Kinect files and one exact one, floodplane at s = 1 and 2."""
+    def scene(name, sensor, s1, s2):
+        return {"name": name, "file": f"{name}.pcd", "width": 64, "height": 48, "ground_truth": True,
+                "sensor": sensor, "methods": {"floodplane": s1, "floodplane/2": s2}}
+    return {"configuration": {}, "scenes": [
+        scene("a.kinect", "kinect", result(0.9, 9, 10, 0.0), result(0.8, 8, 10, 0.1)),
+        scene("b.kinect", "kinect", result(0.7, 3, 10, 0.2), result(0.6, 2, 10, 0.3)),
+        scene("a.none", "none", result(1.0, 5, 5, 0.0), result(0.95, 5, 5, 0.0))]}
+
+
+@pytest.fixture
+def pages(tmp_path):
+    bench, readme = tmp_path / "bench.md", tmp_path / "README.md"
+    bench.write_text(BENCH_PAGE)
+    readme.write_text(README_PAGE)
+    (tmp_path / "speed.json").write_text(json.dumps(speed_run()))
+    (tmp_path / "report.json").write_text(json.dumps(compare_report()))
+    return tmp_path
+
+
+def run(directory, *arguments):
+    return subprocess.run([sys.executable, str(SCRIPT), "--bench-readme", str(directory / "bench.md"),
+                           "--readme", str(directory / "README.md"), *map(str, arguments)],
+                          capture_output=True, text=True)
+
+
+def test_writes_the_medians_of_the_frames_and_keeps_the_text_around(pages):
+    done = run(pages, "--speed", pages / "speed.json")
+    assert done.returncode == 0, done.stderr
+    page = (pages / "bench.md").read_text()
+    assert "old speed" not in page
+    assert page.startswith("# Page\nbefore\n<!-- figures:speed begin -->\n")
+    assert "middle\n<!-- figures:accuracy begin -->" in page and page.endswith("after\n")
+    rows = {line.split("|")[1].strip(): [cell.strip() for cell in line.strip().strip("|").split("|")[1:]]
+            for line in page.splitlines() if line.startswith("| ")}
+    assert rows["office1"] == ["30.0", "20.0", "10.0", "5.0", "3.0", "6.0", "0.50", "0.25"]
+    assert rows["frame_...255.814212"][:4] == ["40.0", "10.0", "8.0", "2.0"]
+    # Medians of the three frames, of the per-frame ratios for the ratio columns.
+    assert rows["**median**"] == ["36.0", "20.0", "10.0", "5.0", "**3.0**", "**6.0**", "**0.50**", "**0.20**"]
+    assert "2026-12-05 07:00" in page
+    readme = (pages / "README.md").read_text()
+    assert readme.startswith("A frame <!-- figures:speed begin -->takes a median 20.0 ms (1.5x faster than OMPS")
+    assert "10.0 ms at sub-sampling 2 and 5.0 ms at sub-sampling 4 (6.0x OMPS" in readme
+    assert readme.endswith("<!-- figures:speed end -->; more.\n")
+
+
+def test_writes_accuracy_per_factor_and_sensor_model(pages):
+    done = run(pages, "--report", pages / "report.json", "--quirks", pages / "report.json")
+    assert done.returncode == 0, done.stderr
+    page = (pages / "bench.md").read_text()
+    assert "old speed" in page, "only the parts of the inputs given change"
+    lines = [line for line in page.splitlines() if line.startswith("| ")]
+    assert "| | exact | Kinect |" in lines
+    # Kinect at s = 1: IoU (0.9 + 0.7) / 2, correct (9 + 3) / 20 planes, false planes (0 + 0.2) / 2.
+    assert "| s = 1 | 1.000 / 1.000 / 0.000 | 0.800 / 0.600 / 0.100 |" in lines
+    assert "| s = 2 | 0.950 / 1.000 / 0.000 | 0.700 / 0.500 / 0.200 |" in lines
+    assert (pages / "README.md").read_text() == README_PAGE
+
+
+@pytest.mark.parametrize("speed, message", [
+    ("not json", "speed.json"),
+    (json.dumps({"benchmarks": []}), "no interleaved/real"),
+    (json.dumps({"benchmarks": [{"name": "interleaved/real:x", "omps_ms": 1.0}]}), "has no s1_ms"),
+])
+def test_refuses_a_speed_run_it_cannot_read_and_writes_nothing(pages, speed, message):
+    (pages / "speed.json").write_text(speed)
+    done = run(pages, "--speed", pages / "speed.json")
+    assert done.returncode == 1
+    assert message in done.stderr
+    assert (pages / "bench.md").read_text() == BENCH_PAGE
+    assert (pages / "README.md").read_text() == README_PAGE
+
+
+def test_refuses_a_page_without_its_markers_and_writes_neither_page(pages):
+    (pages / "README.md").write_text("no markers here\n")
+    done = run(pages, "--speed", pages / "speed.json")
+    assert done.returncode == 1
+    assert "no single pair of markers <!-- figures:speed begin -->" in done.stderr
+    assert (pages / "bench.md").read_text() == BENCH_PAGE
+
+
+def test_the_real_pages_carry_every_marker_the_script_fills():
+    bench = (SOURCE / "bench/README.md").read_text()
+    for name in ("speed", "accuracy", "accuracy-quirks"):
+        assert bench.count(f"<!-- figures:{name} begin -->") == 1, name
+        assert bench.count(f"<!-- figures:{name} end -->") == 1, name
+    readme = (SOURCE / "README.md").read_text()
+    assert readme.count("<!-- figures:speed begin -->") == 1 and readme.count("<!-- figures:speed end -->") == 1
