@@ -8,7 +8,7 @@ around it is left alone.
 
 Inputs:
   --speed JSON     bench_segmentation --benchmark_filter='^interleaved/real'
-                   --benchmark_format=json (OMPS and floodplane at s = 1, 2, 4 in one process);
+                   --benchmark_out=JSON (OMPS and floodplane at s = 1, 2, 4 in one process);
                    fills "speed" (a row per frame and the medians) and the README's "speed".
   --report JSON    pcd_compare --methods floodplane,floodplane/2,floodplane/4 --json on the
                    report split; fills "accuracy" (mean IoU / Hoover correct share / false-plane
@@ -19,7 +19,7 @@ Any one of them may be given alone. --dry-run prints the parts instead of writin
 
 Example:
   build/bench/bench_segmentation --benchmark_filter='^interleaved/real' --benchmark_min_time=3 \\
-      --benchmark_format=json > speed.json
+      --benchmark_out=speed.json
   bench/update_figures.py --speed speed.json --report report.json --quirks report_quirks.json
 """
 
@@ -65,7 +65,11 @@ def stamp(run_date):
 def read_speed(path):
     """frame -> counters of the interleaved benchmark, and the run's date."""
     try:
-        run = json.loads(pathlib.Path(path).read_text(encoding="utf-8"))
+        text = pathlib.Path(path).read_text(encoding="utf-8")
+        # bench_segmentation prints its configuration before the JSON on stdout (--benchmark_out
+        # writes the JSON alone): the run starts at the first line that opens an object.
+        start = re.search(r"^\{", text, re.MULTILINE)
+        run = json.loads(text[start.start():] if start else text)
     except (OSError, ValueError) as error:
         raise Unusable(f"{path}: {error}") from error
     frames = {}
@@ -80,7 +84,7 @@ def read_speed(path):
         frames[match.group(1)] = {c: float(entry[c]) for c in SPEED_COUNTERS}
     if not frames:
         raise Unusable(f"{path}: no interleaved/real:<frame> benchmark (run with "
-                       "--benchmark_filter='^interleaved/real' --benchmark_format=json)")
+                       "--benchmark_filter='^interleaved/real' --benchmark_out=FILE)")
     run_date = str(run.get("context", {}).get("date", ""))[:16].replace("T", " ") or "unknown date"
     return frames, run_date
 
