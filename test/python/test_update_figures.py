@@ -97,6 +97,13 @@ def test_writes_the_medians_of_the_frames_and_keeps_the_text_around(pages):
     assert readme.endswith("<!-- figures:speed end -->; more.\n")
 
 
+def test_reads_the_benchmark_s_stdout_with_its_configuration_before_the_json(pages):
+    (pages / "speed.json").write_text("floodplane 0.1.0, PCL 1.13.0\nreal frames: 7\n" + json.dumps(speed_run(), indent=2))
+    done = run(pages, "--speed", pages / "speed.json")
+    assert done.returncode == 0, done.stderr
+    assert "| **median** | 36.0 | 20.0 |" in (pages / "bench.md").read_text()
+
+
 def test_writes_accuracy_per_factor_and_sensor_model(pages):
     done = run(pages, "--report", pages / "report.json", "--quirks", pages / "report.json")
     assert done.returncode == 0, done.stderr
