@@ -31,9 +31,10 @@ class PlanarityTest {
  public:
   /// Starts the sums for planes 1..fits.size() (fits[k - 1] is plane k).
   void reset(const std::vector<PlaneFit>& fits);
-  /// Adds an inlier of plane k; with a `weight`, as that many inliers at `point` (a block's
-  /// mean standing for its pixels).
-  void add(std::uint32_t k, const Vec3& point, double weight = 1.0);
+  /// Adds an inlier of plane k.
+  void add(std::uint32_t k, const Vec3& point);
+  /// The same with a weight: the point stands for `weight` measured points (a block's mean).
+  void add(std::uint32_t k, const Vec3& point, double weight);
   /// Whether plane k has enough sampled points to show a bend at all.
   bool judgeable(std::uint32_t k) const;
   /// Whether plane k bends more than its noise explains.
@@ -56,6 +57,8 @@ class PlanarityTest {
     Eigen::Vector3d centroid, u, v, w;
   };
   static Frame frameOf(const PlaneFit& fit);
+  template <typename Scale>
+  void addScaled(std::uint32_t k, const Vec3& point, Scale scale);
   // The quadratic's sums in one frame.
   struct Sums {
     double moments[17] = {};  // the distinct entries of sum m m^T, m = (1, u, v, u^2, uv, v^2), but the count
@@ -84,21 +87,59 @@ class PlanarityTest {
   std::vector<PlaneFit> fits_;
 };
 
-// Inline: it runs for every sampled inlier of every plane, from region output.
-inline void PlanarityTest::add(std::uint32_t k, const Vec3& point, double weight) {
+// Inline: it runs for every sampled inlier of every plane, from region output. Each monomial
+// is added as it is computed (no array of them in between: at s = 1 that costs a few percent
+// of a frame); `scale` is the identity for an unweighted point, so that its sums are the
+// plain ones.
+template <typename Scale>
+inline void PlanarityTest::addScaled(std::uint32_t k, const Vec3& point, Scale scale) {
   const Vec3 d = point - origins_[k - 1];
   const double x = d.x, y = d.y, z = d.z;
   const double xx = x * x, xy = x * y, xz = x * z, yy = y * y, yz = y * z, zz = z * z;
-  const double values[kMonomials] = {1.0,     x,       y,       z,       xx,      xy,      xz,      yy,      yz,
-                                     zz,      xx * x,  xx * y,  xx * z,  xy * y,  xy * z,  xz * z,  yy * y,  yy * z,
-                                     yz * z,  zz * z,  xx * xx, xx * xy, xx * xz, xx * yy, xx * yz, xx * zz, xy * yy,
-                                     xy * yz, xy * zz, xz * zz, yy * yy, yy * yz, yy * zz, yz * zz, zz * zz};
   double* m = moments_.data() + static_cast<std::size_t>(k - 1) * kMonomials;
-  if (weight == 1.0) {
-    for (int i = 0; i < kMonomials; ++i) m[i] += values[i];
-  } else {
-    for (int i = 0; i < kMonomials; ++i) m[i] += weight * values[i];
-  }
+  m[0] += scale(1.0);
+  m[1] += scale(x);
+  m[2] += scale(y);
+  m[3] += scale(z);
+  m[4] += scale(xx);
+  m[5] += scale(xy);
+  m[6] += scale(xz);
+  m[7] += scale(yy);
+  m[8] += scale(yz);
+  m[9] += scale(zz);
+  m[10] += scale(xx * x);
+  m[11] += scale(xx * y);
+  m[12] += scale(xx * z);
+  m[13] += scale(xy * y);
+  m[14] += scale(xy * z);
+  m[15] += scale(xz * z);
+  m[16] += scale(yy * y);
+  m[17] += scale(yy * z);
+  m[18] += scale(yz * z);
+  m[19] += scale(zz * z);
+  m[20] += scale(xx * xx);
+  m[21] += scale(xx * xy);
+  m[22] += scale(xx * xz);
+  m[23] += scale(xx * yy);
+  m[24] += scale(xx * yz);
+  m[25] += scale(xx * zz);
+  m[26] += scale(xy * yy);
+  m[27] += scale(xy * yz);
+  m[28] += scale(xy * zz);
+  m[29] += scale(xz * zz);
+  m[30] += scale(yy * yy);
+  m[31] += scale(yy * yz);
+  m[32] += scale(yy * zz);
+  m[33] += scale(yz * zz);
+  m[34] += scale(zz * zz);
+}
+
+inline void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
+  addScaled(k, point, [](double value) { return value; });
+}
+
+inline void PlanarityTest::add(std::uint32_t k, const Vec3& point, double weight) {
+  addScaled(k, point, [weight](double value) { return weight * value; });
 }
 
 }  // namespace floodplane

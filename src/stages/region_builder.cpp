@@ -242,32 +242,37 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
     strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
   }
   const std::size_t width = static_cast<std::size_t>(grid.width);
+  const HoleFilling& holes = *frame.holes;
   const auto inside = [&](std::size_t j, std::uint32_t k) {
-    return labels[j] == k || !grid.isFinite(j) || frame.holes->isFilled(j);
-  };
-  // At s > 1 a block's mean stands for its measured pixels (weighted by their number): the
-  // test then has as many points as at full resolution, at the means' places.
-  const auto addPoint = [&](std::size_t i, std::uint32_t k) {
-    if (!blocks) {
-      test.add(k, Vec3::load(grid.point(i)));
-    } else if (!blocks->split(i)) {  // a split block's other pixels belong elsewhere
-      test.add(k, Vec3::load(grid.point(i)), blocks->count(i));
-    }
+    return labels[j] == k || !grid.isFinite(j) || holes.isFilled(j);
   };
   // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
-  // up once. Points are added in raster order of the grid.
-  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
-    const std::size_t row = y * width;
-    forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
-      const std::uint32_t k = labels.number[image_label];
-      if (k == 0 || y % strides_[k] != 0) return;
-      const std::uint32_t s = strides_[k];
-      // The first column of the run on the plane's lattice.
-      const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
-      for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
-        const std::size_t i = row + u;
-        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k)) addPoint(i, k);
-      }
+  // up once. Points are added in raster order of the grid. One loop per kind of point, so that
+  // the s = 1 loop has no branch on the blocks.
+  const auto scan = [&](auto add_point) {
+    for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
+      const std::size_t row = y * width;
+      forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
+        const std::uint32_t k = labels.number[image_label];
+        if (k == 0 || y % strides_[k] != 0) return;
+        const std::uint32_t s = strides_[k];
+        // The first column of the run on the plane's lattice.
+        const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
+        for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
+          const std::size_t i = row + u;
+          if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k)) add_point(i, k);
+        }
+      });
+    }
+  };
+  if (!blocks) {
+    scan([&](std::size_t i, std::uint32_t k) { test.add(k, Vec3::load(grid.point(i))); });
+  } else {
+    // At s > 1 a block's mean stands for its measured pixels (weighted by their number): the
+    // test then has as many points as at full resolution, at the means' places. A split
+    // block's other pixels belong elsewhere.
+    scan([&](std::size_t i, std::uint32_t k) {
+      if (!blocks->split(i)) test.add(k, Vec3::load(grid.point(i)), blocks->count(i));
     });
   }
 }
