@@ -228,8 +228,8 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
   // A large plane is sampled on a lattice (every s-th point of every s-th row) of about
   // kPlanaritySamples measured pixels: its test is then still sensitive to a bend a tenth of
   // the noise deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
-  // At sub-sampling s > 1 a sampled block adds its measured pixels, not its mean: the test
-  // judges what the sensor measured, with as many points as at full resolution (a strip of a
+  // At sub-sampling s > 1 a sampled block's mean counts as many points as the block has
+  // measured pixels, so that the test has as many points as at full resolution (a strip of a
   // column a few blocks wide has too few means to show its bend).
   const PointGrid& grid = frame.grid;
   const BlockGrid* blocks = frame.blocks;
