@@ -164,7 +164,7 @@ class MeanRow:
     """One method's sums over files, for its mean row (MeanRow of report.cpp)."""
 
     def __init__(self):
-        self.scenes = self.scored = self.with_floodplane = self.with_non_plane = 0
+        self.scenes = self.scored = self.with_floodplane = self.with_non_plane = self.ground_truth_planes = 0
         self.median_ms = self.min_ms = self.floodplane_ms = self.planes = self.false_planes = 0.0
         self.parts_ms = {}
         self.sums = dict.fromkeys(["mean_iou", "weighted_iou", *HOOVER], 0.0)
@@ -189,6 +189,7 @@ class MeanRow:
         if result.ground_truth_planes == 0:
             return
         self.scored += 1
+        self.ground_truth_planes += result.ground_truth_planes
         self.sums["mean_iou"] += result.mean_iou
         self.sums["weighted_iou"] += result.weighted_iou
         for name in HOOVER:

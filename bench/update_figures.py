@@ -118,27 +118,18 @@ def speed_sentence(medians):
 # Accuracy ------------------------------------------------------------------------------------
 
 def accuracy_cells(scenes, method, sensor):
-    """mean IoU / Hoover correct as a share of the ground-truth planes / false-plane fraction."""
-    iou, correct, planes, false_planes, scored, with_non_plane = 0.0, 0, 0, 0.0, 0, 0
+    """mean IoU / Hoover correct as a share of the ground-truth planes / false-plane fraction,
+    over the files as pcd_compare's means count them (compare_tables.MeanRow)."""
+    row = compare_tables.MeanRow()
     for scene in scenes:
-        if scene.sensor != sensor:
-            continue
         result = scene.find(method)
-        if result is None or not result.scored:
-            continue
-        if result.false_planes == result.false_planes:  # not NaN
-            false_planes += result.false_planes
-            with_non_plane += 1
-        if result.ground_truth_planes == 0:
-            continue
-        scored += 1
-        iou += result.mean_iou
-        correct += result.hoover["correct"]
-        planes += result.ground_truth_planes
-    if scored == 0:
+        if scene.sensor == sensor and result is not None:
+            row.add(scene, result)
+    if row.scored == 0:
         return "-"
-    false_text = f"{false_planes / with_non_plane:.3f}" if with_non_plane else "-"
-    return f"{iou / scored:.3f} / {correct / planes:.3f} / {false_text}"
+    share = compare_tables.divide(row.sums["correct"], row.ground_truth_planes)
+    return (f"{compare_tables.fixed(row.accuracy('mean_iou'), 3)} / {compare_tables.fixed(share, 3)} / "
+            f"{compare_tables.fixed(row.false_plane_fraction(), 3)}")
 
 
 def accuracy_table(path, what):

@@ -47,26 +47,37 @@ void sumPixelByPixel(const PointGrid& full, const Span& span, float sum[3], std:
   spread = count ? largest - smallest : 0.f;
 }
 
-// The scatter of a block's measured points about `mean`, pixel by pixel, into `out` (xx yy zz
-// - xy yz zx -).
-void scatterPixelByPixel(const PointGrid& full, const Span& span, const float mean[3], float out[8]) {
+// The scatter of a block's points about their mean: the sums of the offsets' products, added
+// in the order the points come, stored in the moments' layout (xx yy zz 0 xy yz zx 0).
+struct ScatterSums {
   float xx = 0.f, yy = 0.f, zz = 0.f, xy = 0.f, yz = 0.f, zx = 0.f;
+
+  void add(const float* p, const float* mean) {
+    const float dx = p[0] - mean[0], dy = p[1] - mean[1], dz = p[2] - mean[2];
+    xx += dx * dx;
+    yy += dy * dy;
+    zz += dz * dz;
+    xy += dx * dy;
+    yz += dy * dz;
+    zx += dz * dx;
+  }
+  void store(float* out) const {
+    out[0] = xx, out[1] = yy, out[2] = zz, out[3] = 0.f;
+    out[4] = xy, out[5] = yz, out[6] = zx, out[7] = 0.f;
+  }
+};
+
+// The scatter of a block's measured points about `mean`, pixel by pixel, into `out`.
+void scatterPixelByPixel(const PointGrid& full, const Span& span, const float mean[3], float out[8]) {
+  ScatterSums scatter;
   for (int v = span.v_begin; v < span.v_end; ++v) {
     const std::size_t row = static_cast<std::size_t>(v) * static_cast<std::size_t>(full.width);
     for (int u = span.u_begin; u < span.u_end; ++u) {
       const float* p = full.point(row + static_cast<std::size_t>(u));
-      if (!finitePoint(p)) continue;
-      const float dx = p[0] - mean[0], dy = p[1] - mean[1], dz = p[2] - mean[2];
-      xx += dx * dx;
-      yy += dy * dy;
-      zz += dz * dz;
-      xy += dx * dy;
-      yz += dy * dz;
-      zx += dz * dx;
+      if (finitePoint(p)) scatter.add(p, mean);
     }
   }
-  out[0] = xx, out[1] = yy, out[2] = zz, out[3] = 0.f;
-  out[4] = xy, out[5] = yz, out[6] = zx, out[7] = 0.f;
+  scatter.store(out);
 }
 
 #if FLOODPLANE_SIMD
@@ -251,23 +262,12 @@ void BlockGrid::separateSurfaces(const PointGrid& full, const NoiseModel& pixel_
       }
       float* mean = &mean_points_[4 * i];
       const float n = static_cast<float>(count);
-      mean[0] = sum[0] / n;
-      mean[1] = sum[1] / n;
-      mean[2] = sum[2] / n;
-      float xx = 0.f, yy = 0.f, zz = 0.f, xy = 0.f, yz = 0.f, zx = 0.f;
+      Vec3{sum[0] / n, sum[1] / n, sum[2] / n}.storePadded(mean);
+      ScatterSums scatter;
       for (int k = 0; k < w * h; ++k) {
-        if (!kept[static_cast<std::size_t>(k)]) continue;
-        const float* p = at(k);
-        const float dx = p[0] - mean[0], dy = p[1] - mean[1], dz = p[2] - mean[2];
-        xx += dx * dx;
-        yy += dy * dy;
-        zz += dz * dz;
-        xy += dx * dy;
-        yz += dy * dz;
-        zx += dz * dx;
+        if (kept[static_cast<std::size_t>(k)]) scatter.add(at(k), mean);
       }
-      float* out = &moments_[8 * i];
-      out[0] = xx, out[1] = yy, out[2] = zz, out[4] = xy, out[5] = yz, out[6] = zx;
+      scatter.store(&moments_[8 * i]);
     }
   }
 }
