@@ -4,31 +4,35 @@
 
 #include "floodplane/point_grid.h"
 #include "stages/block_grid.h"
+#include "stages/flood_pass.h"
 #include "stages/hole_filling.h"
 #include "stages/tolerances.h"
 
 namespace floodplane {
 
 /// A frame as every stage after its preparation sees it, in one value: the grid that is
-/// segmented, its tolerances, and how it relates to the caller's pixels.
+/// segmented at full resolution, its tolerances, and at sub-sampling s > 1 the block grid the
+/// coarse pass segments first.
 struct PreparedFrame {
-  /// The caller's grid, at full resolution.
+  /// The caller's grid.
   PointGrid measured;
-  /// The grid that is segmented. Sub-sampling 1: the measured grid with its small holes
-  /// filled and its noise smoothed (the same as `measured` where neither applies). s > 1: the
-  /// means of the s x s blocks (`blocks`), holes filled.
+  /// The grid the fine pass segments, at full resolution: the measured grid with its small
+  /// holes filled and its noise smoothed (the same as `measured` where neither applies).
   PointGrid grid;
-  int subsampling = 1;
-  float pitch = 0.f;       ///< the angle between neighbouring points of `grid` [rad]
-  float full_pitch = 0.f;  ///< that of `measured`
+  float pitch = 0.f;  ///< the angle between neighbouring pixels' viewing rays [rad]
   /// The depth noise of `grid`'s points and every length derived from it.
   Tolerances tolerances;
-  /// The depth noise of the measured pixels and its lengths: the full-resolution write's.
+  /// The depth noise of the measured pixels (before smoothing) and its lengths.
   Tolerances pixel_tolerances;
   /// Which points of `grid` were filled in (never labelled).
   const HoleFilling* holes = nullptr;
-  /// s > 1: the blocks `grid` holds the means of; null at s = 1.
+
+  /// Coarse to fine (sub-sampling s > 1): the blocks of s x s pixels, read once, and the grid
+  /// of their means that the coarse pass segments (holes filled), with the means' noise.
+  /// Null and empty at s = 1.
+  int subsampling = 1;
   const BlockGrid* blocks = nullptr;
+  FloodGrid coarse;
 };
 
 }  // namespace floodplane

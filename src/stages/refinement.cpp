@@ -13,11 +13,10 @@ namespace {
 
 class Refiner {
  public:
-  Refiner(const PointGrid& full, const HoleFilling& holes, const BlockGrid* blocks, std::vector<std::uint32_t>& labels,
-          PlaneCandidates& planes, std::vector<std::size_t>& queue)
+  Refiner(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
+          std::vector<std::size_t>& queue)
       : full_(full),
         holes_(holes),
-        blocks_(blocks),
         labels_(labels.data()),
         planes_(planes),
         queue_(queue),
@@ -102,17 +101,13 @@ class Refiner {
   void take(std::uint32_t k, std::size_t pixel) {
     labels_[pixel] = k;
     PlaneCandidate& plane = planes_[k];
-    if (blocks_)
-      blocks_->addMeanTo(pixel, plane.sums);
-    else
-      plane.sums.add(Vec3::load(full_.point(pixel)));
+    plane.sums.add(Vec3::load(full_.point(pixel)));
     if (pixel < plane.first_pixel) plane.first_pixel = pixel;
     queue_.push_back(pixel);
   }
 
   const PointGrid& full_;
   const HoleFilling& holes_;
-  const BlockGrid* blocks_;
   std::uint32_t* labels_;
   PlaneCandidates& planes_;
   std::vector<std::size_t>& queue_;
@@ -122,14 +117,13 @@ class Refiner {
 
 }  // namespace
 
-void refinePlanes(const PointGrid& full, const HoleFilling& holes, const BlockGrid* blocks,
-                  std::vector<std::uint32_t>& labels, PlaneCandidates& planes, bool renumber_first,
-                  std::vector<std::size_t>& queue) {
+void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
+                  PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue) {
   if (planes.list().empty()) {
     if (renumber_first) planes.renumberImage(labels);
     return;
   }
-  Refiner refiner(full, holes, blocks, labels, planes, queue);
+  Refiner refiner(full, holes, labels, planes, queue);
   refiner.seedAlongPlaneBorders(renumber_first);
   refiner.grow();
 }

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
-#include "stages/block_grid.h"
 #include "stages/hole_filling.h"
 #include "stages/plane_candidates.h"
 
@@ -22,10 +21,8 @@ namespace floodplane {
 /// With `renumber_first`, the labels are first renumbered by `planes.remap()` in the same pass,
 /// one row ahead of the scan (which reads the rows above and below the pixel it looks at).
 /// `queue` is scratch space.
-/// Pixels `holes` filled in are never labelled. With `blocks` (sub-sampling s > 1, `full` is
-/// then their means) a block that joins a plane adds its mean once for each of its pixels.
-void refinePlanes(const PointGrid& full, const HoleFilling& holes, const BlockGrid* blocks,
-                  std::vector<std::uint32_t>& labels, PlaneCandidates& planes, bool renumber_first,
-                  std::vector<std::size_t>& queue);
+/// Pixels `holes` filled in are never labelled.
+void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
+                  PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue);
 
 }  // namespace floodplane

@@ -17,8 +17,6 @@ namespace {
 
 // About this many pixels of a plane take part in its planarity test (see samplePlanarity).
 constexpr double kPlanaritySamples = 4000.0;
-// The depth smoothing's gain on the noise of independent pixels (a 3 x 3 mean: 1/3).
-constexpr double kSmoothingGain = 2.0;
 
 }  // namespace
 
@@ -28,19 +26,18 @@ void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& m
                              bool refine, Segmentation& out) {
   params_ = params;
   const std::uint32_t min_inliers = frame.tolerances.minInliers();
-  const bool blocks = frame.blocks != nullptr;
-  std::vector<std::uint32_t>& labels = blocks ? block_labels_ : out.labels;
+  std::vector<std::uint32_t>& labels = out.labels;
   selectCandidates(frame, merged, params);
   labels.resize(frame.grid.size());
   // The plane tests of selectCandidates ran on the merged clusters; refinement adds points,
   // which can tip a plane over the curvature limit or, rarely (an outlier far along a ray),
   // make its fit degenerate. The last sort of the candidates checks them again, so that what
   // is reported passes. Filled-in holes (HoleFilling) leave the clusters when their points are
-  // labelled at s = 1, so the counts are known only afterwards.
+  // labelled, so the counts are known only afterwards.
   bool renumbered = false;  // labels still to be renumbered by remap()
-  if (blocks || !frame.holes->filled()) {
+  if (!frame.holes->filled()) {
     // Counts are known: number the planes by size before writing any label.
-    candidates_.sortBySize(blocks ? 0 : min_inliers, nullptr);
+    candidates_.sortBySize(min_inliers, nullptr);
     for (std::size_t s = 1; s < merged.segment_count; ++s)
       candidate_of_segment_[s] = candidates_.remap(candidate_of_segment_[s]);
     labelSegmentedGrid(frame, merged, labels);
@@ -49,7 +46,7 @@ void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& m
     renumbered = candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
   }
   if (refine) {
-    refinePlanes(frame.grid, *frame.holes, frame.blocks, labels, candidates_, renumbered, queue_);  // renumbers
+    refinePlanes(frame.grid, *frame.holes, labels, candidates_, renumbered, queue_);  // renumbers
     // Refinement may also have changed the order by size.
     renumbered = candidates_.sortBySize(0, &params);
   }
@@ -62,17 +59,13 @@ void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& m
   if (dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
 }
 
-void RegionBuilder::write(const PreparedFrame& frame, const Params& params, Segmentation& out) {
+void RegionBuilder::write(const PreparedFrame& frame, Segmentation& out) {
   out.width = frame.measured.width;
   out.height = frame.measured.height;
-  if (frame.blocks) {
-    writeFullResolution(frame, params, out);
-  } else {
-    // A plane's centroid, covariance and fit are those of its inliers as the caller measured
-    // them, not as they were smoothed for segmenting.
-    if (frame.measured.data != frame.grid.data) sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
-    candidates_.applyRenumbering(out.labels);
-  }
+  // A plane's centroid, covariance and fit are those of its inliers as the caller measured
+  // them, not as they were smoothed for segmenting.
+  if (frame.measured.data != frame.grid.data) sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
+  candidates_.applyRenumbering(out.labels);
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
     SegmentedPlane plane;
@@ -87,35 +80,12 @@ void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSeg
   std::vector<PlaneCandidate>& list = candidates_.list();
   list.clear();
   candidate_of_segment_.assign(merged.segment_count, 0);
-  const BlockGrid* blocks = frame.blocks;
-  if (blocks) {
-    // The clusters' sums of their blocks' means, each counted as many times as it has measured
-    // pixels: the sizes min_inliers counts, and a scatter about the plane that the block grid's
-    // tolerances describe. A cluster one block wide is a line of means, whose plane turns
-    // freely about it: it takes its pixels' own sums (the full-resolution write sums the
-    // pixels of every plane anyway).
-    cluster_sums_.assign(merged.segment_count, PlaneSums());
-    cluster_pixel_sums_.assign(merged.segment_count, PlaneSums());
-    for (std::size_t i = 0; i < frame.grid.size(); ++i) {
-      const std::int32_t segment = merged.labels[i];
-      if (segment == 0) continue;
-      const std::size_t root = static_cast<std::size_t>(merged.root[segment]);
-      blocks->addMeanTo(i, cluster_sums_[root]);
-      blocks->addTo(i, cluster_pixel_sums_[root]);
-    }
-    for (std::size_t s = 1; s < merged.segment_count; ++s)
-      if (!std::isfinite(normalUncertainty(cluster_sums_[s].fit(), cluster_sums_[s].count)))
-        cluster_sums_[s] = cluster_pixel_sums_[s];
-  }
   // Refinement only adds pixels: drop small ones now. (A filled-in hole counts here, and
-  // leaves the count when the labels are written.) At s > 1 the full-resolution write adds
-  // the pixels of the blocks along a plane's border, which its clusters' blocks leave out: up
-  // to three times a strip's count where the strip is one block wide; the write checks the
-  // size again.
-  const double smallest = frame.tolerances.minInliers() / (blocks ? 4.0 : 1.0);
+  // leaves the count when the labels are written.)
+  const double smallest = frame.tolerances.minInliers();
   for (std::size_t s = 1; s < merged.segment_count; ++s) {
     if (merged.root[s] != static_cast<std::int32_t>(s)) continue;
-    const PlaneSums& sums = blocks ? cluster_sums_[s] : merged.sums[s];
+    const PlaneSums& sums = merged.sums[s];
     if (sums.count < smallest) continue;
     const PlaneFit fit = sums.fit();
     if (!acceptablePlane(fit, params)) continue;
@@ -151,51 +121,11 @@ void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedS
         // block has no measured pixel, and added nothing to the sums).
         const bool filled = holes.isFilled(i);
         labels[i] = filled ? 0u : k;
-        if (filled && !frame.blocks) candidate.sums.remove(Vec3::load(frame.grid.point(i)));
+        if (filled) candidate.sums.remove(Vec3::load(frame.grid.point(i)));
         if (!filled && candidate.first_pixel == kNoPixel) candidate.first_pixel = i;
       }
     });
   }
-}
-
-void RegionBuilder::writeFullResolution(const PreparedFrame& frame, const Params& params, Segmentation& out) {
-  // Each plane decides its border pixels with the plane of its inner blocks: a block on a
-  // crease joins one plane's flood (its mean is near both), but its pixels bend that plane
-  // towards the other, which would take the other's pixels along the crease. A plane with too
-  // few inner blocks for a fit of its own (a strip a block or two wide) keeps the fit of all.
-  const RenumberedLabels labels = candidates_.labels(block_labels_);
-  const std::size_t planes = candidates_.list().size();
-  inner_sums_.assign(planes + 1, PlaneSums());
-  const PointGrid& grid = frame.grid;
-  const std::size_t width = static_cast<std::size_t>(grid.width);
-  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
-    for (std::size_t x = 1; x + 1 < width; ++x) {
-      const std::size_t i = y * width + x;
-      const std::uint32_t k = labels[i];
-      if (k == 0 || frame.blocks->split(i)) continue;
-      if (labels[i - 1] != k || labels[i + 1] != k || labels[i - width] != k || labels[i + width] != k) continue;
-      frame.blocks->addTo(i, inner_sums_[k]);
-    }
-  }
-  criteria_.clear();
-  centroids_.clear();
-  for (std::uint32_t k = 1; k <= planes; ++k) {
-    const PlaneCandidate& candidate = candidates_.list()[k - 1];
-    const PlaneFit whole = candidate.sums.fit();
-    PlaneFit fit = inner_sums_[k].fit();
-    // The inner blocks of a strip a few blocks wide are a line: their plane turns freely about it.
-    if (!(normalUncertainty(fit, inner_sums_[k].count) <= 2.0 * normalUncertainty(whole, candidate.sums.count)))
-      fit = whole;
-    criteria_.push_back(planeCriterion(fit, frame.pixel_tolerances, frame.full_pitch));
-    centroids_.push_back({static_cast<float>(fit.centroid.x()), static_cast<float>(fit.centroid.y()),
-                          static_cast<float>(fit.centroid.z())});
-  }
-  full_resolution_.write(frame.measured, *frame.blocks, labels, criteria_, centroids_, candidates_, out.labels);
-  // The pixels decided one by one at the borders change the sizes a little: a plane may now
-  // fall short of min_inliers or change places with one of about its size.
-  // (The planes' first pixels move with them.)
-  if (candidates_.sortBySize(frame.tolerances.minInliers(), &params))
-    candidates_.renumberPixels(out.labels.data(), 0, out.labels.size());
 }
 
 void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const RenumberedLabels& labels) {
@@ -228,15 +158,9 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
   // A large plane is sampled on a lattice (every s-th point of every s-th row) of about
   // kPlanaritySamples measured pixels: its test is then still sensitive to a bend a tenth of
   // the noise deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
-  // At sub-sampling s > 1 a sampled block's mean counts as many points as the block has
-  // measured pixels, so that the test has as many points as at full resolution (a strip of a
-  // column a few blocks wide has too few means to show its bend).
   const PointGrid& grid = frame.grid;
-  const BlockGrid* blocks = frame.blocks;
   const std::vector<PlaneCandidate>& list = candidates_.list();
   strides_.assign(list.size() + 1, 1);
-  // The lattice counts points of the grid, the sums measured pixels: at s > 1 a sampled block
-  // stands for its pixels, so that the test has about kPlanaritySamples pixels' worth of points.
   for (std::size_t k = 1; k <= list.size(); ++k) {
     const double s = std::floor(std::sqrt(list[k - 1].sums.count / kPlanaritySamples));
     strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
@@ -247,10 +171,8 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
     return labels[j] == k || !grid.isFinite(j) || holes.isFilled(j);
   };
   // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
-  // up once. Points are added in raster order of the grid. One loop per kind of point, so that
-  // the s = 1 loop has no branch on the blocks.
-  const auto scan = [&](auto add_point) {
-    for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
+  // up once. Points are added in raster order of the grid.
+  for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
       const std::size_t row = y * width;
       forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
         const std::uint32_t k = labels.number[image_label];
@@ -260,36 +182,15 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
         const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
         for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
           const std::size_t i = row + u;
-          if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k)) add_point(i, k);
+          if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+            test.add(k, Vec3::load(grid.point(i)));
         }
       });
     }
-  };
-  if (!blocks) {
-    scan([&](std::size_t i, std::uint32_t k) { test.add(k, Vec3::load(grid.point(i))); });
-  } else {
-    // At s > 1 a block's mean stands for its measured pixels (weighted by their number): the
-    // test then has as many points as at full resolution, at the means' places. A split
-    // block's other pixels belong elsewhere.
-    scan([&](std::size_t i, std::uint32_t k) {
-      if (!blocks->split(i)) test.add(k, Vec3::load(grid.point(i)), blocks->count(i));
-    });
-  }
 }
 
 bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const RenumberedLabels& labels) {
-  // At s > 1 the test's points stand for measured pixels (samplePlanarity): their noise is the
-  // pixels', over the pixels' footprint. The test's significance was set at s = 1 on the
-  // smoothed frame, whose neighbouring points share their noise, so that a bend shows in more
-  // points than independent ones would show it: the pixels' noise counts kSmoothingGain times
-  // less.
-  Tolerances tolerances = frame.tolerances;
-  if (frame.blocks) {
-    NoiseModel noise = frame.pixel_tolerances.noise();
-    noise.sigma_constant /= kSmoothingGain;
-    noise.sigma_quadratic /= kSmoothingGain;
-    tolerances = frame.pixel_tolerances.withNoise(noise);
-  }
+  const Tolerances& tolerances = frame.tolerances;
   const std::vector<PlaneCandidate>& list = candidates_.list();
   if (list.empty()) return false;
   fits_.clear();

@@ -1,0 +1,147 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "stages/coarse_planes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/depth_noise.h"
+#include "stages/plane_candidates.h"
+
+namespace floodplane {
+
+namespace {
+
+// A coarse plane has at least this many blocks: fewer have no block inside them (a block
+// with its eight neighbours is 3 x 3).
+constexpr std::uint32_t kSmallestCluster = 9;
+
+}  // namespace
+
+bool CoarsePlanes::insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
+                              const Tolerances& pixel_tolerances) {
+  // The band across the plane: one pixel's noise band along its ray (Eq. 2) times the cosine
+  // of the incidence, or sigma_plane's fixed part. Noise alone gives a third of that.
+  const Vec3 mean = Vec3::load(blocks.means().point(i));
+  const double range_sq = mean.squaredNorm();
+  const double range = std::sqrt(range_sq);
+  const double incidence = std::abs(normal.dot(mean)) / range;
+  const double band = std::max(pixel_tolerances.planeFloor(range),
+                               noiseDeviations(pixel_tolerances.noise(), kPointDeviations, range_sq) * incidence);
+  return blocks.meanSquaredDistance(i, normal, offset) <= band * band;
+}
+
+void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const MergedSegments& merged,
+                        const Params& params, const Tolerances& block_tolerances,
+                        const Tolerances& pixel_tolerances) {
+  planes_.clear();
+  const PointGrid& means = blocks.means();
+  const std::size_t segment_count = merged.segment_count;
+  const auto root = [&](std::size_t block) {
+    const std::int32_t segment = merged.labels[block];
+    return segment == 0 ? 0 : merged.root[segment];
+  };
+  // Each cluster's block means, one each: the sums whose scatter the block tolerances describe.
+  cluster_sums_.assign(segment_count, PlaneSums());
+  block_counts_.assign(segment_count, 0);
+  for (std::size_t i = 0; i < means.size(); ++i) {
+    const std::int32_t r = root(i);
+    if (r == 0 || blocks.count(i) == 0) continue;
+    cluster_sums_[static_cast<std::size_t>(r)].add(Vec3::load(means.point(i)));
+    ++block_counts_[static_cast<std::size_t>(r)];
+  }
+  // The candidates: clusters large enough to have a block inside, planes as the output has them.
+  plane_of_root_.assign(segment_count, 0);
+  fits_.clear();
+  std::vector<std::int32_t> candidate_root;
+  for (std::size_t r = 1; r < segment_count; ++r) {
+    if (merged.root[r] != static_cast<std::int32_t>(r) || block_counts_[r] < kSmallestCluster) continue;
+    const PlaneFit fit = cluster_sums_[r].fit();
+    if (!acceptablePlane(fit, params)) continue;
+    fits_.push_back(fit);
+    candidate_root.push_back(static_cast<std::int32_t>(r));
+    plane_of_root_[r] = static_cast<std::int32_t>(fits_.size());
+  }
+  // Flat as a whole: a block mean is a point of the planarity test.
+  planarity_.reset(fits_);
+  for (std::size_t i = 0; i < means.size(); ++i) {
+    const std::int32_t r = root(i);
+    if (r == 0 || blocks.count(i) == 0) continue;
+    const std::int32_t k = plane_of_root_[static_cast<std::size_t>(r)];
+    if (k != 0) planarity_.add(static_cast<std::uint32_t>(k), Vec3::load(means.point(i)));
+  }
+  std::vector<std::int32_t> plane_of_candidate(fits_.size() + 1, 0);
+  for (std::uint32_t k = 1; k <= fits_.size(); ++k) {
+    if (planarity_.curved(k, block_tolerances)) continue;
+    planes_.emplace_back();
+    plane_of_candidate[k] = static_cast<std::int32_t>(planes_.size());
+  }
+  for (std::size_t r = 1; r < segment_count; ++r)
+    if (plane_of_root_[r] != 0) plane_of_root_[r] = plane_of_candidate[static_cast<std::size_t>(plane_of_root_[r])];
+  if (planes_.empty()) return;
+
+  // The inner blocks: all eight neighbours of the same cluster (or without a measured pixel,
+  // or beyond the frame's edge), one surface, within the band of their own segment's plane.
+  const int width = means.width, height = means.height;
+  const std::vector<Segment>& segments = coarse.segments();
+  for (int by = 0; by < height; ++by) {
+    for (int bx = 0; bx < width; ++bx) {
+      const std::size_t i = static_cast<std::size_t>(by) * static_cast<std::size_t>(width) + static_cast<std::size_t>(bx);
+      const std::int32_t r = root(i);
+      if (r == 0 || blocks.count(i) == 0 || blocks.split(i)) continue;
+      const std::int32_t k = plane_of_root_[static_cast<std::size_t>(r)];
+      if (k == 0) continue;
+      bool inside = true;
+      for (int dy = -1; dy <= 1 && inside; ++dy) {
+        for (int dx = -1; dx <= 1 && inside; ++dx) {
+          const int x = bx + dx, y = by + dy;
+          if (x < 0 || y < 0 || x >= width || y >= height) continue;
+          const std::size_t j = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+          inside = blocks.count(j) == 0 || root(j) == r;
+        }
+      }
+      if (!inside) continue;
+      const FloodCriterion& own = segments[static_cast<std::size_t>(merged.labels[i])].criterion;
+      if (!insideBand(blocks, i, own.normal, own.offset, pixel_tolerances)) continue;
+      Plane& plane = planes_[static_cast<std::size_t>(k - 1)];
+      plane.inner.push_back(i);
+      blocks.addMeanTo(i, plane.sums);
+    }
+  }
+}
+
+std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels, const HoleFilling& holes,
+                                const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine) const {
+  std::size_t claimed = 0;
+  const int s = blocks.factor();
+  const std::size_t block_row = static_cast<std::size_t>(blocks.means().width);
+  for (const Plane& plane : planes_) {
+    if (plane.inner.empty()) continue;
+    const PlaneFit fit = plane.sums.fit();
+    if (!fit.valid) continue;
+    Segment segment;
+    segment.sums = plane.sums;
+    segment.criterion = planeCriterion(fit, fine_tolerances, pixel_pitch);
+    const std::int32_t label = fine.addSegment(segment);
+    PlaneSums filled;
+    for (const std::size_t i : plane.inner) {
+      const int bx = static_cast<int>(i % block_row), by = static_cast<int>(i / block_row);
+      const int u_end = std::min(blocks.firstColumn(bx) + s, pixels.width);
+      const int v_end = std::min(blocks.firstRow(by) + s, pixels.height);
+      for (int v = blocks.firstRow(by); v < v_end; ++v) {
+        for (int u = blocks.firstColumn(bx); u < u_end; ++u) {
+          const std::size_t pixel = static_cast<std::size_t>(v) * static_cast<std::size_t>(pixels.width) +
+                                    static_cast<std::size_t>(u);
+          if (!pixels.isFinite(pixel)) continue;
+          fine.claim(pixel, label);
+          if (holes.isFilled(pixel)) filled.add(Vec3::load(pixels.point(pixel)));
+          ++claimed;
+        }
+      }
+    }
+    fine.addToSums(label, filled);
+  }
+  return claimed;
+}
+
+}  // namespace floodplane

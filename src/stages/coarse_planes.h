@@ -1,0 +1,73 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "floodplane/params.h"
+#include "models/planarity_test.h"
+#include "models/plane_sums.h"
+#include "stages/block_grid.h"
+#include "stages/flood_pass.h"
+#include "stages/hole_filling.h"
+#include "stages/tolerances.h"
+
+namespace floodplane {
+
+/// Coarse to fine, what the coarse pass is sure of: the big planes found on the block grid
+/// (sub-sampling s > 1) and the blocks inside them, whose pixels the fine pass then takes as
+/// they are, without a test of their own; every other pixel the fine pass segments at full
+/// resolution with the same tests as s = 1.
+///
+/// A cluster of blocks (the coarse pass's merged segments) is a coarse plane when
+/// - it is a plane as the output would have it (acceptablePlane), and
+/// - it is flat as a whole: the planarity test (planarity_test.h) on its block means, at the
+///   noise a block mean has. The facets of a curved body (a person, a ball, a pipe) bend
+///   together across the blocks of each facet, which one block alone cannot show; and two
+///   touching clusters are judged as one surface too (as FacetPairs does for the planes at the
+///   end), so that the facets of one curved surface fail together.
+/// A block of a coarse plane is inside it when its eight neighbours are of the same cluster
+/// (or have no measured pixel), it straddles no depth step (BlockGrid::split), and its pixels
+/// lie within the noise band of its segment's plane on average (their mean squared distance,
+/// from the block's scatter): a thin object in front of the plane, a crease or a bend within
+/// the block fails that and leaves the block to the fine pass.
+class CoarsePlanes {
+ public:
+  /// Finds the coarse planes among the clusters `merged` of the coarse pass `coarse` over the
+  /// block means of `blocks`. `block_tolerances` describe the means' noise, `pixel_tolerances`
+  /// the measured pixels'.
+  void find(const BlockGrid& blocks, const FloodPass& coarse, const MergedSegments& merged, const Params& params,
+            const Tolerances& block_tolerances, const Tolerances& pixel_tolerances);
+  /// Gives the pixels of every inner block to the fine pass `fine` over `pixels` (the frame at
+  /// full resolution): a segment per coarse plane, whose sums are those of its inner blocks'
+  /// means (as if each of its measured pixels were there: their scatter is then about that of
+  /// the fine grid's points) and whose plane is theirs, tested under `fine_tolerances`. The
+  /// points `holes` filled in are given too, and added to the sums (the fine pass's segments
+  /// hold them until the labels are written, which takes them out again).
+  /// Returns the number of pixels given.
+  std::size_t claim(const BlockGrid& blocks, const PointGrid& pixels, const HoleFilling& holes,
+                    const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine) const;
+
+  /// The number of coarse planes.
+  std::size_t size() const { return planes_.size(); }
+
+ private:
+  struct Plane {
+    PlaneSums sums;                  // of its inner blocks' means, each counted once per pixel
+    std::vector<std::size_t> inner;  // its inner blocks
+  };
+  // Whether block i's pixels lie within the noise band of the plane (normal, offset) on average.
+  static bool insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
+                         const Tolerances& pixel_tolerances);
+
+  std::vector<Plane> planes_;
+  std::vector<std::int32_t> plane_of_root_;  // per coarse segment (a cluster's root): its plane + 1, 0 none
+  std::vector<PlaneSums> cluster_sums_;      // per root: the sums of its blocks' means, one each
+  std::vector<std::uint32_t> block_counts_;  // per root: its blocks
+  PlanarityTest planarity_;
+  std::vector<PlaneFit> fits_;
+};
+
+}  // namespace floodplane

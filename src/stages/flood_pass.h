@@ -1,0 +1,89 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "floodplane/params.h"
+#include "floodplane/point_grid.h"
+#include "floodplane/segmenter.h"
+#include "stages/leftover_seeds.h"
+#include "stages/plane_flood.h"
+#include "stages/plane_merger.h"
+#include "stages/relabelling.h"
+#include "stages/seed_selector.h"
+#include "stages/segment_borders.h"
+#include "stages/tolerances.h"
+#include "util/distance_buffer.h"
+
+namespace floodplane {
+
+/// The segments after merging, on the grid a flood pass segmented.
+struct MergedSegments {
+  const std::int32_t* labels = nullptr;  ///< per point of the grid: segment, 0 none
+  const std::int32_t* root = nullptr;    ///< per segment: the segment it merged into
+  const PlaneSums* sums = nullptr;       ///< per root segment: the sums of its whole cluster
+  std::size_t segment_count = 0;         ///< labels are < segment_count
+};
+
+/// The grid a flood pass segments and what it needs to know of it.
+struct FloodGrid {
+  PointGrid points;
+  Tolerances tolerances;  ///< the depth noise of `points` and every length derived from it
+  float pitch = 0.f;      ///< the angle between neighbouring points' viewing rays [rad]
+  /// How many pixels of the frame a point stands for along each axis (a block's side; 1: the
+  /// pixels themselves): the seed lattice and the smallest pieces count pixels of the frame.
+  int factor = 1;
+  /// No noise worth the name (exact data): the second seeding pass seeds smaller.
+  bool noise_free = false;
+};
+
+/// Segments one grid up to merged clusters: seed selection (Sec. III-C) interleaved with
+/// flooding (Sec. III-A, III-B) in scan order, the relabelling of what Eq. 4 takeovers cut
+/// apart, and agglomerative merging (Sec. III-D). The coarse pass runs it on the frame's block
+/// means, the fine pass on its pixels, where the coarse planes' inner blocks are claimed before
+/// the first seed (claim()).
+class FloodPass {
+ public:
+  /// Starts a pass over `grid` (kept by reference until the pass ends): no segment, no
+  /// pixel claimed.
+  void begin(const FloodGrid& grid, const Params& params);
+  /// A segment whose pixels are known before any flood (claimed with claim()): returns its label.
+  std::int32_t addSegment(const Segment& segment);
+  /// Gives `pixel` to segment `label` for good: no flood takes it over (Eq. 4 with D = 0).
+  void claim(std::size_t pixel, std::int32_t label) { buffer_.claim(pixel, label, 0.0f); }
+  /// Adds `sums` to those of segment `label`.
+  void addToSums(std::int32_t label, const PlaneSums& sums) { segments_[static_cast<std::size_t>(label)].sums.merge(sums); }
+  /// Seeds and floods every unclaimed point, in scan order; counts seeds, candidates and
+  /// takeovers in `stats`, and the time of the floods and of the seeds into `phases` when
+  /// `timed`.
+  void seedAndFlood(bool timed, SegmentationStats& stats, PhaseTimes& phases);
+  /// Sec. III-B, after the floods: segments that takeovers cut apart become one per piece.
+  void relabel();
+  /// Sec. III-D over the segment graph, and across the borders where a bent surface was cut:
+  /// the clusters of segments, each with its whole sums (valid until the next begin()).
+  MergedSegments merge(const MergeCriterion& criterion);
+
+  const std::vector<std::int32_t>& labels() const { return buffer_.labels(); }
+  const std::vector<Segment>& segments() const { return segments_; }
+  std::size_t mergeCount() const { return merger_.mergeCount(); }
+
+ private:
+  const FloodGrid* grid_ = nullptr;
+  Params params_;
+  DistanceBuffer buffer_;
+  SeedSelector selector_;
+  SeedSelector fine_selector_;  // the second pass's smaller seed cube
+  LeftoverSeeds leftover_;      // the third pass's: regions no seed reached
+  PlaneFlood flood_;
+  std::vector<Segment> segments_;
+  std::vector<SegmentEdge> edges_;
+  Relabelling relabelling_;
+  SegmentBorders borders_;
+  PlaneMerger merger_;
+  std::vector<PlaneSums> cluster_sums_;
+};
+
+}  // namespace floodplane
