@@ -80,6 +80,7 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const 
     if (plane_of_root_[r] != 0) plane_of_root_[r] = plane_of_candidate[static_cast<std::size_t>(plane_of_root_[r])];
   if (planes_.empty()) return;
 
+  inner_plane_.assign(means.size(), 0);
   // The inner blocks: all eight neighbours of the same cluster (or without a measured pixel,
   // or beyond the frame's edge), one surface, within the band of their own segment's plane.
   const int width = means.width, height = means.height;
@@ -105,17 +106,23 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const 
       if (!insideBand(blocks, i, own.normal, own.offset, pixel_tolerances)) continue;
       Plane& plane = planes_[static_cast<std::size_t>(k - 1)];
       plane.inner.push_back(i);
+      inner_plane_[i] = k;
       blocks.addMeanTo(i, plane.sums);
     }
   }
 }
 
 std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels, const HoleFilling& holes,
-                                const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine) const {
+                                const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine,
+                                SegmentationStats& stats) {
   std::size_t claimed = 0;
   const int s = blocks.factor();
-  const std::size_t block_row = static_cast<std::size_t>(blocks.means().width);
-  for (const Plane& plane : planes_) {
+  const int block_width = blocks.means().width, block_height = blocks.means().height;
+  const std::size_t width = static_cast<std::size_t>(pixels.width);
+  const auto pixel = [&](int u, int v) { return static_cast<std::size_t>(v) * width + static_cast<std::size_t>(u); };
+  labels_.assign(planes_.size(), 0);
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    const Plane& plane = planes_[k];
     if (plane.inner.empty()) continue;
     const PlaneFit fit = plane.sums.fit();
     if (!fit.valid) continue;
@@ -123,23 +130,55 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
     segment.sums = plane.sums;
     segment.criterion = planeCriterion(fit, fine_tolerances, pixel_pitch);
     const std::int32_t label = fine.addSegment(segment);
+    labels_[k] = label;
     PlaneSums filled;
     for (const std::size_t i : plane.inner) {
-      const int bx = static_cast<int>(i % block_row), by = static_cast<int>(i / block_row);
+      const int bx = static_cast<int>(i % static_cast<std::size_t>(block_width));
+      const int by = static_cast<int>(i / static_cast<std::size_t>(block_width));
       const int u_end = std::min(blocks.firstColumn(bx) + s, pixels.width);
       const int v_end = std::min(blocks.firstRow(by) + s, pixels.height);
       for (int v = blocks.firstRow(by); v < v_end; ++v) {
         for (int u = blocks.firstColumn(bx); u < u_end; ++u) {
-          const std::size_t pixel = static_cast<std::size_t>(v) * static_cast<std::size_t>(pixels.width) +
-                                    static_cast<std::size_t>(u);
-          if (!pixels.isFinite(pixel)) continue;
-          fine.claim(pixel, label);
-          if (holes.isFilled(pixel)) filled.add(Vec3::load(pixels.point(pixel)));
+          const std::size_t p = pixel(u, v);
+          if (!pixels.isFinite(p)) continue;
+          fine.claim(p, label);
+          if (holes.isFilled(p)) filled.add(Vec3::load(pixels.point(p)));
           ++claimed;
         }
       }
     }
     fine.addToSums(label, filled);
+  }
+  // Each plane's inner blocks along their edge (a side whose neighbour is not inside the same
+  // plane): the pixels of that side start its flood into the pixels around.
+  for (std::size_t k = 0; k < planes_.size(); ++k) {
+    if (labels_[k] == 0) continue;
+    const std::int32_t own = static_cast<std::int32_t>(k + 1);
+    starts_.clear();
+    for (const std::size_t i : planes_[k].inner) {
+      const int bx = static_cast<int>(i % static_cast<std::size_t>(block_width));
+      const int by = static_cast<int>(i / static_cast<std::size_t>(block_width));
+      const auto inside = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < block_width && y < block_height &&
+               inner_plane_[static_cast<std::size_t>(y) * static_cast<std::size_t>(block_width) +
+                            static_cast<std::size_t>(x)] == own;
+      };
+      const int u0 = blocks.firstColumn(bx), v0 = blocks.firstRow(by);
+      const int u1 = std::min(u0 + s, pixels.width) - 1, v1 = std::min(v0 + s, pixels.height) - 1;
+      if (!inside(bx - 1, by))
+        for (int v = v0; v <= v1; ++v) starts_.push_back(pixel(u0, v));
+      if (!inside(bx + 1, by))
+        for (int v = v0; v <= v1; ++v) starts_.push_back(pixel(u1, v));
+      if (!inside(bx, by - 1))
+        for (int u = u0; u <= u1; ++u) starts_.push_back(pixel(u, v0));
+      if (!inside(bx, by + 1))
+        for (int u = u0; u <= u1; ++u) starts_.push_back(pixel(u, v1));
+    }
+    // Only claimed pixels start a flood (a hole of the frame is none).
+    starts_.erase(std::remove_if(starts_.begin(), starts_.end(),
+                                 [&](std::size_t p) { return fine.labels()[p] != labels_[k]; }),
+                  starts_.end());
+    fine.extend(labels_[k], starts_, stats);
   }
   return claimed;
 }

@@ -46,9 +46,13 @@ class CoarsePlanes {
   /// the fine grid's points) and whose plane is theirs, tested under `fine_tolerances`. The
   /// points `holes` filled in are given too, and added to the sums (the fine pass's segments
   /// hold them until the labels are written, which takes them out again).
-  /// Returns the number of pixels given.
+  /// Then each coarse plane floods on from the edges of its inner blocks into the pixels
+  /// around them (FloodPass::extend): its border pixels are decided by the fine pass's tests
+  /// before any seed of the fine pass, as a plane grown from one seed at s = 1 would have taken
+  /// them first. Returns the number of pixels given.
   std::size_t claim(const BlockGrid& blocks, const PointGrid& pixels, const HoleFilling& holes,
-                    const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine) const;
+                    const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine,
+                    SegmentationStats& stats);
 
   /// The number of coarse planes.
   std::size_t size() const { return planes_.size(); }
@@ -63,6 +67,9 @@ class CoarsePlanes {
                          const Tolerances& pixel_tolerances);
 
   std::vector<Plane> planes_;
+  std::vector<std::int32_t> inner_plane_;  // per block: the plane it is inside of + 1, 0 none
+  std::vector<std::int32_t> labels_;       // per plane: its segment in the fine pass
+  std::vector<std::size_t> starts_;        // claim()'s scratch
   std::vector<std::int32_t> plane_of_root_;  // per coarse segment (a cluster's root): its plane + 1, 0 none
   std::vector<PlaneSums> cluster_sums_;      // per root: the sums of its blocks' means, one each
   std::vector<std::uint32_t> block_counts_;  // per root: its blocks

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "util/simd.h"
 
@@ -291,6 +292,21 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
     }
     if (!grew) break;
   }
+  return visitor.takenOver();
+}
+
+std::size_t PlaneFlood::extend(const PointGrid& grid, const std::vector<std::size_t>& starts, std::int32_t label,
+                               const Params& params, DistanceBuffer& buffer, std::vector<Segment>& segments,
+                               std::vector<SegmentEdge>& edges) {
+  if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
+  frontier_.clear();
+  // No refit: the first would come at twice the pixels the segment has.
+  FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges,
+                       std::numeric_limits<std::size_t>::max(), 0.0, params.angular_threshold);
+  const std::size_t width = static_cast<std::size_t>(grid.width);
+  for (const std::size_t start : starts)
+    spanFloodFill(grid.width, grid.height, static_cast<int>(start % width), static_cast<int>(start / width), visitor,
+                  shadows_);
   return visitor.takenOver();
 }
 

@@ -175,7 +175,8 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   }
   ws.fine.begin(ws.fine_grid, params_);
   if (frame.blocks)
-    ws.coarse_planes.claim(*frame.blocks, frame.grid, *frame.holes, frame.tolerances, frame.pitch, ws.fine);
+    ws.coarse_planes.claim(*frame.blocks, frame.grid, *frame.holes, frame.tolerances, frame.pitch, ws.fine,
+                           result_.stats);
   ws.fine.seedAndFlood(timed, result_.stats, result_.phases);
   {
     PhaseTimer timer(timed, result_.phases.relabelling);
