@@ -92,18 +92,22 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const 
       if (r == 0 || blocks.count(i) == 0 || blocks.split(i)) continue;
       const std::int32_t k = plane_of_root_[static_cast<std::size_t>(r)];
       if (k == 0) continue;
+      // Its segment's plane, and its mean and its neighbours' within that plane's band at the
+      // means' noise (Eq. 2 of the coarse pass): the surface goes on around the block.
+      const FloodCriterion& own = segments[static_cast<std::size_t>(merged.labels[i])].criterion;
       bool inside = true;
       for (int dy = -1; dy <= 1 && inside; ++dy) {
         for (int dx = -1; dx <= 1 && inside; ++dx) {
           const int x = bx + dx, y = by + dy;
           if (x < 0 || y < 0 || x >= width || y >= height) continue;
           const std::size_t j = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
-          inside = blocks.count(j) == 0 || root(j) == r;
+          if (blocks.count(j) == 0) continue;
+          const Vec3 mean = Vec3::load(means.point(j));
+          float distance = 0.f;
+          inside = !blocks.split(j) && own.fitsPlane(mean, mean.squaredNorm(), distance);
         }
       }
-      if (!inside) continue;
-      const FloodCriterion& own = segments[static_cast<std::size_t>(merged.labels[i])].criterion;
-      if (!insideBand(blocks, i, own.normal, own.offset, pixel_tolerances)) continue;
+      if (!inside || !insideBand(blocks, i, own.normal, own.offset, pixel_tolerances)) continue;
       Plane& plane = planes_[static_cast<std::size_t>(k - 1)];
       plane.inner.push_back(i);
       inner_plane_[i] = k;
@@ -149,6 +153,20 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
     }
     fine.addToSums(label, filled);
   }
+  // Inner blocks of two planes side by side: the two touch without a pixel of the fine pass
+  // between them, which would have noted the pair for merging.
+  for (int by = 0; by < block_height; ++by) {
+    for (int bx = 0; bx < block_width; ++bx) {
+      const std::size_t i = static_cast<std::size_t>(by) * static_cast<std::size_t>(block_width) + static_cast<std::size_t>(bx);
+      const std::int32_t k = inner_plane_[i];
+      if (k == 0 || labels_[static_cast<std::size_t>(k - 1)] == 0) continue;
+      const std::int32_t right = bx + 1 < block_width ? inner_plane_[i + 1] : 0;
+      const std::int32_t below = by + 1 < block_height ? inner_plane_[i + static_cast<std::size_t>(block_width)] : 0;
+      for (const std::int32_t l : {right, below})
+        if (l != 0 && l != k && labels_[static_cast<std::size_t>(l - 1)] != 0)
+          fine.addEdge(labels_[static_cast<std::size_t>(k - 1)], labels_[static_cast<std::size_t>(l - 1)]);
+    }
+  }
   // Each plane's inner blocks along their edge (a side whose neighbour is not inside the same
   // plane): the pixels of that side start its flood into the pixels around.
   for (std::size_t k = 0; k < planes_.size(); ++k) {
@@ -165,19 +183,22 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
       };
       const int u0 = blocks.firstColumn(bx), v0 = blocks.firstRow(by);
       const int u1 = std::min(u0 + s, pixels.width) - 1, v1 = std::min(v0 + s, pixels.height) - 1;
-      if (!inside(bx - 1, by))
-        for (int v = v0; v <= v1; ++v) starts_.push_back(pixel(u0, v));
-      if (!inside(bx + 1, by))
-        for (int v = v0; v <= v1; ++v) starts_.push_back(pixel(u1, v));
-      if (!inside(bx, by - 1))
-        for (int u = u0; u <= u1; ++u) starts_.push_back(pixel(u, v0));
-      if (!inside(bx, by + 1))
-        for (int u = u0; u <= u1; ++u) starts_.push_back(pixel(u, v1));
+      // A pixel of the side starts a flood where the pixel beyond it is not the plane's yet:
+      // the fill looks at the pixels around its start first.
+      const std::vector<std::int32_t>& claimed_by = fine.labels();
+      const auto add = [&](int u, int v, int du, int dv) {
+        const std::size_t p = pixel(u, v);
+        if (claimed_by[p] == labels_[k] && claimed_by[pixel(u + du, v + dv)] != labels_[k]) starts_.push_back(p);
+      };
+      if (bx > 0 && !inside(bx - 1, by))
+        for (int v = v0; v <= v1; ++v) add(u0, v, -1, 0);
+      if (u1 + 1 < pixels.width && !inside(bx + 1, by))
+        for (int v = v0; v <= v1; ++v) add(u1, v, 1, 0);
+      if (by > 0 && !inside(bx, by - 1))
+        for (int u = u0; u <= u1; ++u) add(u, v0, 0, -1);
+      if (v1 + 1 < pixels.height && !inside(bx, by + 1))
+        for (int u = u0; u <= u1; ++u) add(u, v1, 0, 1);
     }
-    // Only claimed pixels start a flood (a hole of the frame is none).
-    starts_.erase(std::remove_if(starts_.begin(), starts_.end(),
-                                 [&](std::size_t p) { return fine.labels()[p] != labels_[k]; }),
-                  starts_.end());
     fine.extend(labels_[k], starts_, stats);
   }
   return claimed;

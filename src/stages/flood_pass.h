@@ -56,6 +56,8 @@ class FloodPass {
   void claim(std::size_t pixel, std::int32_t label) { buffer_.claim(pixel, label, 0.0f); }
   /// Floods on from the claimed pixels `starts` of segment `label` (PlaneFlood::extend).
   void extend(std::int32_t label, const std::vector<std::size_t>& starts, SegmentationStats& stats);
+  /// Notes that segments a and b touch (the merge tests them).
+  void addEdge(std::int32_t a, std::int32_t b) { edges_.emplace_back(a, b); }
   /// Adds `sums` to those of segment `label`.
   void addToSums(std::int32_t label, const PlaneSums& sums) { segments_[static_cast<std::size_t>(label)].sums.merge(sums); }
   /// Seeds and floods every unclaimed point, in scan order; counts seeds, candidates and

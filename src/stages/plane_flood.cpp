@@ -304,9 +304,16 @@ std::size_t PlaneFlood::extend(const PointGrid& grid, const std::vector<std::siz
   FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges,
                        std::numeric_limits<std::size_t>::max(), 0.0, params.angular_threshold);
   const std::size_t width = static_cast<std::size_t>(grid.width);
-  for (const std::size_t start : starts)
-    spanFloodFill(grid.width, grid.height, static_cast<int>(start % width), static_cast<int>(start / width), visitor,
-                  shadows_);
+  const std::int32_t* labels = buffer.labels().data();
+  for (const std::size_t start : starts) {
+    // A start whose neighbours are all the segment's already (the fill from an earlier start
+    // took them) has nothing to look at.
+    const int x = static_cast<int>(start % width), y = static_cast<int>(start / width);
+    const bool open = (x > 0 && labels[start - 1] != label) || (x + 1 < grid.width && labels[start + 1] != label) ||
+                      (y > 0 && labels[start - width] != label) ||
+                      (y + 1 < grid.height && labels[start + width] != label);
+    if (open) spanFloodFill(grid.width, grid.height, x, y, visitor, shadows_);
+  }
   return visitor.takenOver();
 }
 
