@@ -102,9 +102,14 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const 
           if (x < 0 || y < 0 || x >= width || y >= height) continue;
           const std::size_t j = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
           if (blocks.count(j) == 0) continue;
-          const Vec3 mean = Vec3::load(means.point(j));
-          float distance = 0.f;
-          inside = !blocks.split(j) && own.fitsPlane(mean, mean.squaredNorm(), distance);
+          if (blocks.split(j)) {
+            inside = false;
+          } else if (merged.labels[j] != merged.labels[i]) {
+            // (A neighbour of the same segment passed its flood's test already.)
+            const Vec3 mean = Vec3::load(means.point(j));
+            float distance = 0.f;
+            inside = own.fitsPlane(mean, mean.squaredNorm(), distance);
+          }
         }
       }
       if (!inside || !insideBand(blocks, i, own.normal, own.offset, pixel_tolerances)) continue;
@@ -141,8 +146,16 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
       const int by = static_cast<int>(i / static_cast<std::size_t>(block_width));
       const int u_end = std::min(blocks.firstColumn(bx) + s, pixels.width);
       const int v_end = std::min(blocks.firstRow(by) + s, pixels.height);
+      const int u_begin = blocks.firstColumn(bx);
+      if (blocks.complete(i)) {
+        // Every pixel measured: none is a hole, none filled in.
+        for (int v = blocks.firstRow(by); v < v_end; ++v)
+          fine.claimRun(pixel(u_begin, v), static_cast<std::size_t>(u_end - u_begin), label);
+        claimed += blocks.count(i);
+        continue;
+      }
       for (int v = blocks.firstRow(by); v < v_end; ++v) {
-        for (int u = blocks.firstColumn(bx); u < u_end; ++u) {
+        for (int u = u_begin; u < u_end; ++u) {
           const std::size_t p = pixel(u, v);
           if (!pixels.isFinite(p)) continue;
           fine.claim(p, label);

@@ -54,6 +54,8 @@ class FloodPass {
   std::int32_t addSegment(const Segment& segment);
   /// Gives `pixel` to segment `label` for good: no flood takes it over (Eq. 4 with D = 0).
   void claim(std::size_t pixel, std::int32_t label) { buffer_.claim(pixel, label, 0.0f); }
+  /// claim() for the n pixels from `first` on.
+  void claimRun(std::size_t first, std::size_t n, std::int32_t label) { buffer_.claimRun(first, n, label, 0.0f); }
   /// Floods on from the claimed pixels `starts` of segment `label` (PlaneFlood::extend).
   void extend(std::int32_t label, const std::vector<std::size_t>& starts, SegmentationStats& stats);
   /// Notes that segments a and b touch (the merge tests them).

@@ -48,6 +48,12 @@ class DistanceBuffer {
     std::copy_n(plane_distances, n, distances_.begin() + static_cast<std::ptrdiff_t>(first));
   }
 
+  /// Gives the n pixels from `first` on to `segment` at one distance.
+  void claimRun(std::size_t first, std::size_t n, std::int32_t segment, float plane_distance) {
+    std::fill_n(labels_.begin() + static_cast<std::ptrdiff_t>(first), n, segment);
+    std::fill_n(distances_.begin() + static_cast<std::ptrdiff_t>(first), n, plane_distance);
+  }
+
   const std::vector<float>& distances() const { return distances_; }
   std::vector<std::int32_t>& labels() { return labels_; }
   const std::vector<std::int32_t>& labels() const { return labels_; }
