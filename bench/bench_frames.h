@@ -43,6 +43,9 @@ inline FrameSource rendered(const std::string& scene, int width, int height) {
 inline constexpr std::array<std::pair<int, int>, 5> kFrameSizes{
     {{320, 240}, {640, 480}, {1280, 960}, {1920, 1080}, {3840, 2160}}};
 
+/// The sizes of the resolution sweep (resolution_sweep.cpp): 320x240 to 2560x1920.
+inline constexpr std::array<std::pair<int, int>, 4> kSweepSizes{{{320, 240}, {640, 480}, {1280, 960}, {2560, 1920}}};
+
 /// The core's view of a frame's points (no copy), for the benchmarks of single stages.
 PointGrid gridOf(const Frame& frame);
 

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerHeadStart();
   floodplane::bench::registerMemoryFloor();
   floodplane::bench::registerInterleavedMethods();
+  floodplane::bench::registerResolutionSweep();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

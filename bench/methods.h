@@ -26,5 +26,7 @@ void registerHeadStart();
 /// One pass that reads every point and writes a label: the floor under any segmentation.
 void registerMemoryFloor();
 void registerInterleavedMethods();
+// The resolution sweep: time, time per pixel and added memory at s = 1 and s = 4.
+void registerResolutionSweep();
 
 }  // namespace floodplane::bench

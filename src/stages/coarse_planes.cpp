@@ -31,11 +31,11 @@ bool CoarsePlanes::insideBand(const BlockGrid& blocks, std::size_t i, const Vec3
   return blocks.meanSquaredDistance(i, normal, offset) <= band * band;
 }
 
-void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const MergedSegments& merged,
-                        const Params& params, const Tolerances& block_tolerances,
-                        const Tolerances& pixel_tolerances) {
+void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, const FloodPass& coarse,
+                        const MergedSegments& merged, const Params& params, const Tolerances& pixel_tolerances) {
   planes_.clear();
   const PointGrid& means = blocks.means();
+  const Tolerances& block_tolerances = block_grid.tolerances;
   const std::size_t segment_count = merged.segment_count;
   const auto root = [&](std::size_t block) {
     const std::int32_t segment = merged.labels[block];
@@ -53,41 +53,66 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const 
   // The candidates: clusters large enough to have a block inside, planes as the output has them.
   plane_of_root_.assign(segment_count, 0);
   fits_.clear();
-  std::vector<std::int32_t> candidate_root;
+  candidate_root_.clear();
   for (std::size_t r = 1; r < segment_count; ++r) {
     if (merged.root[r] != static_cast<std::int32_t>(r) || block_counts_[r] < kSmallestCluster) continue;
     const PlaneFit fit = cluster_sums_[r].fit();
     if (!acceptablePlane(fit, params)) continue;
     fits_.push_back(fit);
-    candidate_root.push_back(static_cast<std::int32_t>(r));
+    candidate_root_.push_back(static_cast<std::int32_t>(r));
     plane_of_root_[r] = static_cast<std::int32_t>(fits_.size());
   }
+  const std::size_t candidates = fits_.size();
   // Flat as a whole: a block mean is a point of the planarity test.
   planarity_.reset(fits_);
+  candidate_of_block_.assign(means.size(), 0);
   for (std::size_t i = 0; i < means.size(); ++i) {
     const std::int32_t r = root(i);
     if (r == 0 || blocks.count(i) == 0) continue;
     const std::int32_t k = plane_of_root_[static_cast<std::size_t>(r)];
-    if (k != 0) planarity_.add(static_cast<std::uint32_t>(k), Vec3::load(means.point(i)));
+    if (k == 0) continue;
+    planarity_.add(static_cast<std::uint32_t>(k), Vec3::load(means.point(i)));
+    candidate_of_block_[i] = static_cast<std::uint32_t>(k);
   }
-  std::vector<std::int32_t> plane_of_candidate(fits_.size() + 1, 0);
-  for (std::uint32_t k = 1; k <= fits_.size(); ++k) {
-    if (planarity_.curved(k, block_tolerances)) continue;
+  curved_.assign(candidates + 1, false);
+  judgeable_.assign(candidates + 1, false);
+  for (std::uint32_t k = 1; k <= candidates; ++k) {
+    curved_[k] = planarity_.curved(k, block_tolerances);
+    judgeable_[k] = planarity_.judgeable(k);
+  }
+  // Touching candidates judged as one surface (as at the end for the planes, FacetPairs): the
+  // facets of one curved body are curved together, although each alone may pass.
+  facets_.resize(candidates);
+  for (std::size_t k = 0; k < candidates; ++k)
+    facets_[k].criterion = planeCriterion(fits_[k], block_tolerances, block_grid.pitch);
+  identity_.resize(candidates + 1);
+  for (std::uint32_t k = 0; k <= candidates; ++k) identity_[k] = k;
+  facet_pairs_.find(block_grid.points, {candidate_of_block_.data(), identity_.data()}, facets_, fits_, judgeable_);
+  for (const auto& [k, l] : facet_pairs_.pairs()) {
+    if (curved_[k] && curved_[l]) continue;
+    PlaneSums joint = cluster_sums_[static_cast<std::size_t>(candidate_root_[k - 1])];
+    joint.merge(cluster_sums_[static_cast<std::size_t>(candidate_root_[l - 1])]);
+    if (planarity_.curvedPair(k, l, joint.fit(), block_tolerances)) curved_[k] = curved_[l] = true;
+  }
+  std::vector<std::int32_t> plane_of_candidate(candidates + 1, 0);
+  for (std::uint32_t k = 1; k <= candidates; ++k) {
+    if (curved_[k]) continue;
     planes_.emplace_back();
     plane_of_candidate[k] = static_cast<std::int32_t>(planes_.size());
   }
   for (std::size_t r = 1; r < segment_count; ++r)
     if (plane_of_root_[r] != 0) plane_of_root_[r] = plane_of_candidate[static_cast<std::size_t>(plane_of_root_[r])];
+  inner_plane_.assign(means.size(), 0);
   if (planes_.empty()) return;
 
-  inner_plane_.assign(means.size(), 0);
   // The inner blocks: all eight neighbours of the same cluster (or without a measured pixel,
   // or beyond the frame's edge), one surface, within the band of their own segment's plane.
   const int width = means.width, height = means.height;
   const std::vector<Segment>& segments = coarse.segments();
   for (int by = 0; by < height; ++by) {
     for (int bx = 0; bx < width; ++bx) {
-      const std::size_t i = static_cast<std::size_t>(by) * static_cast<std::size_t>(width) + static_cast<std::size_t>(bx);
+      const std::size_t i =
+          static_cast<std::size_t>(by) * static_cast<std::size_t>(width) + static_cast<std::size_t>(bx);
       const std::int32_t r = root(i);
       if (r == 0 || blocks.count(i) == 0 || blocks.split(i)) continue;
       const std::int32_t k = plane_of_root_[static_cast<std::size_t>(r)];
@@ -100,7 +125,8 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodPass& coarse, const 
         for (int dx = -1; dx <= 1 && inside; ++dx) {
           const int x = bx + dx, y = by + dy;
           if (x < 0 || y < 0 || x >= width || y >= height) continue;
-          const std::size_t j = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+          const std::size_t j =
+              static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
           if (blocks.count(j) == 0) continue;
           if (blocks.split(j)) {
             inside = false;
@@ -170,7 +196,8 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
   // between them, which would have noted the pair for merging.
   for (int by = 0; by < block_height; ++by) {
     for (int bx = 0; bx < block_width; ++bx) {
-      const std::size_t i = static_cast<std::size_t>(by) * static_cast<std::size_t>(block_width) + static_cast<std::size_t>(bx);
+      const std::size_t i =
+          static_cast<std::size_t>(by) * static_cast<std::size_t>(block_width) + static_cast<std::size_t>(bx);
       const std::int32_t k = inner_plane_[i];
       if (k == 0 || labels_[static_cast<std::size_t>(k - 1)] == 0) continue;
       const std::int32_t right = bx + 1 < block_width ? inner_plane_[i + 1] : 0;

@@ -7,11 +7,13 @@
 #include <vector>
 
 #include "floodplane/params.h"
+#include "models/facet_pairs.h"
 #include "models/planarity_test.h"
 #include "models/plane_sums.h"
 #include "stages/block_grid.h"
 #include "stages/flood_pass.h"
 #include "stages/hole_filling.h"
+#include "stages/plane_candidates.h"
 #include "stages/tolerances.h"
 
 namespace floodplane {
@@ -35,11 +37,11 @@ namespace floodplane {
 /// the block fails that and leaves the block to the fine pass.
 class CoarsePlanes {
  public:
-  /// Finds the coarse planes among the clusters `merged` of the coarse pass `coarse` over the
-  /// block means of `blocks`. `block_tolerances` describe the means' noise, `pixel_tolerances`
-  /// the measured pixels'.
-  void find(const BlockGrid& blocks, const FloodPass& coarse, const MergedSegments& merged, const Params& params,
-            const Tolerances& block_tolerances, const Tolerances& pixel_tolerances);
+  /// Finds the coarse planes among the clusters `merged` of the coarse pass `coarse` over
+  /// `block_grid`, the means of `blocks` (its tolerances: the means' noise).
+  /// `pixel_tolerances` describe the measured pixels' noise.
+  void find(const BlockGrid& blocks, const FloodGrid& block_grid, const FloodPass& coarse, const MergedSegments& merged,
+            const Params& params, const Tolerances& pixel_tolerances);
   /// Gives the pixels of every inner block to the fine pass `fine` over `pixels` (the frame at
   /// full resolution): a segment per coarse plane, whose sums are those of its inner blocks'
   /// means (as if each of its measured pixels were there: their scatter is then about that of
@@ -51,8 +53,7 @@ class CoarsePlanes {
   /// before any seed of the fine pass, as a plane grown from one seed at s = 1 would have taken
   /// them first. Returns the number of pixels given.
   std::size_t claim(const BlockGrid& blocks, const PointGrid& pixels, const HoleFilling& holes,
-                    const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine,
-                    SegmentationStats& stats);
+                    const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine, SegmentationStats& stats);
 
   /// The number of coarse planes.
   std::size_t size() const { return planes_.size(); }
@@ -67,14 +68,19 @@ class CoarsePlanes {
                          const Tolerances& pixel_tolerances);
 
   std::vector<Plane> planes_;
-  std::vector<std::int32_t> inner_plane_;  // per block: the plane it is inside of + 1, 0 none
-  std::vector<std::int32_t> labels_;       // per plane: its segment in the fine pass
-  std::vector<std::size_t> starts_;        // claim()'s scratch
+  std::vector<std::int32_t> inner_plane_;    // per block: the plane it is inside of + 1, 0 none
+  std::vector<std::int32_t> labels_;         // per plane: its segment in the fine pass
+  std::vector<std::size_t> starts_;          // claim()'s scratch
   std::vector<std::int32_t> plane_of_root_;  // per coarse segment (a cluster's root): its plane + 1, 0 none
   std::vector<PlaneSums> cluster_sums_;      // per root: the sums of its blocks' means, one each
   std::vector<std::uint32_t> block_counts_;  // per root: its blocks
   PlanarityTest planarity_;
-  std::vector<PlaneFit> fits_;
+  std::vector<PlaneFit> fits_;                // per candidate (a cluster large enough, a plane)
+  std::vector<std::int32_t> candidate_root_;  // per candidate: its cluster's root segment
+  std::vector<bool> curved_, judgeable_;      // per candidate number (1-based)
+  std::vector<std::uint32_t> candidate_of_block_, identity_;
+  std::vector<PlaneCandidate> facets_;  // FacetPairs' view of the candidates
+  FacetPairs facet_pairs_;
 };
 
 }  // namespace floodplane

@@ -97,9 +97,7 @@ void FloodPass::seedAndFlood(bool timed, SegmentationStats& stats, PhaseTimes& p
   }
 }
 
-void FloodPass::relabel() {
-  relabelling_.run(grid_->points, grid_->factor, buffer_.labels(), segments_, edges_);
-}
+void FloodPass::relabel() { relabelling_.run(grid_->points, grid_->factor, buffer_.labels(), segments_, edges_); }
 
 MergedSegments FloodPass::merge(const MergeCriterion& criterion) {
   const std::vector<std::int32_t>& labels = buffer_.labels();

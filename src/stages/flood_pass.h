@@ -61,7 +61,9 @@ class FloodPass {
   /// Notes that segments a and b touch (the merge tests them).
   void addEdge(std::int32_t a, std::int32_t b) { edges_.emplace_back(a, b); }
   /// Adds `sums` to those of segment `label`.
-  void addToSums(std::int32_t label, const PlaneSums& sums) { segments_[static_cast<std::size_t>(label)].sums.merge(sums); }
+  void addToSums(std::int32_t label, const PlaneSums& sums) {
+    segments_[static_cast<std::size_t>(label)].sums.merge(sums);
+  }
   /// Seeds and floods every unclaimed point, in scan order; counts seeds, candidates and
   /// takeovers in `stats`, and the time of the floods and of the seeds into `phases` when
   /// `timed`.

@@ -63,8 +63,10 @@ void RegionBuilder::write(const PreparedFrame& frame, Segmentation& out) {
   out.width = frame.measured.width;
   out.height = frame.measured.height;
   // A plane's centroid, covariance and fit are those of its inliers as the caller measured
-  // them, not as they were smoothed for segmenting.
-  if (frame.measured.data != frame.grid.data) sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
+  // them, not as they were smoothed for segmenting, nor the block means that stood for the
+  // pixels of a coarse plane (s > 1).
+  if (frame.measured.data != frame.grid.data || frame.blocks)
+    sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
   candidates_.applyRenumbering(out.labels);
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
@@ -173,20 +175,20 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
   // Run by run along each row (labels come in long runs): a run's plane and lattice are looked
   // up once. Points are added in raster order of the grid.
   for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
-      const std::size_t row = y * width;
-      forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
-        const std::uint32_t k = labels.number[image_label];
-        if (k == 0 || y % strides_[k] != 0) return;
-        const std::uint32_t s = strides_[k];
-        // The first column of the run on the plane's lattice.
-        const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
-        for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
-          const std::size_t i = row + u;
-          if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-            test.add(k, Vec3::load(grid.point(i)));
-        }
-      });
-    }
+    const std::size_t row = y * width;
+    forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
+      const std::uint32_t k = labels.number[image_label];
+      if (k == 0 || y % strides_[k] != 0) return;
+      const std::uint32_t s = strides_[k];
+      // The first column of the run on the plane's lattice.
+      const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
+      for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
+        const std::size_t i = row + u;
+        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
+          test.add(k, Vec3::load(grid.point(i)));
+      }
+    });
+  }
 }
 
 bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const RenumberedLabels& labels) {

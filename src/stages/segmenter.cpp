@@ -170,8 +170,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     PhaseTimer timer(timed, result_.phases.merging);
     ws.coarse.relabel();
     const MergedSegments clusters = ws.coarse.merge(MergeCriterion(params_, frame.coarse.tolerances));
-    ws.coarse_planes.find(*frame.blocks, ws.coarse, clusters, params_, frame.coarse.tolerances,
-                          frame.pixel_tolerances);
+    ws.coarse_planes.find(*frame.blocks, frame.coarse, ws.coarse, clusters, params_, frame.pixel_tolerances);
   }
   ws.fine.begin(ws.fine_grid, params_);
   if (frame.blocks)

@@ -55,9 +55,7 @@ struct Frame {
     for (PlaneCandidate& plane : planes.list()) plane.criterion = planeCriterion(plane.sums.fit(), tolerances, kPitch);
   }
 
-  void refine(bool renumber_first = false) {
-    refinePlanes(grid.grid(), holes, nullptr, labels, planes, renumber_first, queue);
-  }
+  void refine(bool renumber_first = false) { refinePlanes(grid.grid(), holes, labels, planes, renumber_first, queue); }
 
   std::vector<std::string> art() const {
     std::vector<std::string> rows;
@@ -249,7 +247,7 @@ TEST(Refinement, NeverLabelsFilledInHoles) {
     }
   planes[1].criterion = planeCriterion(planes[1].sums.fit(), tolerances, kPitch);
   std::vector<std::size_t> queue;
-  refinePlanes(full, holes, nullptr, labels, planes, false, queue);
+  refinePlanes(full, holes, labels, planes, false, queue);
   std::size_t labelled = 0, measured_points = 0, filled = 0;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (holes.isFilled(i)) {

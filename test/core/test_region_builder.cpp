@@ -1,10 +1,10 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // The last stage: from merged segments to the planes a user gets. Clusters smaller than
-// min_inliers (counted at full resolution) are dropped, planes are numbered by size (largest
-// first, 1..K), labels come back at full resolution after sub-sampling, pixel by pixel, and the
-// fits are those of the caller's measured points. Hand-made segment images over pinhole grids
-// of frontal planes at different depths.
+// min_inliers are dropped, planes are numbered by size (largest first, 1..K), and the fits are
+// those of the caller's measured points. Hand-made segment images over pinhole grids of frontal
+// planes at different depths. (Sub-sampling: the coarse pass only claims pixels before the fine
+// pass, which is what this stage sees: test_coarse_planes.cpp, test_segmenter.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,14 +26,11 @@ constexpr float kPitch = static_cast<float>(1.0 / kFocal);
 
 using Grid = test::PinholeGrid;
 
-// What the merging hands over: a frame, the grid that was segmented (s = 1: the frame; s > 1:
-// the means of its s x s blocks, as the segmenter reads them), a segment per point of that grid
-// (the segment of its pixels, none where they differ), each segment its own cluster
-// unless `root` says otherwise, and each root's sums over its cluster's points.
+// What the merging hands over: a frame, the grid that was segmented (the frame), a segment per
+// point, each segment its own cluster unless `root` says otherwise, and each root's sums over
+// its cluster's points.
 struct Merged {
   Grid full;
-  int s;
-  BlockGrid blocks;
   PointGrid segmented;
   std::vector<std::int32_t> labels;
   std::vector<std::int32_t> root;
@@ -43,33 +40,17 @@ struct Merged {
   RegionBuilder builder;
   Segmentation out;
 
-  Merged(Grid frame, int subsampling, const std::function<std::int32_t(int, int)>& segment,
-         std::uint32_t min_inliers = 1)
-      : full(std::move(frame)), s(subsampling) {
+  Merged(Grid frame, const std::function<std::int32_t(int, int)>& segment, std::uint32_t min_inliers = 1)
+      : full(std::move(frame)) {
     params.distance_threshold = 0.01;
     params.merge_distance = 0.03;
     params.depth_noise_coefficient = 0.0;
     params.min_inliers = min_inliers;
-    params.subsampling = s;
     segmented = full.grid();
-    if (s > 1) {
-      blocks.read(full.grid(), s);
-      blocks.separateSurfaces(full.grid(), NoiseModel(), kPitch);  // exact data
-      segmented = blocks.means();
-    }
-    // A block takes the segment of its pixels where they all have one, none where it straddles
-    // two (as a flood leaves the block whose mean lies between two surfaces).
-    const auto blockSegment = [&](int gx, int gy) {
-      const std::int32_t first = segment(gx * s, gy * s);
-      for (int v = gy * s; v < std::min(gy * s + s, full.height); ++v)
-        for (int u = gx * s; u < std::min(gx * s + s, full.width); ++u)
-          if (segment(u, v) != first) return 0;
-      return first;
-    };
     std::int32_t count = 1;
-    for (int gy = 0; gy < segmented.height; ++gy)
-      for (int gx = 0; gx < segmented.width; ++gx) {
-        labels.push_back(blockSegment(gx, gy));
+    for (int v = 0; v < segmented.height; ++v)
+      for (int u = 0; u < segmented.width; ++u) {
+        labels.push_back(segment(u, v));
         count = std::max(count, labels.back() + 1);
       }
     root.resize(static_cast<std::size_t>(count));
@@ -94,15 +75,12 @@ struct Merged {
     PreparedFrame frame;
     frame.measured = measured;
     frame.grid = segmented;
-    frame.subsampling = s;
-    frame.full_pitch = kPitch;
-    frame.pitch = kPitch * static_cast<float>(s);
+    frame.pitch = kPitch;
     frame.tolerances = Tolerances(params, {}, frame.pitch, full.data.size() / full.stride);
-    frame.pixel_tolerances = Tolerances(params, {}, kPitch, full.data.size() / full.stride);
+    frame.pixel_tolerances = frame.tolerances;
     frame.holes = &holes;
-    frame.blocks = s > 1 ? &blocks : nullptr;
     builder.assemble(frame, merged, params, refine, out);
-    builder.write(frame, params, out);
+    builder.write(frame, out);
     return out;
   }
 
@@ -120,7 +98,7 @@ double bands(int u, int) { return u < 5 ? 2.0 : u < 20 ? 2.5 : 3.0; }
 std::int32_t bandSegments(int u, int) { return u < 5 ? 1 : u < 20 ? 2 : 3; }
 
 TEST(RegionBuilder, NumbersThePlanesBySizeLargestFirst) {
-  Merged m(Grid(30, 12, bands), 1, bandSegments);
+  Merged m(Grid(30, 12, bands), bandSegments);
   const Segmentation& out = m.build();
   EXPECT_EQ(out.width, 30);
   EXPECT_EQ(out.height, 12);
@@ -143,10 +121,10 @@ TEST(RegionBuilder, NumbersThePlanesBySizeLargestFirst) {
 
 TEST(RegionBuilder, DropsPlanesBelowMinInliers) {
   // 60 pixels is enough for min_inliers 60 ...
-  Merged enough(Grid(30, 12, bands), 1, bandSegments, 60);
+  Merged enough(Grid(30, 12, bands), bandSegments, 60);
   EXPECT_EQ(enough.build().planes.size(), 3u);
   // ... and one too few for 61: the smallest band goes, its pixels unlabelled.
-  Merged too_few(Grid(30, 12, bands), 1, bandSegments, 61);
+  Merged too_few(Grid(30, 12, bands), bandSegments, 61);
   const Segmentation& out = too_few.build();
   ASSERT_EQ(out.planes.size(), 2u);
   EXPECT_EQ(out.planes[0].inlier_count, 180u);
@@ -160,7 +138,7 @@ TEST(RegionBuilder, DropsPlanesBelowMinInliers) {
 TEST(RegionBuilder, ReportsAMergedClusterAsOnePlane) {
   // Segments 1 and 2 are two halves of one wall that merged; 3 is a plane in front.
   const auto depth = [](int u, int) { return u < 20 ? 3.0 : 2.0; };
-  Merged m(Grid(30, 10, depth), 1, [](int u, int) { return u < 10 ? 1 : u < 20 ? 2 : 3; });
+  Merged m(Grid(30, 10, depth), [](int u, int) { return u < 10 ? 1 : u < 20 ? 2 : 3; });
   m.mergeInto(1, 2);
   const Segmentation& out = m.build();
   ASSERT_EQ(out.planes.size(), 2u);
@@ -173,73 +151,16 @@ TEST(RegionBuilder, ReportsAMergedClusterAsOnePlane) {
 }
 
 TEST(RegionBuilder, GivesAnUnsegmentedPixelNoLabel) {
-  Merged m(Grid(30, 12, bands), 1, [](int u, int v) { return v == 3 && u == 25 ? 0 : bandSegments(u, v); });
+  Merged m(Grid(30, 12, bands), [](int u, int v) { return v == 3 && u == 25 ? 0 : bandSegments(u, v); });
   const Segmentation& out = m.build();
   EXPECT_EQ(m.label(25, 3), 0u);
   EXPECT_EQ(out.planes[1].inlier_count, 119u);
 }
 
-// Every pixel of a frame of three bands, sub-sampled by s, has its band's plane.
-void expectBandsAtFullResolution(int width, int height, int s, std::size_t stride) {
-  SCOPED_TRACE(::testing::Message() << width << " x " << height << ", s = " << s << ", stride " << stride);
-  // Band edges between samples: columns 7 and 19.
-  const auto depth = [](int u, int) { return u < 7 ? 2.0 : u < 19 ? 2.5 : 3.0; };
-  const auto band = [](int u, int) -> std::int32_t { return u < 7 ? 1 : u < 19 ? 2 : 3; };
-  Merged m(Grid(width, height, depth, stride), s, band);
-  const Segmentation& out = m.build();
-  ASSERT_EQ(out.width, width);
-  ASSERT_EQ(out.height, height);
-  ASSERT_EQ(out.labels.size(), static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  ASSERT_EQ(out.planes.size(), 3u);
-  // Numbered by their full-resolution sizes: 12, 7 and width - 19 columns.
-  const bool third_largest = width - 19 > 12;
-  const std::uint32_t numbers[4] = {0, 3u, third_largest ? 2u : 1u, third_largest ? 1u : 2u};
-  for (int v = 0; v < height; ++v)
-    for (int u = 0; u < width; ++u) ASSERT_EQ(m.label(u, v), numbers[band(u, v)]) << "pixel " << u << ", " << v;
-  for (std::int32_t b = 1; b <= 3; ++b) {
-    const int columns = b == 1 ? 7 : b == 2 ? 12 : width - 19;
-    EXPECT_EQ(out.planes[numbers[b] - 1].inlier_count, static_cast<std::uint32_t>(columns * height)) << "band " << b;
-  }
-  EXPECT_EQ(out.planes[numbers[1] - 1].first_pixel, 0u);
-  EXPECT_EQ(out.planes[numbers[2] - 1].first_pixel, 7u);
-  EXPECT_EQ(out.planes[numbers[3] - 1].first_pixel, 19u);
-}
-
-TEST(RegionBuilder, ReturnsLabelsAtFullResolutionAfterSubsampling) {
-  for (const int s : {2, 4})
-    for (const std::size_t stride : {3u, 4u}) {  // four floats a point: four pixels at a time
-      expectBandsAtFullResolution(32, 16, s, stride);
-      expectBandsAtFullResolution(30, 13, s, stride);  // sizes that are no multiple of s
-      expectBandsAtFullResolution(41, 9, s, stride);
-    }
-}
-
-TEST(RegionBuilder, CountsMinInliersAtFullResolutionWhenSubsampled) {
-  // The 2 m band has 60 pixels but 18 samples: it is kept for min_inliers 60, not for 61.
-  Merged kept(Grid(30, 12, bands), 2, bandSegments, 60);
-  ASSERT_EQ(kept.build().planes.size(), 3u);
-  EXPECT_EQ(kept.out.planes[2].inlier_count, 60u);
-  Merged dropped(Grid(30, 12, bands), 2, bandSegments, 61);
-  ASSERT_EQ(dropped.build().planes.size(), 2u);
-  EXPECT_EQ(dropped.label(1, 1), 0u);
-}
-
-TEST(RegionBuilder, LeavesAFullResolutionPixelThatFitsNoPlaneUnlabelled) {
-  // Pixel (11, 5) lies between samples, 30 cm in front of the plane around it.
-  const auto depth = [](int u, int v) { return u == 11 && v == 5 ? 2.2 : bands(u, v); };
-  for (const std::size_t stride : {3u, 4u}) {
-    Merged m(Grid(30, 12, depth, stride), 2, bandSegments);
-    const Segmentation& out = m.build();
-    EXPECT_EQ(m.label(11, 5), 0u) << "stride " << stride;
-    EXPECT_EQ(m.label(11, 4), 1u) << "stride " << stride;
-    EXPECT_EQ(out.planes[0].inlier_count, 179u) << "stride " << stride;
-  }
-}
-
 TEST(RegionBuilder, FitsThePlanesToTheMeasuredPoints) {
   // The caller's points are 1 mm behind the smoothed ones that were segmented.
   const Grid measured(30, 12, [](int u, int v) { return bands(u, v) + 0.001; });
-  Merged m(Grid(30, 12, bands), 1, bandSegments);
+  Merged m(Grid(30, 12, bands), bandSegments);
   const Segmentation& out = m.buildWith(measured.grid());
   ASSERT_EQ(out.planes.size(), 3u);
   EXPECT_NEAR(out.planes[0].fit.offset, 2.501, 1e-5);
@@ -252,7 +173,7 @@ TEST(RegionBuilder, RefinesIntoUnsegmentedPixelsAndNumbersByTheNewSizes) {
   // it is the largest.
   const auto depth = [](int u, int) { return u < 25 ? 2.0 : 2.5; };
   const auto segment = [](int u, int) { return u < 5 ? 1 : u < 25 ? 0 : 2; };
-  Merged m(Grid(40, 6, depth), 1, segment);
+  Merged m(Grid(40, 6, depth), segment);
   const Segmentation& plain = m.build(false);
   ASSERT_EQ(plain.planes.size(), 2u);
   EXPECT_EQ(plain.planes[0].inlier_count, 90u);
@@ -272,7 +193,7 @@ TEST(RegionBuilder, JoinsPiecesOfAWallSeenAroundAnOccluder) {
   // Two segments of a wall at 3 m that did not merge (they do not touch), a column at 2 m
   // between them (no plane: no segment): one plane.
   const auto segment = [](int u, int) { return u < 10 ? 1 : u < 20 ? 0 : 2; };
-  Merged occluded(Grid(30, 8, [](int u, int) { return u >= 10 && u < 20 ? 2.0 : 3.0; }), 1, segment);
+  Merged occluded(Grid(30, 8, [](int u, int) { return u >= 10 && u < 20 ? 2.0 : 3.0; }), segment);
   const Segmentation& out = occluded.build();
   ASSERT_EQ(out.planes.size(), 1u);
   EXPECT_EQ(out.planes[0].inlier_count, 160u);
@@ -280,14 +201,14 @@ TEST(RegionBuilder, JoinsPiecesOfAWallSeenAroundAnOccluder) {
   EXPECT_EQ(occluded.label(0, 0), 1u);
   EXPECT_EQ(occluded.label(29, 7), 1u);
   // With the floor seen between them (behind the wall's plane) they stay two.
-  Merged apart(Grid(30, 8, [](int u, int) { return u >= 10 && u < 20 ? 4.0 : 3.0; }), 1, segment);
+  Merged apart(Grid(30, 8, [](int u, int) { return u >= 10 && u < 20 ? 4.0 : 3.0; }), segment);
   EXPECT_EQ(apart.build().planes.size(), 2u);
   EXPECT_EQ(apart.label(0, 0), 1u);
   EXPECT_EQ(apart.label(29, 7), 2u);
 }
 
 TEST(RegionBuilder, GivesEmptyOutputsForAnEmptyFrame) {
-  Merged m(Grid(0, 0, bands), 1, bandSegments);
+  Merged m(Grid(0, 0, bands), bandSegments);
   const Segmentation& out = m.build();
   EXPECT_EQ(out.width, 0);
   EXPECT_EQ(out.height, 0);
@@ -296,19 +217,17 @@ TEST(RegionBuilder, GivesEmptyOutputsForAnEmptyFrame) {
 }
 
 TEST(RegionBuilder, LabelsNothingInAFrameWithoutReturns) {
-  for (const int s : {1, 2}) {
-    Merged m(Grid(
-                 17, 9, [](int, int) { return kNaN; }, 4),
-             s, [](int, int) { return 0; });
-    const Segmentation& out = m.build(true);
-    ASSERT_EQ(out.labels.size(), 153u) << "s = " << s;
-    for (const std::uint32_t l : out.labels) EXPECT_EQ(l, 0u);
-    EXPECT_TRUE(out.planes.empty());
-  }
+  Merged m(Grid(
+               17, 9, [](int, int) { return kNaN; }, 4),
+           [](int, int) { return 0; });
+  const Segmentation& out = m.build(true);
+  ASSERT_EQ(out.labels.size(), 153u);
+  for (const std::uint32_t l : out.labels) EXPECT_EQ(l, 0u);
+  EXPECT_TRUE(out.planes.empty());
 }
 
 TEST(RegionBuilder, ReportsNoPlaneOfFewerThanThreePoints) {
-  Merged one(Grid(1, 1, bands), 1, [](int, int) { return 1; });
+  Merged one(Grid(1, 1, bands), [](int, int) { return 1; });
   const Segmentation& out = one.build(true);
   ASSERT_EQ(out.labels.size(), 1u);
   EXPECT_EQ(out.labels[0], 0u);
@@ -316,7 +235,7 @@ TEST(RegionBuilder, ReportsNoPlaneOfFewerThanThreePoints) {
 }
 
 TEST(RegionBuilder, GivesTheSameResultForTheSameFrameAgain) {
-  Merged m(Grid(30, 12, bands), 2, bandSegments);
+  Merged m(Grid(30, 12, bands), bandSegments);
   const std::vector<std::uint32_t> first = m.build(true).labels;
   const std::size_t planes = m.out.planes.size();
   EXPECT_EQ(m.build(true).labels, first);
