@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "models/depth_noise.h"
 #include "stages/plane_candidates.h"
@@ -15,6 +16,9 @@ namespace {
 // A coarse plane has at least this many blocks: fewer have no block inside them (a block
 // with its eight neighbours is 3 x 3).
 constexpr std::uint32_t kSmallestCluster = 9;
+// A pocket of more blocks than this is left to the fine pass: a large patch that is not inside
+// the plane around it is another surface (an object on a table, a picture on a wall).
+constexpr std::size_t kLargestPocket = 16;
 
 }  // namespace
 
@@ -104,9 +108,8 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, co
     if (plane_of_root_[r] != 0) plane_of_root_[r] = plane_of_candidate[static_cast<std::size_t>(plane_of_root_[r])];
   inner_plane_.assign(means.size(), 0);
   if (planes_.empty()) return;
-
-  // The inner blocks: all eight neighbours of the same cluster (or without a measured pixel,
-  // or beyond the frame's edge), one surface, within the band of their own segment's plane.
+  // The inner blocks: one surface with their eight neighbours (or without a measured pixel, or
+  // beyond the frame's edge), their pixels within the noise band of that surface.
   const int width = means.width, height = means.height;
   const std::vector<Segment>& segments = coarse.segments();
   for (int by = 0; by < height; ++by) {
@@ -117,8 +120,9 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, co
       if (r == 0 || blocks.count(i) == 0 || blocks.split(i)) continue;
       const std::int32_t k = plane_of_root_[static_cast<std::size_t>(r)];
       if (k == 0) continue;
-      // Its segment's plane, and its mean and its neighbours' within that plane's band at the
-      // means' noise (Eq. 2 of the coarse pass): the surface goes on around the block.
+      // Its segment's plane: its neighbours' means lie within that plane's band at the means'
+      // noise (Eq. 2 of the coarse pass), so that the surface goes on around the block, and its
+      // own pixels within the pixels' band on average.
       const FloodCriterion& own = segments[static_cast<std::size_t>(merged.labels[i])].criterion;
       bool inside = true;
       for (int dy = -1; dy <= 1 && inside; ++dy) {
@@ -130,8 +134,7 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, co
           if (blocks.count(j) == 0) continue;
           if (blocks.split(j)) {
             inside = false;
-          } else if (merged.labels[j] != merged.labels[i]) {
-            // (A neighbour of the same segment passed its flood's test already.)
+          } else {
             const Vec3 mean = Vec3::load(means.point(j));
             float distance = 0.f;
             inside = own.fitsPlane(mean, mean.squaredNorm(), distance);
@@ -207,6 +210,7 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
           fine.addEdge(labels_[static_cast<std::size_t>(k - 1)], labels_[static_cast<std::size_t>(l - 1)]);
     }
   }
+  fillPockets(blocks, pixels, fine_tolerances, pixel_pitch, fine, stats);
   // Each plane's inner blocks along their edge (a side whose neighbour is not inside the same
   // plane): the pixels of that side start its flood into the pixels around.
   for (std::size_t k = 0; k < planes_.size(); ++k) {
@@ -239,9 +243,97 @@ std::size_t CoarsePlanes::claim(const BlockGrid& blocks, const PointGrid& pixels
       if (v1 + 1 < pixels.height && !inside(bx, by + 1))
         for (int u = u0; u <= u1; ++u) add(u, v1, 0, 1);
     }
-    fine.extend(labels_[k], starts_, stats);
+    fine.extend(labels_[k], starts_, fine.segments()[static_cast<std::size_t>(labels_[k])].criterion, stats);
   }
   return claimed;
+}
+
+void CoarsePlanes::fillPockets(const BlockGrid& blocks, const PointGrid& pixels, const Tolerances& fine_tolerances,
+                               float pixel_pitch, FloodPass& fine, SegmentationStats& stats) {
+  const int s = blocks.factor();
+  const int block_width = blocks.means().width, block_height = blocks.means().height;
+  const std::size_t width = static_cast<std::size_t>(pixels.width);
+  const auto block = [&](int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(block_width) + static_cast<std::size_t>(x);
+  };
+  const auto pixel = [&](int u, int v) { return static_cast<std::size_t>(v) * width + static_cast<std::size_t>(u); };
+  pocket_mark_.assign(inner_plane_.size(), 0);
+  const std::vector<std::int32_t>& claimed_by = fine.labels();
+  for (int by = 0; by < block_height; ++by) {
+    for (int bx = 0; bx < block_width; ++bx) {
+      const std::size_t first = block(bx, by);
+      if (inner_plane_[first] != 0 || pocket_mark_[first] != 0 || blocks.count(first) == 0) continue;
+      // The blocks of one pocket (4-connected blocks with measured pixels, none inside a plane)
+      // and the one plane around it, if there is one: -1 where the pocket touches the frame's
+      // edge or another plane's inside. A block without a measured pixel is no way out.
+      pocket_.assign(1, first);
+      pocket_mark_[first] = 1;
+      std::int32_t around = 0;
+      for (std::size_t next = 0; next < pocket_.size(); ++next) {
+        const int x = static_cast<int>(pocket_[next] % static_cast<std::size_t>(block_width));
+        const int y = static_cast<int>(pocket_[next] / static_cast<std::size_t>(block_width));
+        const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+        for (const auto& [nx, ny] : neighbours) {
+          if (nx < 0 || ny < 0 || nx >= block_width || ny >= block_height) {
+            around = -1;
+            continue;
+          }
+          const std::size_t j = block(nx, ny);
+          const std::int32_t k = inner_plane_[j];
+          if (k != 0) {
+            around = around == 0 || around == k ? k : -1;
+          } else if (blocks.count(j) != 0 && pocket_mark_[j] == 0) {
+            pocket_mark_[j] = 1;
+            pocket_.push_back(j);
+          }
+        }
+      }
+      if (around <= 0 || pocket_.size() > kLargestPocket || labels_[static_cast<std::size_t>(around - 1)] == 0)
+        continue;
+      // The plane's inner blocks around the pocket (eight-neighbours of its blocks): their means
+      // give the plane where the pocket is, and their sides on the pocket start its flood.
+      PlaneSums local;
+      starts_.clear();
+      const std::int32_t label = labels_[static_cast<std::size_t>(around - 1)];
+      for (const std::size_t i : pocket_) {
+        const int x = static_cast<int>(i % static_cast<std::size_t>(block_width));
+        const int y = static_cast<int>(i / static_cast<std::size_t>(block_width));
+        for (int ny = y - 1; ny <= y + 1; ++ny)
+          for (int nx = x - 1; nx <= x + 1; ++nx) {
+            if (nx < 0 || ny < 0 || nx >= block_width || ny >= block_height) continue;
+            const std::size_t j = block(nx, ny);
+            if (inner_plane_[j] != around || pocket_mark_[j] == 2) continue;
+            pocket_mark_[j] = 2;  // counted once
+            blocks.addMeanTo(j, local);
+          }
+        // The pixels along the pocket block's edge, inside, whose neighbour outside is the
+        // plane's: the fill starts from the plane's pixel next to each.
+        const int u0 = blocks.firstColumn(x), v0 = blocks.firstRow(y);
+        const int u1 = std::min(u0 + s, pixels.width) - 1, v1 = std::min(v0 + s, pixels.height) - 1;
+        const auto add = [&](int u, int v) {
+          if (claimed_by[pixel(u, v)] == label) starts_.push_back(pixel(u, v));
+        };
+        for (int v = v0; v <= v1; ++v) {
+          if (u0 > 0) add(u0 - 1, v);
+          if (u1 + 1 < pixels.width) add(u1 + 1, v);
+        }
+        for (int u = u0; u <= u1; ++u) {
+          if (v0 > 0) add(u, v0 - 1);
+          if (v1 + 1 < pixels.height) add(u, v1 + 1);
+        }
+      }
+      for (const std::size_t i : pocket_)
+        for (int ny = static_cast<int>(i / static_cast<std::size_t>(block_width)) - 1;
+             ny <= static_cast<int>(i / static_cast<std::size_t>(block_width)) + 1; ++ny)
+          for (int nx = static_cast<int>(i % static_cast<std::size_t>(block_width)) - 1;
+               nx <= static_cast<int>(i % static_cast<std::size_t>(block_width)) + 1; ++nx)
+            if (nx >= 0 && ny >= 0 && nx < block_width && ny < block_height && pocket_mark_[block(nx, ny)] == 2)
+              pocket_mark_[block(nx, ny)] = 0;
+      const PlaneFit fit = local.fit();
+      if (!(normalUncertainty(fit, local.count) < std::numeric_limits<double>::infinity())) continue;
+      fine.extend(label, starts_, planeCriterion(fit, fine_tolerances, pixel_pitch), stats);
+    }
+  }
 }
 
 }  // namespace floodplane

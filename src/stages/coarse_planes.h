@@ -63,6 +63,12 @@ class CoarsePlanes {
     PlaneSums sums;                  // of its inner blocks' means, each counted once per pixel
     std::vector<std::size_t> inner;  // its inner blocks
   };
+  // The pockets: a few blocks that are not inside a plane (a bump, a patch where the sensor's
+  // noise is larger, or where a big plane bends away from its fit) with one plane's inside all
+  // around them. The plane floods into each with the plane of its inner blocks around it, which
+  // follows a bend the whole plane's fit does not; the pocket's closed, so it cannot run off.
+  void fillPockets(const BlockGrid& blocks, const PointGrid& pixels, const Tolerances& fine_tolerances,
+                   float pixel_pitch, FloodPass& fine, SegmentationStats& stats);
   // Whether block i's pixels lie within the noise band of the plane (normal, offset) on average.
   static bool insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
                          const Tolerances& pixel_tolerances);
@@ -71,6 +77,8 @@ class CoarsePlanes {
   std::vector<std::int32_t> inner_plane_;    // per block: the plane it is inside of + 1, 0 none
   std::vector<std::int32_t> labels_;         // per plane: its segment in the fine pass
   std::vector<std::size_t> starts_;          // claim()'s scratch
+  std::vector<std::size_t> pocket_;          // fillPockets' scratch: the blocks of one pocket
+  std::vector<std::uint8_t> pocket_mark_;    // fillPockets' scratch: per block, 1 in a pocket, 2 around
   std::vector<std::int32_t> plane_of_root_;  // per coarse segment (a cluster's root): its plane + 1, 0 none
   std::vector<PlaneSums> cluster_sums_;      // per root: the sums of its blocks' means, one each
   std::vector<std::uint32_t> block_counts_;  // per root: its blocks

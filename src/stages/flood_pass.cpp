@@ -53,8 +53,10 @@ std::int32_t FloodPass::addSegment(const Segment& segment) {
   return static_cast<std::int32_t>(segments_.size() - 1);
 }
 
-void FloodPass::extend(std::int32_t label, const std::vector<std::size_t>& starts, SegmentationStats& stats) {
-  stats.pixels_taken_over += flood_.extend(grid_->points, starts, label, params_, buffer_, segments_, edges_);
+void FloodPass::extend(std::int32_t label, const std::vector<std::size_t>& starts, const FloodCriterion& criterion,
+                       SegmentationStats& stats) {
+  stats.pixels_taken_over +=
+      flood_.extend(grid_->points, starts, label, criterion, params_, buffer_, segments_, edges_);
 }
 
 void FloodPass::seedAndFlood(bool timed, SegmentationStats& stats, PhaseTimes& phases) {

@@ -56,8 +56,10 @@ class FloodPass {
   void claim(std::size_t pixel, std::int32_t label) { buffer_.claim(pixel, label, 0.0f); }
   /// claim() for the n pixels from `first` on.
   void claimRun(std::size_t first, std::size_t n, std::int32_t label) { buffer_.claimRun(first, n, label, 0.0f); }
-  /// Floods on from the claimed pixels `starts` of segment `label` (PlaneFlood::extend).
-  void extend(std::int32_t label, const std::vector<std::size_t>& starts, SegmentationStats& stats);
+  /// Floods on from the claimed pixels `starts` of segment `label` under `criterion`
+  /// (PlaneFlood::extend).
+  void extend(std::int32_t label, const std::vector<std::size_t>& starts, const FloodCriterion& criterion,
+              SegmentationStats& stats);
   /// Notes that segments a and b touch (the merge tests them).
   void addEdge(std::int32_t a, std::int32_t b) { edges_.emplace_back(a, b); }
   /// Adds `sums` to those of segment `label`.

@@ -21,10 +21,10 @@ constexpr int kBlock = 4;
 // The membership test of one flood, as spanFloodFill's visitor.
 class FloodVisitor {
  public:
-  FloodVisitor(const PointGrid& grid, std::int32_t label, DistanceBuffer& buffer, std::vector<Segment>& segments,
-               std::vector<std::pair<std::size_t, std::size_t>>& frontier, std::vector<std::int32_t>& neighbour_mark,
-               std::vector<SegmentEdge>& edges, std::size_t first_refit, double seed_uncertainty,
-               double angular_threshold)
+  FloodVisitor(const PointGrid& grid, std::int32_t label, const FloodCriterion& criterion, DistanceBuffer& buffer,
+               std::vector<Segment>& segments, std::vector<std::pair<std::size_t, std::size_t>>& frontier,
+               std::vector<std::int32_t>& neighbour_mark, std::vector<SegmentEdge>& edges, std::size_t first_refit,
+               double seed_uncertainty, double angular_threshold)
       : grid_(grid),
         blocks_(fourPixelsAtATime(grid)),
         label_(label),
@@ -36,7 +36,7 @@ class FloodVisitor {
         neighbour_mark_(neighbour_mark),
         edges_(edges),
         self_(segments[label]),
-        criterion_(segments[label].criterion),
+        criterion_(criterion),
         next_refit_(static_cast<double>(first_refit)),
         uncertainty_(seed_uncertainty),
         same_plane_cosine_(std::cos(static_cast<float>(angular_threshold))) {}
@@ -274,7 +274,7 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
 
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
-  FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
+  FloodVisitor visitor(grid, label, segment.criterion, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
                        std::max(static_cast<double>(seed.normal_uncertainty), 1e-4), params.angular_threshold);
   spanFloodFill(width, grid.height, seed_x, seed_y, visitor, shadows_);
 
@@ -296,12 +296,12 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
 }
 
 std::size_t PlaneFlood::extend(const PointGrid& grid, const std::vector<std::size_t>& starts, std::int32_t label,
-                               const Params& params, DistanceBuffer& buffer, std::vector<Segment>& segments,
-                               std::vector<SegmentEdge>& edges) {
+                               const FloodCriterion& criterion, const Params& params, DistanceBuffer& buffer,
+                               std::vector<Segment>& segments, std::vector<SegmentEdge>& edges) {
   if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
   frontier_.clear();
   // No refit: the first would come at twice the pixels the segment has.
-  FloodVisitor visitor(grid, label, buffer, segments, frontier_, neighbour_mark_, edges,
+  FloodVisitor visitor(grid, label, criterion, buffer, segments, frontier_, neighbour_mark_, edges,
                        std::numeric_limits<std::size_t>::max(), 0.0, params.angular_threshold);
   const std::size_t width = static_cast<std::size_t>(grid.width);
   const std::int32_t* labels = buffer.labels().data();

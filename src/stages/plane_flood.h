@@ -55,12 +55,13 @@ class PlaneFlood {
                    std::vector<SegmentEdge>& edges);
 
   /// Continues segment `label`, whose pixels `starts` are claimed already (a coarse plane's
-  /// inner blocks along their edge), into the pixels around them, with the segment's own
-  /// criterion and the tests of grow(). The plane is not refit: it is that of many pixels.
-  /// Returns the pixels it took from other segments under Eq. 4.
+  /// inner blocks along their edge), into the pixels around them, with the tests of grow()
+  /// under `criterion` (the plane where the starts are: a big plane bends). The plane is not
+  /// refit: it is that of many pixels. Returns the pixels it took from other segments under
+  /// Eq. 4.
   std::size_t extend(const PointGrid& grid, const std::vector<std::size_t>& starts, std::int32_t label,
-                     const Params& params, DistanceBuffer& buffer, std::vector<Segment>& segments,
-                     std::vector<SegmentEdge>& edges);
+                     const FloodCriterion& criterion, const Params& params, DistanceBuffer& buffer,
+                     std::vector<Segment>& segments, std::vector<SegmentEdge>& edges);
 
  private:
   std::vector<Shadow> shadows_;

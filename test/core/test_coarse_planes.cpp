@@ -112,8 +112,26 @@ TEST(CoarsePlanes, LeavesABoardInFrontOfAWallToTheFinePass) {
   EXPECT_LT(run.claimed, static_cast<std::size_t>(96 * 64 - 20 * 16));
 }
 
+TEST(CoarsePlanes, FloodsAPocketInsideAPlaneOnlyWhereItFits) {
+  // A 4 x 4 patch 5 cm (2.5 pixel footprints) in front of the wall (one block at s = 4, with the wall all around): the
+  // wall floods into the pocket with its plane there, and stops at the patch.
+  const auto depth = [](int u, int v) { return u >= 40 && u < 44 && v >= 28 && v < 32 ? 1.95 : 2.0; };
+  CoarseToFine run(Grid(96, 64, depth, 4), 4);
+  const std::int32_t wall_label = run.label(0, 0);
+  ASSERT_NE(wall_label, 0);
+  for (int v = 0; v < 64; ++v)
+    for (int u = 0; u < 96; ++u) {
+      if (depth(u, v) < 2.0)
+        EXPECT_NE(run.label(u, v), wall_label) << u << ", " << v;
+      else
+        EXPECT_EQ(run.label(u, v), wall_label) << u << ", " << v;
+    }
+}
+
 TEST(CoarsePlanes, GivesNoHoleOfTheFrameToAPlane) {
-  const auto depth = [](int u, int v) { return (u == 40 && v == 30) || (u >= 60 && u < 64 && v >= 8 && v < 12) ? kNaN : 2.0; };
+  const auto depth = [](int u, int v) {
+    return (u == 40 && v == 30) || (u >= 60 && u < 64 && v >= 8 && v < 12) ? kNaN : 2.0;
+  };
   CoarseToFine run(Grid(96, 64, depth, 4), 4);
   ASSERT_EQ(run.planes.size(), 1u);
   EXPECT_EQ(run.label(40, 30), 0);
@@ -135,7 +153,9 @@ TEST(CoarsePlanes, TakesNoPlaneOnACurvedSurface) {
 }
 
 TEST(CoarsePlanes, FindsNothingInAFrameWithoutReturns) {
-  CoarseToFine run(Grid(32, 24, [](int, int) { return kNaN; }, 4), 4);
+  CoarseToFine run(Grid(
+                       32, 24, [](int, int) { return kNaN; }, 4),
+                   4);
   EXPECT_EQ(run.planes.size(), 0u);
   EXPECT_EQ(run.claimed, 0u);
   for (const std::int32_t label : run.fine.labels()) EXPECT_EQ(label, 0);

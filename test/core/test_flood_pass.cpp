@@ -93,7 +93,7 @@ TEST(FloodPass, FloodsOnFromGivenPixelsToThePlanesEdge) {
   const std::int32_t given = giveLeftColumns(p);
   std::vector<std::size_t> starts;
   for (int v = 0; v < 40; ++v) starts.push_back(p.frame.index(9, v));  // the given pixels' edge
-  p.pass.extend(given, starts, p.stats);
+  p.pass.extend(given, starts, p.pass.segments()[static_cast<std::size_t>(given)].criterion, p.stats);
   for (int v = 0; v < 40; ++v)
     for (int u = 0; u < 60; ++u) ASSERT_EQ(p.label(u, v), u < 30 ? given : 0) << u << ", " << v;
   EXPECT_EQ(p.pass.segments()[static_cast<std::size_t>(given)].sums.count, 30.0 * 40.0);
