@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // floodplane itself, through its PCL drop-in class, as a user would call it.
 
+#include <optional>
+
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "io/params_json.h"
 #include "method.h"
@@ -12,9 +14,10 @@ namespace {
 
 class FloodplaneMethod : public Method {
  public:
-  explicit FloodplaneMethod(int subsampling)
-      : Method(subsampling == 1 ? "floodplane" : "floodplane/" + std::to_string(subsampling), false) {
-    segmentation_.setSubsampling(subsampling);
+  // The library's defaults as "floodplane", or sub-sampling s as "floodplane/s".
+  explicit FloodplaneMethod(std::optional<int> subsampling)
+      : Method(subsampling ? "floodplane/" + std::to_string(*subsampling) : "floodplane", false) {
+    if (subsampling) segmentation_.setSubsampling(*subsampling);
   }
 
   std::string parameters() const override {
@@ -49,7 +52,7 @@ class FloodplaneMethod : public Method {
 
 }  // namespace
 
-std::unique_ptr<Method> makeFloodplaneMethod(int subsampling) {
+std::unique_ptr<Method> makeFloodplaneMethod(std::optional<int> subsampling) {
   return std::make_unique<FloodplaneMethod>(subsampling);
 }
 

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -85,7 +86,7 @@ std::vector<std::uint32_t> extractPlanesInTurn(const Cloud& cloud, std::size_t m
 
 /// floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> with the library's defaults, at
 /// the given sub-sampling factor.
-std::unique_ptr<Method> makeFloodplaneMethod(int subsampling = 1);
+std::unique_ptr<Method> makeFloodplaneMethod(std::optional<int> subsampling = std::nullopt);
 
 // The baselines whose parameters can be tuned (PCL's OMPS and RANSAC, Open3D's RANSAC), made
 // from values by name (baselines.cpp), and the tuned values that bench/tune_baselines.py writes

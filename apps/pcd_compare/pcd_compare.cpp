@@ -44,9 +44,11 @@ namespace {
 namespace fs = std::filesystem;
 using namespace pcd_compare;
 
-const std::vector<std::string> kMethods = {"floodplane", "floodplane/2",  "floodplane/4", "floodplane/8",
-                                           "ransac",     "open3d_ransac", "omps"};
-const std::vector<std::string> kResolutions = {"floodplane", "floodplane/2", "floodplane/4", "floodplane/8"};
+// "floodplane": the library's defaults; "floodplane/s": sub-sampling s (1: every pixel from the
+// start).
+const std::vector<std::string> kMethods = {"floodplane",   "floodplane/1", "floodplane/2",  "floodplane/4",
+                                           "floodplane/8", "ransac",       "open3d_ransac", "omps"};
+const std::vector<std::string> kResolutions = {"floodplane/1", "floodplane/2", "floodplane/4", "floodplane/8"};
 const std::vector<std::string> kSensors = {"kinect", "scanner", "none"};
 
 struct Options {
@@ -81,7 +83,7 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
 
 std::unique_ptr<Method> makeMethod(const std::string& name) {
   if (name.rfind("floodplane", 0) == 0)
-    return makeFloodplaneMethod(name == "floodplane" ? 1 : std::stoi(name.substr(11)));
+    return makeFloodplaneMethod(name == "floodplane" ? std::nullopt : std::optional<int>(std::stoi(name.substr(11))));
   return makeBaseline(name, {}, name);
 }
 
@@ -186,7 +188,7 @@ void writeComparisonImages(const Options& options, const InputCloud& input, cons
                            const std::map<std::string, MethodRun>& runs) {
   std::vector<std::string> order = {"ransac", "open3d_ransac", "omps"};
   for (const LabelSource& source : options.label_sources) order.push_back(source.name);
-  order.insert(order.end(), {"floodplane/8", "floodplane/4", "floodplane/2", "floodplane"});
+  order.insert(order.end(), {"floodplane/8", "floodplane/4", "floodplane/2", "floodplane/1", "floodplane"});
   std::vector<LabelledPanel> panels;
   for (const std::string& name : order) {
     const auto run = runs.find(name);
@@ -334,7 +336,9 @@ void addOptions(CLI::App& app, Options& options) {
   floodplane::apps::addDepthInputOptions(app, options.depth);
   // One comma-separated token: without allow_extra_args(false) the option would also swallow
   // the INPUTs that follow it ("--methods omps scene.pcd").
-  app.add_option("--methods", options.methods, "Methods to run, comma-separated")
+  app.add_option("--methods", options.methods,
+                 "Methods to run, comma-separated: floodplane (its defaults), floodplane/S (sub-sampling S; 1: every "
+                 "pixel from the start), and the baselines")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::IsMember(kMethods))

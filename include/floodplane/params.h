@@ -55,10 +55,12 @@ struct Params {
   double maximum_curvature = 1.0 / 3.0;
 
   // --- beyond the paper ---
-  /// Sub-sampling factor s in {1, 2, 4, 8} (Table III): s > 1 segments the means of s x s
-  /// blocks (the frame read once), then writes the labels at full resolution once: pixels of a
-  /// block inside a plane take it, pixels of blocks on a border are decided one by one.
-  int subsampling = 1;
+  /// Coarse to fine: the side s in {1, 2, 4, 8} of the blocks the coarse pass segments first
+  /// (their means, the frame read once); the big planes it finds start the pass over the
+  /// pixels, which segments everything else with the tests of s = 1. Labels are always at full
+  /// resolution. 4 (the default) finds what 1 finds, in less time on most frames; 1 segments
+  /// every pixel from the start (the paper's method).
+  int subsampling = 4;
   /// c [1/m] of the depth noise along a viewing ray, sigma(r) = sigma_0 + c r^2. Unset (and
   /// depth_noise_constant unset): both are measured on each frame (self-calibration). Set
   /// either to fix the model; the other is then 0 unless set too. A Kinect's is about 0.0015

@@ -33,7 +33,7 @@
   X(maximum_curvature, Fraction, "--maximum-curvature", setMaximumCurvature,                                         \
     "Largest curvature of a plane (1/3 accepts every plane)")                                                        \
   X(subsampling, Subsampling, "--subsample", setSubsampling,                                                         \
-    "Segment s x s blocks (1, 2, 4 or 8), their means read once; labels stay full size")                             \
+    "Coarse to fine: the big planes found on s x s blocks (1, 2, 4 or 8) first; 1: every pixel from the start")      \
   X(depth_noise_coefficient, Noise, "--depth-noise-coefficient", setDepthNoiseCoefficient,                           \
     "c [1/m] of the depth noise sigma_0 + c r^2; default: measured on each frame")                                   \
   X(depth_noise_constant, Noise, "--depth-noise-constant", setDepthNoiseConstant,                                    \

@@ -260,7 +260,7 @@ TEST(FloodFillPlaneSegmentation, RejectsBadParametersInTheSetterThatTookThem) {
   EXPECT_FALSE(seg.getParams().distance_threshold);
   EXPECT_FALSE(seg.getParams().seed_size);
   EXPECT_TRUE(seg.getParams().estimatesNoise());
-  EXPECT_EQ(seg.getSubsampling(), 1);
+  EXPECT_EQ(seg.getSubsampling(), 4);
   EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);
 }
 
@@ -270,7 +270,7 @@ TEST(FloodFillPlaneSegmentation, DerivesThePapersLengthsFromEachFrameUnlessTheyA
   EXPECT_DOUBLE_EQ(seg.getSeedSize(), 0.0);           // sigma_seed: derived
   EXPECT_DOUBLE_EQ(seg.getMergeDistance(), 0.0);      // sigma_plane-merge: derived
   EXPECT_DOUBLE_EQ(seg.getAngularThreshold(), 0.1);   // theta_angle, the paper's
-  EXPECT_EQ(seg.getSubsampling(), 1);
+  EXPECT_EQ(seg.getSubsampling(), 4);                 // coarse to fine
   EXPECT_FALSE(seg.getProjectPoints());
   EXPECT_TRUE(seg.getParams().estimatesNoise());
   // Set, they are the paper's fixed lengths.

@@ -143,7 +143,7 @@ TEST(FrameSegmenter, RefusesUnusableParametersAndKeepsItsOwn) {
   settings.params.subsampling = 3;
   settings.tracking = true;
   EXPECT_THROW(node.setSettings(settings), std::invalid_argument);
-  EXPECT_EQ(node.settings().params.subsampling, 1);
+  EXPECT_EQ(node.settings().params.subsampling, floodplane::Params().subsampling);
   EXPECT_FALSE(node.settings().tracking);
 }
 

@@ -87,11 +87,13 @@ TEST(PlaneOutline, IsAClosedLoopOnThePlaneAlongItsBoundary) {
     for (const auto& p : outline.points) {
       const Eigen::Vector3d point(p[0], p[1], p[2]);
       EXPECT_NEAR(fit.normal.dot(point) + fit.offset, 0.0, 1e-5);
-      // Each outline point is (the projection of) a boundary pixel's point.
+      // Each outline point is the projection of a boundary pixel's point onto the plane.
       double nearest = 1e9;
       for (int pixel : contour) {
         const float* q = grid.point(static_cast<std::size_t>(pixel));
-        nearest = std::min(nearest, (point - Eigen::Vector3d(q[0], q[1], q[2])).norm());
+        const Eigen::Vector3d boundary(q[0], q[1], q[2]);
+        const Eigen::Vector3d projection = boundary - (fit.normal.dot(boundary) + fit.offset) * fit.normal;
+        nearest = std::min(nearest, (point - projection).norm());
       }
       EXPECT_LT(nearest, 1e-5);
     }
