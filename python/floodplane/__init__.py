@@ -67,16 +67,19 @@ __all__ = [
 
 
 def segment(points, *, zero_is_hole=True, **params):
-    """Segments points, an (H, W, 3) float32 or float64 array in metres (camera at the origin,
-    NaN = no return), with a new Segmenter(**params). Points at exactly (0, 0, 0) are no return
-    too unless zero_is_hole=False. Returns a Segmentation. To segment a sequence of frames,
-    keep one Segmenter: it reuses its buffers."""
+    """Segments points, (H, W, 3) x y z in metres (camera at the origin, NaN = no return), with a
+    new Segmenter(**params). points is anything numpy.asarray makes an array of real numbers of:
+    float32 is read in place, other floats, integers and nested lists or tuples of numbers are
+    converted. Points at exactly (0, 0, 0) are no return too unless zero_is_hole=False.
+    Returns a Segmentation. To segment a sequence of frames, keep one Segmenter: it reuses its
+    buffers."""
     return Segmenter(**params).segment(points, zero_is_hole=zero_is_hole)
 
 
 def segment_depth(depth, intrinsics, fy=None, cx=None, cy=None, depth_scale=None, **params):
     """Segments a depth image: segment_depth(depth, fx, fy, cx, cy) or segment_depth(depth, K).
-    depth is (H, W) or (H, W, 1), integer units (millimetres: Kinect, RealSense, ROS 16UC1)
+    depth is (H, W) or (H, W, 1), any array or nested list numpy.asarray makes one of: integer
+    units (millimetres: Kinect, RealSense, ROS 16UC1; a list of ints is int64, so units too)
     or float (metres: Open3D, ROS 32FC1); depth_scale is units per metre (default 1000 for
     integers, 1 for floats; 5000 for the TUM RGB-D benchmark's PNG files); 0, NaN and
     infinity are no return. intrinsics: fx, fy, cx, cy [pixels], a 3 x 3 matrix K or an Open3D

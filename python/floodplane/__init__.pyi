@@ -14,7 +14,9 @@ __version__: str
 PARAMETER_NAMES: Tuple[str, ...]
 
 _Path = Union[str, os.PathLike]
-_Points = npt.ArrayLike  # (H, W, 3) float32 or float64, metres, NaN (and (0, 0, 0)) no return
+# Anything numpy.asarray makes an array of numbers of: arrays of any float or integer dtype,
+# nested lists or tuples (float32 points are read in place, the rest converted).
+_Points = npt.ArrayLike  # (H, W, 3) x y z in metres, NaN (and (0, 0, 0)) no return
 _Depth = npt.ArrayLike  # (H, W) or (H, W, 1), integer units or float metres
 
 class _PinholeIntrinsic(Protocol):

@@ -124,8 +124,9 @@ void bindSegmenter(py::module_& m) {
           "every parameter as a dict (None: derived from the frame)")
       .def("segment", &segmentArray, py::arg("points"), py::kw_only(), py::arg("refine") = true,
            py::arg("measure_phases") = false, py::arg("head_start") = false, py::arg("zero_is_hole") = true,
-           "Segments `points`, an (H, W, 3) float32 or float64 array in metres with the camera at the origin "
-           "(NaN: no return). Read in place when float32 with x y z adjacent, converted otherwise. `zero_is_hole` "
+           "Segments `points`, (H, W, 3) x y z in metres with the camera at the origin (NaN: no return): anything "
+           "numpy.asarray makes an array of real numbers of (any float or integer dtype, nested lists or tuples). "
+           "Read in place when float32 with x y z adjacent, converted to float32 otherwise. `zero_is_hole` "
            "takes points at exactly (0, 0, 0), the \"no depth\" of Open3D, RealSense and many ROS drivers, for "
            "no return as NaN is (in a copy; the array is not changed); False segments them as points. `refine` "
            "grows the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the "
