@@ -14,7 +14,9 @@ lengths default to None, which derives them from each frame's measured noise. Po
 exactly (0, 0, 0), the "no depth" of Open3D, RealSense and many ROS drivers, are holes like
 NaN ones (zero_is_hole=False segments them as points). Depth images, integer units or float
 metres, (H, W) or (H, W, 1): segment_depth(), depth_to_points(), read_depth_png(); their
-intrinsics as fx, fy, cx, cy, a 3 x 3 K or Open3D's PinholeCameraIntrinsic. Results pickle.
+intrinsics as fx, fy, cx, cy, a 3 x 3 K or Open3D's PinholeCameraIntrinsic. A frame with
+no finite point (all NaN, all zero, a depth image of zeros) gives a result with no planes,
+not an error. Results pickle.
 Many files on a cluster: floodplane.distributed.segment_files(). A stream of frames:
 Tracker().update(result) gives each plane an id that persists from frame to frame. Open3D in
 and out: floodplane.open3d (imported on its own; it needs Open3D).
@@ -71,8 +73,9 @@ def segment(points, *, zero_is_hole=True, **params):
     new Segmenter(**params). points is anything numpy.asarray makes an array of real numbers of:
     float32 is read in place, other floats, integers and nested lists or tuples of numbers are
     converted. Points at exactly (0, 0, 0) are no return too unless zero_is_hole=False.
-    Returns a Segmentation. To segment a sequence of frames, keep one Segmenter: it reuses its
-    buffers."""
+    Returns a Segmentation. A frame with no finite point (all NaN, all zero) or fewer than
+    three is valid: its Segmentation has no planes and labels all 0 (not an error). To segment
+    a sequence of frames, keep one Segmenter: it reuses its buffers."""
     return Segmenter(**params).segment(points, zero_is_hole=zero_is_hole)
 
 

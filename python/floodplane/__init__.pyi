@@ -107,7 +107,9 @@ class Plane:
     def first_pixel(self) -> int: ...
 
 class Segmentation:
-    """The planes found in one frame; pickles."""
+    """The planes found in one frame; pickles. A frame with no finite point (all NaN; all
+    (0, 0, 0) with zero_is_hole; a depth image of zeros) or fewer than three has planes == []
+    and labels all 0: a valid, empty result, never an error."""
 
     @property
     def labels(self) -> npt.NDArray[np.uint32]: ...

@@ -132,7 +132,11 @@ void bindSegmenter(py::module_& m) {
            "grows the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the "
            "result's phases; `head_start` continues from the last frame this Segmenter segmented (a stream from "
            "one sensor): its noise model is taken again instead of measured (anew every 30 frames); a cold start "
-           "on the first frame, after a size change or a failed call. Returns a Segmentation.")
+           "on the first frame, after a size change or a failed call. Returns a Segmentation. A frame with no "
+           "finite point (all NaN; all (0, 0, 0) with zero_is_hole) or fewer than three is a valid frame with no "
+           "planes: a Segmentation whose planes are [] and labels all 0, not an error (as pcd_segment and the ROS "
+           "node); tiny frames (2 x 2) are segmented like any other. Raises for what is not a frame: a shape "
+           "other than (H, W, 3) with H >= 2 and W >= 1 (ValueError), values that are not numbers (TypeError).")
       .def("segment_file", &segmentFileSummary, py::arg("input"), py::arg("output"), py::kw_only(),
            py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0,
            "Segments the file `input` and writes its labelled cloud to `output` as pcd_segment does (the same "
