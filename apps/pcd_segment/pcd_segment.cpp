@@ -55,7 +55,8 @@ constexpr const char* kDescription =
     "INPUT is a PCD file with x y z fields, a 16-bit depth image (.png, 0 = no return; needs "
     "--intrinsics), or a directory of them. Writes per input a labelled cloud (x y z [rgb] "
     "label: 0 no plane, 1..K planes by size, largest first; a depth image's back-projected "
-    "points). With --track the inputs are one sequence of frames and the labels are track ids.";
+    "points). With --track the inputs are one sequence of frames and the labels are track ids. A frame with no "
+    "finite point (all NaN, a depth image of zeros) is valid: written with no planes, with a note.";
 
 // What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
 constexpr const char* kOutputMeaning = "-o names the labelled cloud (a .pcd file, for one input) or a directory";
@@ -230,7 +231,7 @@ struct FileResult {
   std::size_t width = 0;
   std::size_t height = 0;
   std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
-  std::string note;                                   ///< said on stderr unless --quiet: an output not written
+  std::vector<std::string> notes;  ///< said on stderr unless --quiet: an empty frame, an output not written
 };
 
 // Reads, segments and writes one input, the index-th; throws std::runtime_error saying what
@@ -268,11 +269,14 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
     floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, has_point, points->width, points->height));
   }
   FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}, {}};
+  if (std::find(has_point.begin(), has_point.end(), 1) == has_point.end()) {
+    result.notes.push_back(floodplane::apps::kEmptyFrameNote);
+  }
   if (options.overlay) {
     if (const std::optional<floodplane::io::RgbImage> colours = floodplane::io::frameColours(frame)) {
       floodplane::io::writePng(paths.overlay, floodplane::io::overlayImage(labels, has_point, *colours));
     } else {
-      result.note = "no colour (rgb field) to lay the labels over: " + paths.overlay + " not written";
+      result.notes.push_back("no colour (rgb field) to lay the labels over: " + paths.overlay + " not written");
     }
   }
   if (options.json) {
@@ -386,8 +390,8 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       try {
         writeSnapshotOf(item.paths, *outcome.result, options);
         if (!options.quiet) printResult(item.file->path, *outcome.result, item.paths.pcd);
-        if (!options.quiet && !outcome.result->note.empty()) {
-          std::cerr << "pcd_segment: note: " << item.file->path << ": " << outcome.result->note << "\n";
+        for (const std::string& note : outcome.result->notes) {
+          if (!options.quiet) std::cerr << "pcd_segment: note: " << item.file->path << ": " << note << "\n";
         }
         if (options.view && outcome.result->scene) {
           floodplane::view::showWindow(*outcome.result->scene, "pcd_segment: " + item.file->path);

@@ -542,6 +542,8 @@ TEST_F(PcdSegment, QuietPrintsNothingOnSuccess) {
   EXPECT_TRUE(result.err.empty()) << result.err;
 }
 
+// A frame with no finite point is a valid frame with no planes (the rule of the Python module
+// and the ROS node): every output written, exit code 0, a one-line note.
 TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
   Cloud empty(40, 30);
   for (auto& p : empty) p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
@@ -550,6 +552,8 @@ TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
   const Result result = run({input, "-o", path("out").string(), "--png", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "nan.pcd: 40x30, 0 planes")) << result.out;
+  EXPECT_EQ(result.err, "pcd_segment: note: " + input +
+                            ": no point has a finite x y z (all NaN, or no depth): a frame with no planes\n");
   pcl::PointCloud<pcl::PointXYZL> labelled;
   ASSERT_EQ(pcl::io::loadPCDFile(path("out/nan.labels.pcd").string(), labelled), 0);
   EXPECT_EQ(labelled.size(), 1200u);
@@ -558,6 +562,43 @@ TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
   const auto json = nlohmann::json::parse(readFile(path("out/nan.planes.json")));
   EXPECT_EQ(json.at("plane_count"), 0);
   EXPECT_TRUE(json.at("planes").empty());
+  // --quiet: no note, and in a batch the empty frame is no failure of the others.
+  const Result quiet = run({input, "-o", path("quiet").string(), "--quiet"});
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+  const Result batch = run({input, writeScene("scene.pcd"), "-o", path("batch").string()});
+  EXPECT_EQ(batch.exit_code, 0) << batch.err;
+  EXPECT_EQ(lineCount(batch.err), 1u) << batch.err;
+  EXPECT_TRUE(contains(batch.out, "scene.pcd: 160x120, 2 planes")) << batch.out;
+}
+
+// Frames too small to hold much are segmented like any other, never refused: a 2 x 2 grid, a
+// single column, a grid of two finite points.
+TEST_F(PcdSegment, TinyFramesAreSegmentedAndWritten) {
+  const Cloud scene = twoPlaneScene();
+  for (const auto& [width, height, finite] :
+       std::vector<std::array<std::uint32_t, 3>>{{2, 2, 4}, {1, 5, 5}, {2, 2, 2}}) {
+    const std::string name = std::to_string(width) + "x" + std::to_string(height) + "_" + std::to_string(finite);
+    SCOPED_TRACE(name);
+    Cloud tiny(width, height);
+    for (std::uint32_t i = 0; i < tiny.size(); ++i) {
+      tiny[i] = scene.at(static_cast<int>(80 + i % width), static_cast<int>(40 + i / width));
+      if (i >= finite) tiny[i].x = tiny[i].y = tiny[i].z = std::numeric_limits<float>::quiet_NaN();
+    }
+    tiny.is_dense = finite == tiny.size();
+    const Result result = run({writeScene(name + ".pcd", tiny), "-o", path(name + ".pcd").string(), "--png", "--json"});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_TRUE(result.err.empty()) << result.err;
+    pcl::PointCloud<pcl::PointXYZL> labelled;
+    ASSERT_EQ(pcl::io::loadPCDFile(path(name + ".pcd").string(), labelled), 0);
+    EXPECT_EQ(labelled.width, width);
+    EXPECT_EQ(labelled.height, height);
+    EXPECT_TRUE(fs::exists(path(name + ".png")));
+    const auto json = nlohmann::json::parse(readFile(path(name + ".json")));
+    if (finite < 3) {
+      EXPECT_EQ(json.at("plane_count"), 0);
+    }
+  }
 }
 
 // ---- bad input ----------------------------------------------------------------------------

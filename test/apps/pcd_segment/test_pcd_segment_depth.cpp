@@ -115,6 +115,26 @@ TEST_F(PcdSegmentDepth, WritesTheBackProjectedPointsAndTheLibrarysLabels) {
   EXPECT_EQ(*std::max_element(labels.begin(), labels.end()), 2u);
 }
 
+// 0 is "no return": a depth image of zeros is a frame without a finite point, valid and empty.
+TEST_F(PcdSegmentDepth, ADepthImageOfZerosIsAFrameWithNoPlanes) {
+  floodplane::io::DepthImage zeros = twoPlaneDepth();
+  std::fill(zeros.depth.begin(), zeros.depth.end(), std::uint16_t{0});
+  floodplane::io::writeDepthPng(path("zeros.png").string(), zeros);
+  const Result result =
+      run({path("zeros.png").string(), "-o", path("out").string(), "--intrinsics", kIntrinsics, "--png", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "zeros.png: 160x120, 0 planes, ")) << result.out;
+  EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+  EXPECT_TRUE(contains(result.err, "pcd_segment: note: " + path("zeros.png").string() + ": no point has a finite"))
+      << result.err;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/zeros.labels.pcd").string(), labelled), 0);
+  EXPECT_EQ(labelled.size(), 160u * 120u);
+  EXPECT_TRUE(std::all_of(labelled.begin(), labelled.end(), [](const pcl::PointXYZL& p) { return p.label == 0; }));
+  EXPECT_TRUE(fs::exists(path("out/zeros.labels.png")));
+  EXPECT_TRUE(fs::exists(path("out/zeros.planes.json")));
+}
+
 TEST_F(PcdSegmentDepth, TheDepthScaleIsUnitsPerMetreAndDefaultsToMillimetres) {
   const std::string input = writeDepth("frame.png");
   ASSERT_EQ(run({input, "-o", path("mm.pcd").string(), "--intrinsics", kIntrinsics}).exit_code, 0);
