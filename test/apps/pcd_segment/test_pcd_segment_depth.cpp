@@ -135,6 +135,21 @@ TEST_F(PcdSegmentDepth, ADepthImageOfZerosIsAFrameWithNoPlanes) {
   EXPECT_TRUE(fs::exists(path("out/zeros.planes.json")));
 }
 
+// -o NAME.png of a depth image: its label image; never the depth image itself.
+TEST_F(PcdSegmentDepth, OutputPngIsTheLabelImageAndNeverTheInput) {
+  const std::string input = writeDepth("frame.png");
+  const Result result = run({input, "-o", path("labels.png").string(), "--intrinsics", kIntrinsics});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const floodplane::io::RgbImage image = readPng(path("labels.png"));
+  EXPECT_EQ(image.width, 160);
+  EXPECT_EQ(image.height, 120);
+  EXPECT_FALSE(fs::exists(path("labels.pcd")));
+  const std::string before = readFile(path("frame.png"));
+  expectUsageError(run({input, "-o", input, "--intrinsics", kIntrinsics}), "pcd_segment",
+                   "-o " + input + " is the input itself; give the .png file another name");
+  EXPECT_EQ(readFile(path("frame.png")), before);
+}
+
 TEST_F(PcdSegmentDepth, TheDepthScaleIsUnitsPerMetreAndDefaultsToMillimetres) {
   const std::string input = writeDepth("frame.png");
   ASSERT_EQ(run({input, "-o", path("mm.pcd").string(), "--intrinsics", kIntrinsics}).exit_code, 0);
