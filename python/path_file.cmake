@@ -38,6 +38,5 @@ elseif(floodplane_site_dir)
   message(STATUS "floodplane: ${floodplane_site_dir}/floodplane.pth adds it to the Python interpreter's path: "
                  "nothing to set")
 else()
-  message(STATUS "floodplane: add it to PYTHONPATH (with the ROS node installed in this prefix, "
-                 "${CMAKE_INSTALL_PREFIX}/setup.bash does)")
+  message(STATUS "floodplane: add it to PYTHONPATH (the ROS node's messages are in it too)")
 endif()
