@@ -95,18 +95,19 @@ def draw(panels, path):
                 legend.setdefault(method, handle)
             ax.set_xscale("log")
             ax.set_title(title)
-            ax.set_xlabel("ms per frame (mean of each file's median, log scale)")
-            ax.set_ylabel(label)
+            ax.set_xlabel("ms per frame, mean of each file's median (log scale: left is faster)")
             if label == "mean IoU":
+                ax.set_ylabel("mean IoU (higher is better)")
                 ax.set_ylim(0.0, 1.05)
             else:
+                ax.set_ylabel(label)
                 ax.set_ylim(0.0, max(y for _, _, y in points) * 1.15 + 0.5)
             lows = [ms for _, ms, _ in points]
             ax.set_xlim(min(lows) / 2.0, max(lows) * 4.0)
             ax.grid(True, which="major", color="#dddddd", zorder=0)
         figure.legend(list(legend.values()), list(legend), loc="lower center", ncol=min(len(legend), 5),
                       frameon=False, fontsize=8)
-        figure.suptitle("Speed against accuracy: up and to the left is better (hollow: baselines tuned per sensor)",
+        figure.suptitle("Each method's time a frame against its accuracy (hollow: baselines tuned per sensor model)",
                         fontsize=10)
         rows = (len(legend) + 4) // 5
         figure.tight_layout(rect=(0.0, 0.04 + 0.035 * rows, 1.0, 0.95))
