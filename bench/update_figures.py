@@ -15,17 +15,25 @@ Inputs:
                    fraction per factor and sensor model).
   --quirks JSON    the same on the report split rendered with the sensor quirks; fills
                    "accuracy-quirks".
+  --chart PNG      draws the speed-against-accuracy chart (bench/speed_accuracy_chart.py,
+                   matplotlib) into PNG: a panel per pcd_compare run, those of --report and
+                   --quirks and each --chart-run TITLE=JSON (pcd_compare --json on another data
+                   set: the bundled scenes, the real frames); fills "chart" with the image and
+                   the runs it was drawn from.
 Any one of them may be given alone. --dry-run prints the parts instead of writing.
 
 Example:
   build/bench/bench_segmentation --benchmark_filter='^interleaved/real' --benchmark_min_time=3 \\
       --benchmark_out=speed.json
   bench/update_figures.py --speed speed.json --report report.json --quirks report_quirks.json
+  bench/update_figures.py --chart bench/figures/speed_accuracy.png \\
+      --chart-run "bundled scenes=scenes.json" --chart-run "real frames=real.json"
 """
 
 import argparse
 import datetime
 import json
+import os
 import pathlib
 import re
 import statistics
@@ -34,6 +42,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import compare_tables  # noqa: E402  (the report reader is shared)
+import speed_accuracy_chart  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 BENCH_README = ROOT / "bench" / "README.md"
@@ -147,6 +156,33 @@ def accuracy_table(path, what):
     return out
 
 
+# The chart ------------------------------------------------------------------------------------
+
+def run_description(title, path):
+    """One run of the chart's caption: its title, files, methods and timing, from its JSON."""
+    configuration, scenes = compare_tables.read_report(path)
+    methods = ", ".join(compare_tables.method_order(scenes))
+    timing = str(configuration.get("timing", "")).split(", of the segmentation call")[0]
+    return f"{title}: {len(scenes)} files, {methods}" + (f"; {timing}" if timing else "")
+
+
+def chart_caption(chart, bench_readme, descriptions):
+    link = os.path.relpath(chart, pathlib.Path(bench_readme).resolve().parent)
+    return (f"![Speed against accuracy of each method, a panel per data set]({link})\n\n"
+            f"Drawn {stamp(datetime.date.today().isoformat())} by `bench/update_figures.py --chart` from "
+            "pcd_compare's JSON of " + "; ".join(descriptions) + ".\n")
+
+
+def chart_runs(args):
+    """The (title, JSON) of each panel: --chart-run's, then --report's and --quirks'."""
+    runs = list(args.chart_run or [])
+    if args.report:
+        runs.append(("report split", args.report))
+    if args.quirks:
+        runs.append(("report split with the quirks", args.quirks))
+    return runs
+
+
 # Writing -------------------------------------------------------------------------------------
 
 def replace_part(text, name, body, path):
@@ -165,12 +201,20 @@ def main():
     parser.add_argument("--speed", help="Google Benchmark JSON of interleaved/real")
     parser.add_argument("--report", help="pcd_compare JSON of the report split")
     parser.add_argument("--quirks", help="pcd_compare JSON of the report split with the sensor quirks")
+    parser.add_argument("--chart", help="draw the speed-against-accuracy chart into this PNG "
+                                        "(bench/figures/speed_accuracy.png)")
+    parser.add_argument("--chart-run", action="append", type=speed_accuracy_chart.titled_run, metavar="TITLE=JSON",
+                        help="a pcd_compare run of another data set, a panel of --chart's (repeatable)")
     parser.add_argument("--bench-readme", default=str(BENCH_README), help="the page to update")
     parser.add_argument("--readme", default=str(README), help="the README whose speed sentence to update")
     parser.add_argument("--dry-run", action="store_true", help="print the parts, write nothing")
     args = parser.parse_args()
-    if not (args.speed or args.report or args.quirks):
-        parser.error("give at least one of --speed, --report, --quirks")
+    if args.chart_run and not args.chart:
+        parser.error("--chart-run gives a panel of the chart: give --chart PNG too")
+    if not (args.speed or args.report or args.quirks or args.chart):
+        parser.error("give at least one of --speed, --report, --quirks, --chart")
+    if args.chart and not chart_runs(args):
+        parser.error("--chart needs a pcd_compare run: --chart-run TITLE=JSON, --report or --quirks")
     try:
         bench_parts, readme_parts = {}, {}
         if args.speed:
@@ -182,6 +226,16 @@ def main():
         if args.quirks:
             bench_parts["accuracy-quirks"] = accuracy_table(
                 args.quirks, "Report split with the quirks (--quantize-bits 9 --warp 3 --speckle --bend 0.02)")
+        panels = []
+        if args.chart:
+            runs = chart_runs(args)
+            panels = [speed_accuracy_chart.read_panel(title, path) for title, path in runs]
+            bench_parts["chart"] = chart_caption(pathlib.Path(args.chart).resolve(), args.bench_readme,
+                                                 [run_description(title, path) for title, path in runs])
+            try:
+                import matplotlib  # noqa: F401  (checked before anything is written)
+            except ImportError as error:
+                raise Unusable(f"--chart needs matplotlib ({error}); Debian: python3-matplotlib") from error
         if args.dry_run:
             for name, body in {**bench_parts, **{f"README {k}": v for k, v in readme_parts.items()}}.items():
                 print(f"--- {name}\n{body}")
@@ -195,10 +249,13 @@ def main():
                 text = replace_part(text, name, body, path)
             updates.append((path, text, sorted(parts)))
         # Every file is checked before any is written.
+        if args.chart:
+            speed_accuracy_chart.draw(panels, args.chart)
+            print(f"update_figures.py: the chart drawn into {args.chart}")
         for path, text, names in updates:
             compare_tables.write_atomically(path, text)
             print(f"update_figures.py: {', '.join(names)} written into {path}")
-    except (Unusable, OSError) as error:
+    except (Unusable, speed_accuracy_chart.Unusable, OSError) as error:
         print(f"update_figures.py: {error}", file=sys.stderr)
         return 1
     return 0

@@ -21,6 +21,7 @@ packages=(
   python3-numpy python3-pytest                 # its arrays and its tests
   python3-dask python3-distributed             # floodplane.distributed and its test cluster
   python3-open3d                               # floodplane.open3d's tests (Open3D 0.16's Python module)
+  python3-matplotlib                           # bench/'s speed-against-accuracy chart (speed_accuracy_chart.py)
 )
 
 missing=()

@@ -19,6 +19,12 @@ namespace floodplane::apps {
 /// before any work.
 inline constexpr int kUsageExitCode = 2;
 
+/// What an app says, as a note on stderr after the input's name, of a frame with no finite point
+/// (all NaN, or a depth image of zeros). Such a frame is valid: segmented and written as any
+/// other, with no planes, not an error (the rule of the Python module and the ROS node too).
+inline constexpr const char* kEmptyFrameNote =
+    "no point has a finite x y z (all NaN, or no depth): a frame with no planes";
+
 /// Adds --version, which prints the library's version.
 void addVersionFlag(CLI::App& app);
 

@@ -12,6 +12,7 @@
 #include <pcl/point_types.h>
 #include <pcl/segmentation/planar_region.h>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -47,6 +48,16 @@ struct OmpsOutputs {
   std::vector<pcl::PointIndices> label_indices;
   std::vector<pcl::PointIndices> boundaries;
 };
+
+/// Whether PCL's IntegralImageNormalEstimation (border policy "ignore", the default) can run
+/// on a `width` x `height` grid at `normal_smoothing_size` [pixels]. It leaves a border that
+/// wide without normals, and on a grid not wider and higher than twice that it has no normal
+/// to compute but writes the border past the grid's end (PCL 1.13: a crash on a 2 x 2 frame).
+/// Such a frame has no normal, so OMPS finds no plane in it: callers skip it.
+inline bool normalWindowFits(std::uint32_t width, std::uint32_t height, double normal_smoothing_size) {
+  const std::uint64_t border = static_cast<std::uint64_t>(normal_smoothing_size);
+  return width > 2 * border && height > 2 * border;
+}
 
 /// Runs `omps.segmentAndRefine` into `outputs`, every output emptied first. PCL 1.13 needs
 /// this: segment() appends to the coefficient and inlier vectors it is given, and refine()

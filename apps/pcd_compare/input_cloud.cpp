@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <stdexcept>
 #include <utility>
 
 #include "io/input_frame.h"
@@ -13,10 +12,6 @@ namespace pcd_compare {
 
 InputCloud loadInputCloud(const std::string& path, const std::optional<floodplane::io::DepthCamera>& camera) {
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(path, camera);
-  if (frame.xyz.width <= 1) {
-    throw std::runtime_error("not an organized cloud (" + std::to_string(frame.xyz.width) + "x" +
-                             std::to_string(frame.xyz.height) + "): PCL's methods need an image grid");
-  }
   InputCloud input;
   input.path = path;
   const std::string file = std::filesystem::path(path).filename().string();

@@ -30,8 +30,8 @@ struct InputCloud {
 
 /// Loads an organized cloud, or a depth image back-projected with `camera`, through
 /// floodplane::io::loadInputFrame. Throws std::runtime_error with a one-line reason (without
-/// the path) if the file cannot be read as a frame, or if its grid is a single column, which
-/// PCL's methods cannot take.
+/// the path) if the file cannot be read as a frame. Any organized grid is a frame, a single
+/// column or one without a finite point too: every method finds its planes in it, or none.
 InputCloud loadInputCloud(const std::string& path, const std::optional<floodplane::io::DepthCamera>& camera = {});
 
 }  // namespace pcd_compare

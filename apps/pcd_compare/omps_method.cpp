@@ -41,6 +41,14 @@ class OmpsMethod : public Method {
 
   MethodRun run(const Cloud::ConstPtr& cloud) override {
     const auto start = Clock::now();
+    MethodRun result;
+    if (!floodplane::apps::normalWindowFits(cloud->width, cloud->height, values_.at("normal_smoothing_size"))) {
+      // No normal, so no plane: a valid frame too small for OMPS (PCL would write past it).
+      result.labels.assign(cloud->size(), 0);
+      result.total_ms = millisecondsSince(start);
+      result.parts_ms.emplace_back("normals", 0.0);
+      return result;
+    }
     auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
     normal_estimation_.setInputCloud(cloud);
     normal_estimation_.compute(*normals);
@@ -49,7 +57,6 @@ class OmpsMethod : public Method {
     segmentation_.setInputNormals(normals);
     segmentation_.setInputCloud(cloud);
     floodplane::apps::segmentAndRefineAfresh(segmentation_, outputs_);
-    MethodRun result;
     result.total_ms = millisecondsSince(start);
     result.parts_ms.emplace_back("normals", normals_ms);
     // OMPS's label cloud numbers connected components, not planes; the planes are the

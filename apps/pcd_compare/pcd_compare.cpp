@@ -290,6 +290,9 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
     try {
       if (!file.error.empty()) throw std::runtime_error(file.error);
       InputCloud input = loadInputCloud(file.path, options.camera);
+      if (!options.quiet && std::find(input.valid.begin(), input.valid.end(), 1) == input.valid.end()) {
+        std::cerr << "pcd_compare: note: " << file.path << ": " << floodplane::apps::kEmptyFrameNote << std::endl;
+      }
       if (!options.sensor.empty()) input.sensor = options.sensor;
       if (!options.ground_truth_dir.empty()) {
         input.ground_truth.reset();

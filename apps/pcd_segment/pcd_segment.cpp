@@ -55,10 +55,12 @@ constexpr const char* kDescription =
     "INPUT is a PCD file with x y z fields, a 16-bit depth image (.png, 0 = no return; needs "
     "--intrinsics), or a directory of them. Writes per input a labelled cloud (x y z [rgb] "
     "label: 0 no plane, 1..K planes by size, largest first; a depth image's back-projected "
-    "points). With --track the inputs are one sequence of frames and the labels are track ids.";
+    "points). With --track the inputs are one sequence of frames and the labels are track ids. A frame with no "
+    "finite point (all NaN, a depth image of zeros) is valid: written with no planes, with a note.";
 
 // What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
-constexpr const char* kOutputMeaning = "-o names the labelled cloud (a .pcd file, for one input) or a directory";
+constexpr const char* kOutputMeaning =
+    "-o names the labelled cloud (a .pcd file) or the label image (a .png file), for one input, or a directory";
 
 struct Options {
   std::vector<std::string> inputs;
@@ -85,10 +87,12 @@ void addInputOutputOptions(CLI::App& app, Options& options) {
                  "PCD files, depth PNG files or directories of them (PNG only with --intrinsics)")
       ->required();
   app.add_option("-o,--output", options.output,
-                 "A .pcd file or a directory, by one rule in every mode. OUT ending in .pcd: the labelled "
-                 "cloud when the inputs come to one file (refused for more), with --png, --json, "
+                 "A .pcd file, a .png file or a directory, by one rule in every mode. OUT ending in .pcd: the "
+                 "labelled cloud when the inputs come to one file (refused for more), with --png, --json, "
                  "--overlay, --snapshot and --track --json writing OUT's stem + .png, .json, .overlay.png, "
-                 ".snapshot.png, .tracks.json beside it. OUT ending in / or without an extension, or an "
+                 ".snapshot.png, .tracks.json beside it. OUT ending in .png: the label image of --png instead "
+                 "of the labelled cloud (no .pcd written), for one input as .pcd, the other outputs beside it "
+                 "alike. OUT ending in / or without an extension, or an "
                  "existing directory: a directory (created if missing) receiving <name>.labels.pcd, "
                  ".labels.png, .planes.json, .overlay.png, .snapshot.png per input (<name>: the input's file "
                  "name without .pcd or .png) and tracks.json with --track --json. Any other extension "
@@ -230,7 +234,7 @@ struct FileResult {
   std::size_t width = 0;
   std::size_t height = 0;
   std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
-  std::string note;                                   ///< said on stderr unless --quiet: an output not written
+  std::vector<std::string> notes;  ///< said on stderr unless --quiet: an empty frame, an output not written
 };
 
 // Reads, segments and writes one input, the index-th; throws std::runtime_error saying what
@@ -256,7 +260,9 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
   // The label cloud in the input's grid and pose (x y z [rgb] label), as the Python module writes it.
   const std::vector<std::uint32_t>& labels =
       segmentation.getTracking() ? track_labels : segmentation.getLastSegmentation().labels;
-  if (frame.xyzrgb) {
+  if (paths.pcd.empty()) {
+    // -o NAME.png: the label image instead of the cloud.
+  } else if (frame.xyzrgb) {
     pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, labels),
                                options.ascii);
   } else {
@@ -264,15 +270,18 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
                                options.ascii);
   }
   const std::vector<std::uint8_t> has_point = floodplane::io::finitePoints(*points);
-  if (options.png) {
+  if (options.png || paths.pcd.empty()) {
     floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, has_point, points->width, points->height));
   }
   FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}, {}};
+  if (std::find(has_point.begin(), has_point.end(), 1) == has_point.end()) {
+    result.notes.push_back(floodplane::apps::kEmptyFrameNote);
+  }
   if (options.overlay) {
     if (const std::optional<floodplane::io::RgbImage> colours = floodplane::io::frameColours(frame)) {
       floodplane::io::writePng(paths.overlay, floodplane::io::overlayImage(labels, has_point, *colours));
     } else {
-      result.note = "no colour (rgb field) to lay the labels over: " + paths.overlay + " not written";
+      result.notes.push_back("no colour (rgb field) to lay the labels over: " + paths.overlay + " not written");
     }
   }
   if (options.json) {
@@ -291,6 +300,12 @@ void writeSnapshotOf(const pcd_segment::OutputPaths& paths, const FileResult& re
   if (!options.snapshot || !result.scene) return;
   const std::string& path = options.snapshot->empty() ? paths.snapshot : *options.snapshot;
   pcd_segment::writeSnapshot(path, *result.scene, options.snapshot_settings);
+}
+
+// Whether two paths name one existing file (a symbolic or hard link to it too).
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code error;
+  return fs::equivalent(a, b, error) && !error;
 }
 
 bool createOutputDirectory(const fs::path& directory) {
@@ -385,9 +400,11 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
     if (outcome.result) {
       try {
         writeSnapshotOf(item.paths, *outcome.result, options);
-        if (!options.quiet) printResult(item.file->path, *outcome.result, item.paths.pcd);
-        if (!options.quiet && !outcome.result->note.empty()) {
-          std::cerr << "pcd_segment: note: " << item.file->path << ": " << outcome.result->note << "\n";
+        if (!options.quiet) {
+          printResult(item.file->path, *outcome.result, item.paths.pcd.empty() ? item.paths.png : item.paths.pcd);
+        }
+        for (const std::string& note : outcome.result->notes) {
+          if (!options.quiet) std::cerr << "pcd_segment: note: " << item.file->path << ": " << note << "\n";
         }
         if (options.view && outcome.result->scene) {
           floodplane::view::showWindow(*outcome.result->scene, "pcd_segment: " + item.file->path);
@@ -494,15 +511,21 @@ int main(int argc, char** argv) {
   }
   bool single_file = false;
   try {
-    single_file = floodplane::apps::outputKind("-o", options.output, {".pcd"}, kOutputMeaning) ==
+    single_file = floodplane::apps::outputKind("-o", options.output, {".pcd", ".png"}, kOutputMeaning) ==
                   floodplane::apps::OutputKind::file;
   } catch (const std::invalid_argument& e) {
     return floodplane::apps::usageError(app, e.what());
   }
+  const std::string file_kind = pcd_segment::namesLabelImage(options.output) ? ".png" : ".pcd";
   if (single_file && files.size() > 1) {
     // A directory called "x.pcd" is almost surely a mistake, so this is refused.
-    return floodplane::apps::usageError(app, "-o " + options.output + " names one .pcd file, but there are " +
-                                                 std::to_string(files.size()) + " inputs; give a directory");
+    return floodplane::apps::usageError(app, "-o " + options.output + " names one " + file_kind +
+                                                 " file, but there are " + std::to_string(files.size()) +
+                                                 " inputs; give a directory");
+  }
+  if (single_file && files.size() == 1 && sameFile(files.front().path, options.output)) {
+    return floodplane::apps::usageError(
+        app, "-o " + options.output + " is the input itself; give the " + file_kind + " file another name");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
   if (options.overlay && std::all_of(files.begin(), files.end(), [](const floodplane::io::InputFile& file) {

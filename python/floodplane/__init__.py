@@ -14,7 +14,9 @@ lengths default to None, which derives them from each frame's measured noise. Po
 exactly (0, 0, 0), the "no depth" of Open3D, RealSense and many ROS drivers, are holes like
 NaN ones (zero_is_hole=False segments them as points). Depth images, integer units or float
 metres, (H, W) or (H, W, 1): segment_depth(), depth_to_points(), read_depth_png(); their
-intrinsics as fx, fy, cx, cy, a 3 x 3 K or Open3D's PinholeCameraIntrinsic. Results pickle.
+intrinsics as fx, fy, cx, cy, a 3 x 3 K or Open3D's PinholeCameraIntrinsic. A frame with
+no finite point (all NaN, all zero, a depth image of zeros) gives a result with no planes,
+not an error. Results pickle.
 Many files on a cluster: floodplane.distributed.segment_files(). A stream of frames:
 Tracker().update(result) gives each plane an id that persists from frame to frame. Open3D in
 and out: floodplane.open3d (imported on its own; it needs Open3D).
@@ -67,16 +69,20 @@ __all__ = [
 
 
 def segment(points, *, zero_is_hole=True, **params):
-    """Segments points, an (H, W, 3) float32 or float64 array in metres (camera at the origin,
-    NaN = no return), with a new Segmenter(**params). Points at exactly (0, 0, 0) are no return
-    too unless zero_is_hole=False. Returns a Segmentation. To segment a sequence of frames,
-    keep one Segmenter: it reuses its buffers."""
+    """Segments points, (H, W, 3) x y z in metres (camera at the origin, NaN = no return), with a
+    new Segmenter(**params). points is anything numpy.asarray makes an array of real numbers of:
+    float32 is read in place, other floats, integers and nested lists or tuples of numbers are
+    converted. Points at exactly (0, 0, 0) are no return too unless zero_is_hole=False.
+    Returns a Segmentation. A frame with no finite point (all NaN, all zero) or fewer than
+    three is valid: its Segmentation has no planes and labels all 0 (not an error). To segment
+    a sequence of frames, keep one Segmenter: it reuses its buffers."""
     return Segmenter(**params).segment(points, zero_is_hole=zero_is_hole)
 
 
 def segment_depth(depth, intrinsics, fy=None, cx=None, cy=None, depth_scale=None, **params):
     """Segments a depth image: segment_depth(depth, fx, fy, cx, cy) or segment_depth(depth, K).
-    depth is (H, W) or (H, W, 1), integer units (millimetres: Kinect, RealSense, ROS 16UC1)
+    depth is (H, W) or (H, W, 1), any array or nested list numpy.asarray makes one of: integer
+    units (millimetres: Kinect, RealSense, ROS 16UC1; a list of ints is int64, so units too)
     or float (metres: Open3D, ROS 32FC1); depth_scale is units per metre (default 1000 for
     integers, 1 for floats; 5000 for the TUM RGB-D benchmark's PNG files); 0, NaN and
     infinity are no return. intrinsics: fx, fy, cx, cy [pixels], a 3 x 3 matrix K or an Open3D

@@ -14,7 +14,9 @@ __version__: str
 PARAMETER_NAMES: Tuple[str, ...]
 
 _Path = Union[str, os.PathLike]
-_Points = npt.ArrayLike  # (H, W, 3) float32 or float64, metres, NaN (and (0, 0, 0)) no return
+# Anything numpy.asarray makes an array of numbers of: arrays of any float or integer dtype,
+# nested lists or tuples (float32 points are read in place, the rest converted).
+_Points = npt.ArrayLike  # (H, W, 3) x y z in metres, NaN (and (0, 0, 0)) no return
 _Depth = npt.ArrayLike  # (H, W) or (H, W, 1), integer units or float metres
 
 class _PinholeIntrinsic(Protocol):
@@ -105,7 +107,9 @@ class Plane:
     def first_pixel(self) -> int: ...
 
 class Segmentation:
-    """The planes found in one frame; pickles."""
+    """The planes found in one frame; pickles. A frame with no finite point (all NaN; all
+    (0, 0, 0) with zero_is_hole; a depth image of zeros) or fewer than three has planes == []
+    and labels all 0: a valid, empty result, never an error."""
 
     @property
     def labels(self) -> npt.NDArray[np.uint32]: ...

@@ -123,11 +123,7 @@ py::array_t<std::uint16_t> readDepthPng(const std::filesystem::path& file) {
 
 void writeDepthPng(const std::filesystem::path& file, py::handle depth) {
   const std::string path = file.string();
-  const py::array array = py::array::ensure(depth);
-  if (!array) {
-    PyErr_Clear();
-    raiseTypeError("write_depth_png: depth must be an integer array of shape (H, W), got " + typeName(depth));
-  }
+  const py::array array = arrayFrom(depth, "write_depth_png: depth", "an integer array of shape (H, W)");
   if (array.ndim() != 2 || array.shape(0) < 1 || array.shape(1) < 1) {
     raiseValueError("write_depth_png: depth must have shape (H, W) with H, W >= 1, got " + shapeText(array));
   }

@@ -17,21 +17,6 @@ namespace {
 
 namespace py = pybind11;
 
-// Any array-like as a numpy array; TypeError for what numpy cannot take.
-py::array asArray(py::handle value, const std::string& where, const std::string& wanted) {
-  if (!py::isinstance<py::array>(value)) {
-    if (value.is_none() || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value)) {
-      raiseTypeError(where + " must be " + wanted + ", got " + typeName(value));
-    }
-  }
-  py::array array = py::array::ensure(value);
-  if (!array) {
-    PyErr_Clear();
-    raiseTypeError(where + " must be " + wanted + ", got " + typeName(value));
-  }
-  return array;
-}
-
 bool isNativeFloat32(const py::array& array) { return array.dtype().equal(py::dtype::of<float>()); }
 
 // Whether the core can read `array`, float32 (H, W, 3), where it lies: coordinates adjacent,
@@ -170,12 +155,29 @@ std::string shapeText(const py::array& array) {
   return text + (array.ndim() == 1 ? ",)" : ")");
 }
 
+py::array arrayFrom(py::handle value, const std::string& where, const std::string& wanted) {
+  if (value.is_none() || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value)) {
+    raiseTypeError(where + " must be " + wanted + ", got " + typeName(value));
+  }
+  if (py::isinstance<py::array>(value)) return py::reinterpret_borrow<py::array>(value);
+  try {
+    return py::module_::import("numpy").attr("asarray")(value);
+  } catch (py::error_already_set& numpy_error) {
+    const std::string reason = py::str(numpy_error.value());
+    const std::string message = where + " must be " + wanted + "; numpy cannot make an array of this " +
+                                typeName(value) + (reason.empty() ? "" : ": " + reason);
+    if (numpy_error.matches(PyExc_ValueError)) raiseValueError(message);
+    raiseTypeError(message);
+  }
+}
+
 GridArray gridFromArray(py::handle points, const std::string& where, bool zero_is_hole) {
   GridArray out;
-  out.array = asArray(points, where, "a float32 or float64 array of shape (H, W, 3)");
+  out.array = arrayFrom(points, where, "an array of shape (H, W, 3)");
   const char kind = out.array.dtype().kind();
-  if (kind != 'f' || (out.array.itemsize() != 4 && out.array.itemsize() != 8)) {
-    raiseTypeError(where + " must be a float32 or float64 array, got dtype " + std::string(py::str(out.array.dtype())));
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    raiseTypeError(where + " must hold real numbers (floats or integers), got dtype " +
+                   std::string(py::str(out.array.dtype())));
   }
   checkGridShape(out.array, where);
   if (!isNativeFloat32(out.array) || !hasGridLayout(out.array)) {
@@ -203,7 +205,7 @@ template py::array_t<std::uint32_t> arrayCopy(const std::vector<std::uint32_t>&,
 
 DepthArray depthArrayFrom(py::handle depth, const std::string& where) {
   DepthArray out;
-  out.array = asArray(depth, where, "an array of shape (H, W)");
+  out.array = arrayFrom(depth, where, "an array of shape (H, W)");
   const char kind = out.array.dtype().kind();
   if (kind != 'u' && kind != 'i' && kind != 'f') {
     raiseTypeError(where + " must be an integer or floating-point array, got dtype " +
@@ -247,7 +249,7 @@ py::array_t<float> pointsFromDepth(const DepthArray& depth, const io::DepthCamer
 
 std::vector<std::uint32_t> unsignedGrid(py::handle values, py::ssize_t height, py::ssize_t width,
                                         std::uint64_t max_value, const std::string& where) {
-  const py::array array = asArray(values, where, "an integer array of shape (H, W)");
+  const py::array array = arrayFrom(values, where, "an integer array of shape (H, W)");
   checkIntegerDtype(array, where);
   if (array.ndim() != 2 || array.shape(0) != height || array.shape(1) != width) {
     raiseValueError(where + " must have shape (" + std::to_string(height) + ", " + std::to_string(width) + "), got " +

@@ -25,14 +25,22 @@ struct GridArray {
   bool copied = false;  ///< whether `array` is a converted copy of the caller's
 };
 
-/// `points` as a grid. Read in place when it is float32 in native byte order with x y z
-/// adjacent and the points of a row evenly spaced, rows following each other (C order, or a
-/// view such as cloud[..., :3] of a wider array); otherwise converted to a C-ordered float32
-/// copy. With `zero_is_hole`, points at exactly (0, 0, 0), the "no depth" of Open3D,
-/// RealSense and many ROS drivers, become NaN (no return, as the core knows holes) in a copy;
-/// the caller's array is never written. Raises TypeError for anything but a float32 or
-/// float64 array, ValueError for a shape other than (H, W, 3) with H >= 2 (an image grid) and
-/// W >= 1. `where` names the argument.
+/// `value` as numpy.asarray makes it an array (lists and tuples of numbers, arrays of any
+/// dtype). Raises TypeError for None and text ("<where> must be <wanted>, got str") and for
+/// what numpy takes for no array, ValueError with numpy's reason for what it cannot make an
+/// array of (a ragged list).
+pybind11::array arrayFrom(pybind11::handle value, const std::string& where, const std::string& wanted);
+
+/// `points`, anything numpy.asarray makes an array of real numbers of (an array of any float
+/// or integer dtype, nested lists or tuples of numbers), as a grid. Read in place when it is
+/// float32 in native byte order with x y z adjacent and the points of a row evenly spaced,
+/// rows following each other (C order, or a view such as cloud[..., :3] of a wider array);
+/// otherwise converted to a C-ordered float32 copy. With `zero_is_hole`, points at exactly
+/// (0, 0, 0), the "no depth" of Open3D, RealSense and many ROS drivers, become NaN (no return,
+/// as the core knows holes) in a copy; the caller's array is never written. Raises TypeError
+/// for None, text and arrays of other dtypes (bool, complex, strings, objects), ValueError for
+/// what numpy cannot make an array of (a ragged list) and for a shape other than (H, W, 3)
+/// with H >= 2 (an image grid) and W >= 1. `where` names the argument.
 GridArray gridFromArray(pybind11::handle points, const std::string& where, bool zero_is_hole = false);
 
 /// A C-ordered array of `shape` holding a copy of `values`.
@@ -46,8 +54,10 @@ struct DepthArray {
   bool real = false;      ///< a floating-point dtype
 };
 
-/// `depth` as a DepthArray. Raises TypeError for an array neither integer nor real (bool,
-/// complex) or no array, ValueError for a shape other than (H, W) or (H, W, 1).
+/// `depth`, anything numpy.asarray makes an array of integers or floats of, as a DepthArray.
+/// Raises TypeError for an array neither integer nor real (bool, complex) or no array,
+/// ValueError for what numpy cannot make an array of and for a shape other than (H, W) or
+/// (H, W, 1).
 DepthArray depthArrayFrom(pybind11::handle depth, const std::string& where);
 
 /// The units per metre of a depth image when not given: 1 (metres) for real depths, 1000

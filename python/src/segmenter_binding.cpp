@@ -124,14 +124,19 @@ void bindSegmenter(py::module_& m) {
           "every parameter as a dict (None: derived from the frame)")
       .def("segment", &segmentArray, py::arg("points"), py::kw_only(), py::arg("refine") = true,
            py::arg("measure_phases") = false, py::arg("head_start") = false, py::arg("zero_is_hole") = true,
-           "Segments `points`, an (H, W, 3) float32 or float64 array in metres with the camera at the origin "
-           "(NaN: no return). Read in place when float32 with x y z adjacent, converted otherwise. `zero_is_hole` "
+           "Segments `points`, (H, W, 3) x y z in metres with the camera at the origin (NaN: no return): anything "
+           "numpy.asarray makes an array of real numbers of (any float or integer dtype, nested lists or tuples). "
+           "Read in place when float32 with x y z adjacent, converted to float32 otherwise. `zero_is_hole` "
            "takes points at exactly (0, 0, 0), the \"no depth\" of Open3D, RealSense and many ROS drivers, for "
            "no return as NaN is (in a copy; the array is not changed); False segments them as points. `refine` "
            "grows the planes into unlabelled pixels that fit them (as pcd_segment); `measure_phases` fills the "
            "result's phases; `head_start` continues from the last frame this Segmenter segmented (a stream from "
            "one sensor): its noise model is taken again instead of measured (anew every 30 frames); a cold start "
-           "on the first frame, after a size change or a failed call. Returns a Segmentation.")
+           "on the first frame, after a size change or a failed call. Returns a Segmentation. A frame with no "
+           "finite point (all NaN; all (0, 0, 0) with zero_is_hole) or fewer than three is a valid frame with no "
+           "planes: a Segmentation whose planes are [] and labels all 0, not an error (as pcd_segment and the ROS "
+           "node); tiny frames (2 x 2) are segmented like any other. Raises for what is not a frame: a shape "
+           "other than (H, W, 3) with H >= 2 and W >= 1 (ValueError), values that are not numbers (TypeError).")
       .def("segment_file", &segmentFileSummary, py::arg("input"), py::arg("output"), py::kw_only(),
            py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0,
            "Segments the file `input` and writes its labelled cloud to `output` as pcd_segment does (the same "

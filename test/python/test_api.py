@@ -190,12 +190,6 @@ def test_segment_without_refinement_labels_no_more_pixels(scene):
     assert np.count_nonzero(segmenter.segment(scene, refine=False).labels) <= refined
 
 
-def test_all_nan_frame_gives_no_plane():
-    result = floodplane.segment(np.full((30, 40, 3), np.nan, np.float32))
-    assert len(result.planes) == 0
-    assert not result.labels.any()
-
-
 def test_segment_depth_is_segment_of_the_back_projected_depth():
     depth = np.nan_to_num(np.round(two_plane_scene()[..., 2] * 1000)).astype(np.uint16)
     fx = fy = 525.0 * 160 / 640

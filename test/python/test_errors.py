@@ -28,12 +28,10 @@ def test_refuses_points_of_the_wrong_shape(points, message):
 
 
 @pytest.mark.parametrize("points, message", [
-    (np.zeros((4, 5, 3), np.int32), "points must be a float32 or float64 array, got dtype int32"),
-    (np.zeros((4, 5, 3), np.float16), "got dtype float16"),
-    (np.zeros((4, 5, 3), np.complex64), "got dtype complex64"),
+    (np.zeros((4, 5, 3), np.complex64), "points must hold real numbers \\(floats or integers\\), got dtype complex64"),
     (np.zeros((4, 5, 3), bool), "got dtype bool"),
     (np.array([["a"] * 3] * 2), "got dtype <U1"),
-    (None, "points must be a float32 or float64 array of shape \\(H, W, 3\\), got NoneType"),
+    (None, "points must be an array of shape \\(H, W, 3\\), got NoneType"),
     ("frame.pcd", "got str"),
     (object(), "got dtype object"),
 ])
@@ -43,7 +41,7 @@ def test_refuses_points_of_the_wrong_type(points, message):
 
 
 def test_refuses_a_ragged_list():
-    with pytest.raises((TypeError, ValueError)):
+    with pytest.raises(ValueError, match="numpy cannot make an array of this list"):
         floodplane.segment([[[0, 0, 1]], [[0, 0, 1], [1, 1, 1]]])
 
 

@@ -141,7 +141,7 @@ def test_refuses_a_page_without_its_markers_and_writes_neither_page(pages):
 
 def test_the_real_pages_carry_every_marker_the_script_fills():
     bench = (SOURCE / "bench/README.md").read_text()
-    for name in ("speed", "accuracy", "accuracy-quirks"):
+    for name in ("speed", "accuracy", "accuracy-quirks", "chart"):
         assert bench.count(f"<!-- figures:{name} begin -->") == 1, name
         assert bench.count(f"<!-- figures:{name} end -->") == 1, name
     readme = (SOURCE / "README.md").read_text()

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -188,6 +189,52 @@ TEST_F(PcdCompare, FilesThatAreNotOrganizedPointCloudsAreReportedByName) {
   EXPECT_NE(outcome.err.find(flat.string() + ": unorganized cloud"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find(no_xyz.string() + ": the cloud has no x y z fields"), std::string::npos) << outcome.err;
   EXPECT_EQ(meanRowCount(outcome.out, "all files (1)", "floodplane", 1), 1);
+}
+
+// The rule of every interface: a frame with no finite point, or one too small to hold much (a
+// 2 x 2 grid, a single column), is a valid frame that every method finds its planes in, or
+// none; not a failed file. OMPS's normal estimation would write past a grid smaller than its
+// window (PCL 1.13): it finds no plane there, unrun.
+TEST_F(PcdCompare, EmptyAndTinyFramesAreComparedLikeAnyOther) {
+  pcl::PointCloud<pcl::PointXYZ> staircase;
+  ASSERT_EQ(pcl::io::loadPCDFile(kStaircase, staircase), 0);
+  const auto frame = [&](const std::string& name, std::uint32_t width, std::uint32_t height, bool finite) {
+    pcl::PointCloud<pcl::PointXYZ> cloud(width, height);
+    for (std::uint32_t i = 0; i < cloud.size(); ++i) {
+      cloud[i] = staircase.at(static_cast<int>(160 + i % width), static_cast<int>(200 + i / width));
+      if (!finite) cloud[i].x = cloud[i].y = cloud[i].z = std::numeric_limits<float>::quiet_NaN();
+    }
+    cloud.is_dense = finite;
+    const std::string file = (dir_ / name).string();
+    pcl::io::savePCDFileBinary(file, cloud);
+    return file;
+  };
+  const std::string nan = frame("nan.pcd", 40, 30, false);
+  const fs::path json_file = dir_ / "out.json";
+  const Result outcome = run("--repeat 1 --methods floodplane,floodplane/8,ransac,open3d_ransac,omps --json " +
+                             quote(json_file.string()) + " --png " + quote((dir_ / "pictures").string()) + " " +
+                             quote(nan) + " " + quote(frame("square.pcd", 2, 2, true)) + " " +
+                             quote(frame("column.pcd", 1, 6, true)) + " " + quote(frame("edge.pcd", 12, 12, true)));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_TRUE(contains(
+      outcome.err,
+      "pcd_compare: note: " + nan + ": no point has a finite x y z (all NaN, or no depth): a frame with no planes\n"))
+      << outcome.err;
+  EXPECT_FALSE(contains(outcome.err, "error")) << outcome.err;
+  const nlohmann::json report = nlohmann::json::parse(readFile(json_file));
+  EXPECT_TRUE(report["failed"].empty()) << report["failed"];
+  EXPECT_EQ(sceneNames(report), (std::vector<std::string>{"nan", "square", "column", "edge"}));
+  for (const auto& scene : report["scenes"]) {
+    for (const std::string method : {"floodplane", "floodplane/8", "ransac", "open3d_ransac", "omps"}) {
+      ASSERT_TRUE(scene["methods"].contains(method)) << scene["name"] << " " << method;
+      if (scene["name"] == "nan" || method == "omps") {
+        EXPECT_EQ(scene["methods"][method]["planes"], 0) << method;
+      }
+    }
+    EXPECT_TRUE(fs::exists(dir_ / "pictures" / (scene["name"].get<std::string>() + ".png"))) << scene["name"];
+  }
+  // Quiet: the means and errors only.
+  EXPECT_TRUE(run("--quiet --repeat 1 --methods floodplane " + quote(nan)).err.empty());
 }
 
 TEST_F(PcdCompare, BadOptionsAreOneLineNamingTheFlagWithExitCodeTwo) {

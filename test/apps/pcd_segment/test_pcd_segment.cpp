@@ -542,6 +542,8 @@ TEST_F(PcdSegment, QuietPrintsNothingOnSuccess) {
   EXPECT_TRUE(result.err.empty()) << result.err;
 }
 
+// A frame with no finite point is a valid frame with no planes (the rule of the Python module
+// and the ROS node): every output written, exit code 0, a one-line note.
 TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
   Cloud empty(40, 30);
   for (auto& p : empty) p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
@@ -550,6 +552,8 @@ TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
   const Result result = run({input, "-o", path("out").string(), "--png", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "nan.pcd: 40x30, 0 planes")) << result.out;
+  EXPECT_EQ(result.err, "pcd_segment: note: " + input +
+                            ": no point has a finite x y z (all NaN, or no depth): a frame with no planes\n");
   pcl::PointCloud<pcl::PointXYZL> labelled;
   ASSERT_EQ(pcl::io::loadPCDFile(path("out/nan.labels.pcd").string(), labelled), 0);
   EXPECT_EQ(labelled.size(), 1200u);
@@ -558,6 +562,44 @@ TEST_F(PcdSegment, AllNanCloudGivesZeroPlanesAndAllOutputs) {
   const auto json = nlohmann::json::parse(readFile(path("out/nan.planes.json")));
   EXPECT_EQ(json.at("plane_count"), 0);
   EXPECT_TRUE(json.at("planes").empty());
+  // --quiet: no note, and in a batch the empty frame is no failure of the others.
+  const Result quiet = run({input, "-o", path("quiet").string(), "--quiet"});
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+  const Result batch = run({input, writeScene("scene.pcd"), "-o", path("batch").string()});
+  EXPECT_EQ(batch.exit_code, 0) << batch.err;
+  EXPECT_EQ(lineCount(batch.err), 1u) << batch.err;
+  EXPECT_TRUE(contains(batch.out, "scene.pcd: 160x120, 2 planes")) << batch.out;
+}
+
+// Frames too small to hold much are segmented like any other, never refused: a 2 x 2 grid, a
+// single column, a grid of two finite points.
+TEST_F(PcdSegment, TinyFramesAreSegmentedAndWritten) {
+  const Cloud scene = twoPlaneScene();
+  for (const auto& [width, height, finite] :
+       std::vector<std::array<std::uint32_t, 3>>{{2, 2, 4}, {1, 5, 5}, {2, 2, 2}}) {
+    const std::string name = std::to_string(width) + "x" + std::to_string(height) + "_" + std::to_string(finite);
+    SCOPED_TRACE(name);
+    Cloud tiny(width, height);
+    for (std::uint32_t i = 0; i < tiny.size(); ++i) {
+      tiny[i] = scene.at(static_cast<int>(80 + i % width), static_cast<int>(40 + i / width));
+      if (i >= finite) tiny[i].x = tiny[i].y = tiny[i].z = std::numeric_limits<float>::quiet_NaN();
+    }
+    tiny.is_dense = finite == tiny.size();
+    const Result result =
+        run({writeScene(name + ".pcd", tiny), "-o", path("out/" + name + ".pcd").string(), "--png", "--json"});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_TRUE(result.err.empty()) << result.err;
+    pcl::PointCloud<pcl::PointXYZL> labelled;
+    ASSERT_EQ(pcl::io::loadPCDFile(path("out/" + name + ".pcd").string(), labelled), 0);
+    EXPECT_EQ(labelled.width, width);
+    EXPECT_EQ(labelled.height, height);
+    EXPECT_TRUE(fs::exists(path("out/" + name + ".png")));
+    const auto json = nlohmann::json::parse(readFile(path("out/" + name + ".json")));
+    if (finite < 3) {
+      EXPECT_EQ(json.at("plane_count"), 0);
+    }
+  }
 }
 
 // ---- bad input ----------------------------------------------------------------------------
@@ -711,11 +753,11 @@ TEST_F(PcdSegment, RefusesASinglePcdOutputForSeveralInputs) {
   EXPECT_FALSE(fs::exists(path("both.pcd")));
 }
 
-// -o is a file when it ends in .pcd, a directory when it ends in / or has no extension or
-// exists as one; any other extension is refused rather than made a directory of that name.
-TEST_F(PcdSegment, OutputIsAPcdFileOrADirectoryAndNothingElse) {
+// -o is a file when it ends in .pcd or .png, a directory when it ends in / or has no extension
+// or exists as one; any other extension is refused rather than made a directory of that name.
+TEST_F(PcdSegment, OutputIsAPcdOrPngFileOrADirectoryAndNothingElse) {
   const std::string input = writeScene("scene.pcd");
-  for (const std::string refused : {"o/x.txt", "o/x.png", "o/x.json", "o/results.v2"}) {
+  for (const std::string refused : {"o/x.txt", "o/x.jpg", "o/x.json", "o/results.v2"}) {
     SCOPED_TRACE(refused);
     expectUsageError(run({input, "-o", path(refused).string()}), "pcd_segment",
                      "-o " + path(refused).string() + " looks like a");
@@ -731,6 +773,43 @@ TEST_F(PcdSegment, OutputIsAPcdFileOrADirectoryAndNothingElse) {
   EXPECT_TRUE(fs::is_regular_file(path("o/results.v2/scene.planes.json")));
   ASSERT_EQ(run({input, "-o", path("o/plain").string()}).exit_code, 0);
   EXPECT_TRUE(fs::is_regular_file(path("o/plain/scene.labels.pcd")));
+  ASSERT_EQ(run({input, "-o", path("o/y.PNG").string()}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(path("o/y.PNG")));
+}
+
+// -o NAME.png: the label image that --png draws, instead of the labelled cloud; the other
+// outputs beside it with its stem, as for NAME.pcd.
+TEST_F(PcdSegment, OutputPngIsTheLabelImageAlone) {
+  const std::string input = writeScene("scene.pcd");
+  ASSERT_EQ(run({input, "-o", path("cloud/scene.pcd").string(), "--png", "--json"}).exit_code, 0);
+  const Result result = run({input, "-o", path("image/scene.png").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+  EXPECT_TRUE(contains(result.out, "scene.pcd: 160x120, 2 planes, ")) << result.out;
+  EXPECT_TRUE(contains(result.out, " -> " + path("image/scene.png").string() + "\n")) << result.out;
+  EXPECT_EQ(readFile(path("image/scene.png")), readFile(path("cloud/scene.png")));
+  const auto json = nlohmann::json::parse(readFile(path("image/scene.json")));
+  EXPECT_EQ(json.at("plane_count"), 2);
+  std::vector<std::string> written;
+  for (const auto& entry : fs::directory_iterator(path("image"))) written.push_back(entry.path().filename());
+  std::sort(written.begin(), written.end());
+  EXPECT_EQ(written, (std::vector<std::string>{"scene.json", "scene.png"})) << "no labelled cloud";
+  // --png asks for what -o names already; the image is the same.
+  ASSERT_EQ(run({input, "-o", path("again.png").string(), "--png", "--quiet"}).exit_code, 0);
+  EXPECT_EQ(readFile(path("again.png")), readFile(path("cloud/scene.png")));
+  EXPECT_FALSE(fs::exists(path("again.pcd")));
+  EXPECT_TRUE(contains(run({"--help"}).out, "OUT ending in .png: the label image of --png instead of the labelled"));
+}
+
+TEST_F(PcdSegment, OutputPngIsRefusedForSeveralInputsAndForTheInputItself) {
+  const Result several = run({writeScene("a.pcd"), writeScene("b.pcd"), "-o", path("both.png").string()});
+  expectUsageError(several, "pcd_segment", "-o " + path("both.png").string() + " names one .png file, but there are 2");
+  EXPECT_FALSE(fs::exists(path("both.png")));
+  // A file is never its own output: neither a depth image nor a cloud is overwritten.
+  const std::string input = writeScene("self.pcd");
+  const std::string before = readFile(path("self.pcd"));
+  expectUsageError(run({input, "-o", input}), "pcd_segment", "-o " + input + " is the input itself");
+  EXPECT_EQ(readFile(path("self.pcd")), before);
 }
 
 TEST_F(PcdSegment, HelpShowsTheLibraryDefaultsAndVersionPrintsTheVersion) {

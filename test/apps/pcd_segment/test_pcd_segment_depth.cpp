@@ -115,6 +115,41 @@ TEST_F(PcdSegmentDepth, WritesTheBackProjectedPointsAndTheLibrarysLabels) {
   EXPECT_EQ(*std::max_element(labels.begin(), labels.end()), 2u);
 }
 
+// 0 is "no return": a depth image of zeros is a frame without a finite point, valid and empty.
+TEST_F(PcdSegmentDepth, ADepthImageOfZerosIsAFrameWithNoPlanes) {
+  floodplane::io::DepthImage zeros = twoPlaneDepth();
+  std::fill(zeros.depth.begin(), zeros.depth.end(), std::uint16_t{0});
+  floodplane::io::writeDepthPng(path("zeros.png").string(), zeros);
+  const Result result =
+      run({path("zeros.png").string(), "-o", path("out").string(), "--intrinsics", kIntrinsics, "--png", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "zeros.png: 160x120, 0 planes, ")) << result.out;
+  EXPECT_EQ(lineCount(result.err), 1u) << result.err;
+  EXPECT_TRUE(contains(result.err, "pcd_segment: note: " + path("zeros.png").string() + ": no point has a finite"))
+      << result.err;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/zeros.labels.pcd").string(), labelled), 0);
+  EXPECT_EQ(labelled.size(), 160u * 120u);
+  EXPECT_TRUE(std::all_of(labelled.begin(), labelled.end(), [](const pcl::PointXYZL& p) { return p.label == 0; }));
+  EXPECT_TRUE(fs::exists(path("out/zeros.labels.png")));
+  EXPECT_TRUE(fs::exists(path("out/zeros.planes.json")));
+}
+
+// -o NAME.png of a depth image: its label image; never the depth image itself.
+TEST_F(PcdSegmentDepth, OutputPngIsTheLabelImageAndNeverTheInput) {
+  const std::string input = writeDepth("frame.png");
+  const Result result = run({input, "-o", path("labels.png").string(), "--intrinsics", kIntrinsics});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const floodplane::io::RgbImage image = readPng(path("labels.png"));
+  EXPECT_EQ(image.width, 160);
+  EXPECT_EQ(image.height, 120);
+  EXPECT_FALSE(fs::exists(path("labels.pcd")));
+  const std::string before = readFile(path("frame.png"));
+  expectUsageError(run({input, "-o", input, "--intrinsics", kIntrinsics}), "pcd_segment",
+                   "-o " + input + " is the input itself; give the .png file another name");
+  EXPECT_EQ(readFile(path("frame.png")), before);
+}
+
 TEST_F(PcdSegmentDepth, TheDepthScaleIsUnitsPerMetreAndDefaultsToMillimetres) {
   const std::string input = writeDepth("frame.png");
   ASSERT_EQ(run({input, "-o", path("mm.pcd").string(), "--intrinsics", kIntrinsics}).exit_code, 0);

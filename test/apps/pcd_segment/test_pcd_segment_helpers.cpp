@@ -36,6 +36,18 @@ TEST(OutputPaths, PutsPngAndJsonNextToASingleOutputFileWithItsStem) {
   EXPECT_EQ(paths.json, "res/scene.json");
 }
 
+TEST(OutputPaths, MakesASinglePngOutputTheLabelImageWithNoCloud) {
+  const auto paths = pcd_segment::outputPaths("in.pcd", "res/scene.PNG", true);
+  EXPECT_EQ(paths.pcd, "");
+  EXPECT_EQ(paths.png, "res/scene.PNG");
+  EXPECT_EQ(paths.json, "res/scene.json");
+  EXPECT_EQ(paths.overlay, "res/scene.overlay.png");
+  EXPECT_EQ(paths.snapshot, "res/scene.snapshot.png");
+  EXPECT_TRUE(pcd_segment::namesLabelImage("a/b.png"));
+  EXPECT_FALSE(pcd_segment::namesLabelImage("a/b.pcd"));
+  EXPECT_FALSE(pcd_segment::namesLabelImage("a.png/b"));
+}
+
 TEST(PixelBox, SpansTheColumnsAndRowsOfTheIndices) {
   // Width 10: index 23 is column 3 of row 2, index 47 column 7 of row 4, 50 column 0 of row 5.
   const pcd_segment::PixelBox box = pcd_segment::pixelBox({23, 47, 50}, 10);
