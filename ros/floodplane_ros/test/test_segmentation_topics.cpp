@@ -4,8 +4,9 @@
 // ../shared/data/real when they are there, rendered ones otherwise; rendered depth images in
 // millimetres and in metres), the published planes, label cloud and markers compared with the
 // library's own output for the same frames, parameters changed by dynamic_reconfigure, track
-// ids, and bad messages (an unorganized cloud, NaN everywhere, a wrong encoding) answered by
-// an error in the log and nothing else: the node goes on with the next frame.
+// ids, frames without a finite point (a cloud of NaN, a depth image of zeros) answered with no
+// planes, and bad messages (an unorganized cloud, a wrong encoding) answered by an error in
+// the log and nothing else: the node goes on with the next frame.
 //
 // The tests run in order against one node, whose stream of frames the test follows with its
 // own Segmenter and PlaneTracker (head starts make a frame's result depend on the frames
@@ -334,9 +335,22 @@ NodeUnderTest* node = nullptr;
 // Compares what the node published for `frame` with the library's result for the points in
 // `layout`: the frame's points as the node got them. The layout matters to the last bits of
 // the plane fits (the core sums points in another order for PCL's 8-float stride than for 3).
+// A frame without a finite point never reaches the node's Segmenter (its noise model stays the
+// last real frame's): its result is no plane, every label 0.
+bool hasFinitePoint(const floodplane::PointGrid& grid) {
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (grid.isFinite(i)) return true;
+  }
+  return false;
+}
+
 void expectLibrarysResult(const Published& published, const Frame& frame, const floodplane::PointGrid& layout) {
   ASSERT_TRUE(published.complete()) << frame.name << ": the node published nothing within " << kWaitSeconds << " s";
-  const Segmentation& expected = node->library.segment(layout, node->options_);
+  Segmentation no_planes;
+  no_planes.width = layout.width;
+  no_planes.height = layout.height;
+  no_planes.labels.assign(layout.size(), 0);
+  const Segmentation& expected = hasFinitePoint(layout) ? node->library.segment(layout, node->options_) : no_planes;
   std::vector<std::uint32_t> labels(expected.planes.size());
   for (std::size_t k = 0; k < labels.size(); ++k) labels[k] = static_cast<std::uint32_t>(k + 1);
   std::vector<std::uint32_t> track_ids;
@@ -464,11 +478,46 @@ TEST(SegmentationNode, LogsAnErrorForAnUnorganizedCloud) {
   EXPECT_NE(error.find("frame skipped: points: the cloud is not organized"), std::string::npos) << error;
 }
 
-TEST(SegmentationNode, LogsAnErrorForACloudOfNaNsOnly) {
+TEST(SegmentationNode, PublishesNoPlanesForACloudOfNaNsOnly) {
   Frame frame = renderedFrames().front();
+  const sensor_msgs::PointCloud2 before = cloudMessage(frame);
+  const Published planes_before = node->sendCloud(before);
+  expectLibrarysResult(planes_before, frame, pointsOf(before));
+  ASSERT_TRUE(planes_before.complete());
+  ASSERT_GT(planes_before.markers->markers.size(), 1u);
+  frame.name = "a cloud of NaNs";
   std::fill(frame.xyz.begin(), frame.xyz.end(), std::numeric_limits<float>::quiet_NaN());
-  const std::string error = node->sendBadCloud(cloudMessage(frame));
-  EXPECT_NE(error.find("frame skipped: points: no point of the 640x480 frame is finite"), std::string::npos) << error;
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  const Published published = node->sendCloud(cloud);
+  // No planes, every label 0, and the markers of the frame before cleared (a DELETEALL alone).
+  expectLibrarysResult(published, frame, pointsOf(cloud));
+  ASSERT_TRUE(published.complete());
+  EXPECT_TRUE(published.planes->planes.empty());
+  EXPECT_EQ(published.markers->markers.size(), 1u);
+}
+
+TEST(SegmentationNode, PublishesNoPlanesForADepthImageOfZeros) {
+  DepthFrame depth = depthFrame(renderedFrames().front(), true);
+  std::fill(depth.image.data.begin(), depth.image.data.end(), std::uint8_t{0});
+  std::fill(depth.points.xyz.begin(), depth.points.xyz.end(), std::numeric_limits<float>::quiet_NaN());
+  depth.points.name = "a depth image of zeros";
+  const Published published = node->sendDepth(depth);
+  expectLibrarysResult(published, depth.points, depth.points.grid());
+  ASSERT_TRUE(published.complete());
+  EXPECT_TRUE(published.planes->planes.empty());
+}
+
+TEST(SegmentationNode, PublishesNoPlanesForACloudTooSmallForOne) {
+  Frame frame;
+  frame.name = "a cloud of one column of two points";  // organized: a height of 1 would not be
+  frame.width = 1;
+  frame.height = 2;
+  frame.xyz = {0.0f, -0.01f, 1.0f, 0.0f, 0.01f, 1.0f};
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  const Published published = node->sendCloud(cloud);
+  expectLibrarysResult(published, frame, pointsOf(cloud));
+  ASSERT_TRUE(published.complete());
+  EXPECT_TRUE(published.planes->planes.empty());
 }
 
 TEST(SegmentationNode, LogsAnErrorForADepthImageOfAnotherEncoding) {
