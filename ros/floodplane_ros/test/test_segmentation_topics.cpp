@@ -6,15 +6,18 @@
 // library's own output for the same frames, parameters changed by dynamic_reconfigure, track
 // ids, frames without a finite point (a cloud of NaN, a depth image of zeros) answered with no
 // planes, and bad messages (an unorganized cloud, a wrong encoding) answered by an error in
-// the log and nothing else: the node goes on with the next frame.
+// the log and nothing else: the node goes on with the next frame. Each frame's time comes in
+// its planes, at debug level in the log, and in the node's status on /diagnostics.
 //
 // The tests run in order against one node, whose stream of frames the test follows with its
 // own Segmenter and PlaneTracker (head starts make a frame's result depend on the frames
 // before it).
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <floodplane_ros/Planes.h>
 #include <ros/ros.h>
+#include <roscpp/SetLoggerLevel.h>
 #include <rosgraph_msgs/Log.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
@@ -184,12 +187,29 @@ floodplane::PointGrid pointsOf(const sensor_msgs::PointCloud2& cloud) {
   return grid;
 }
 
+using Clock = std::chrono::steady_clock;
+
 // What the node published for one frame.
 struct Published {
   floodplane_ros::PlanesConstPtr planes;
   sensor_msgs::PointCloud2ConstPtr labels;
   visualization_msgs::MarkerArrayConstPtr markers;
+  // From just before the frame was sent to the planes' arrival: the node's time for the frame
+  // lies within it.
+  Clock::time_point sent;
+  Clock::time_point planes_arrived;
+  double roundTripMilliseconds() const {
+    return std::chrono::duration<double, std::milli>(planes_arrived - sent).count();
+  }
   bool complete() const { return planes && labels && markers; }
+};
+
+// The node's report on /diagnostics: its level and its values by key.
+struct Status {
+  std::uint8_t level = 0;
+  std::string message;
+  std::string hardware_id;
+  std::map<std::string, std::string> values;
 };
 
 // The node's topics, seen from outside, and the test's mirror of its stream.
@@ -203,6 +223,7 @@ class NodeUnderTest {
     labels_sub_ = nh_.subscribe("labels", 10, &NodeUnderTest::onLabels, this);
     markers_sub_ = nh_.subscribe("plane_markers", 10, &NodeUnderTest::onMarkers, this);
     rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
+    diagnostics_sub_ = nh_.subscribe("/diagnostics", 10, &NodeUnderTest::onDiagnostics, this);
     options_.head_start = true;  // the node's default
   }
 
@@ -222,15 +243,68 @@ class NodeUnderTest {
 
   Published sendCloud(sensor_msgs::PointCloud2 cloud) {
     cloud.header.stamp = nextStamp();
+    markSent(cloud.header.stamp);
     points_.publish(cloud);
     return waitFor(cloud.header.stamp);
   }
 
   Published sendDepth(DepthFrame depth) {
     depth.image.header.stamp = depth.info.header.stamp = nextStamp();
+    markSent(depth.image.header.stamp);
     camera_info_.publish(depth.info);
     image_.publish(depth.image);
     return waitFor(depth.image.header.stamp);
+  }
+
+  // Sets a logger's level in the process that runs the node, as `rosconsole set` does.
+  bool setLoggerLevel(const std::string& process, const std::string& logger, const std::string& level) {
+    roscpp::SetLoggerLevel service;
+    service.request.logger = logger;
+    service.request.level = level;
+    return ros::service::call(process + "/set_logger_level", service);
+  }
+
+  // The first debug line of a frame's time logged after `since` such lines came ("" if none
+  // came within the wait). /rosout names the node, not the logger.
+  std::size_t timingLineCount() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return timing_lines_.size();
+  }
+  std::string waitForTimingLine(std::size_t since) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const bool logged = arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds),
+                                          [&] { return timing_lines_.size() > since || !ros::ok(); });
+    return logged ? timing_lines_[since] : std::string();
+  }
+
+  // The first report on /diagnostics named `name` that counts at least `frames` frames
+  // segmented and `skipped` messages skipped since the node started (an empty Status if none
+  // came within the wait).
+  Status waitForStatus(const std::string& name, std::size_t frames, std::size_t skipped) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const auto counts = [](const Status& status, const char* key, std::size_t least) {
+      const auto value = status.values.find(key);
+      return value != status.values.end() && std::stoul(value->second) >= least;
+    };
+    Status found;
+    arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds), [&] {
+      for (const Status& status : statuses_[name]) {
+        if (counts(status, "Frames segmented since start", frames) &&
+            counts(status, "Messages skipped since start", skipped)) {
+          found = status;
+          return true;
+        }
+      }
+      return !ros::ok();
+    });
+    return found;
+  }
+
+  // Frames the node published a complete result for.
+  std::size_t framesAnswered() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return static_cast<std::size_t>(
+        std::count_if(published_.begin(), published_.end(), [](const auto& entry) { return entry.second.complete(); }));
   }
 
   // Sends a bad cloud or depth image and returns the error the node logged ("" if none came
@@ -276,6 +350,11 @@ class NodeUnderTest {
  private:
   ros::Time nextStamp() { return ros::Time(1000 + ++frames_sent_, 0); }
 
+  void markSent(const ros::Time& stamp) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    published_[stamp].sent = Clock::now();
+  }
+
   Published waitFor(const ros::Time& stamp) {
     std::unique_lock<std::mutex> lock(mutex_);
     arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds),
@@ -298,7 +377,11 @@ class NodeUnderTest {
   }
 
   void onPlanes(const floodplane_ros::PlanesConstPtr& planes) {
-    store(planes->header.stamp, [&](Published& p) { p.planes = planes; });
+    const Clock::time_point arrived = Clock::now();
+    store(planes->header.stamp, [&](Published& p) {
+      p.planes = planes;
+      p.planes_arrived = arrived;
+    });
   }
   void onLabels(const sensor_msgs::PointCloud2ConstPtr& labels) {
     store(labels->header.stamp, [&](Published& p) { p.labels = labels; });
@@ -308,9 +391,26 @@ class NodeUnderTest {
     store(markers->markers.front().header.stamp, [&](Published& p) { p.markers = markers; });
   }
   void onLog(const rosgraph_msgs::LogConstPtr& log) {
-    if (log->level != rosgraph_msgs::Log::ERROR || log->msg.find("frame skipped") == std::string::npos) return;
     std::lock_guard<std::mutex> lock(mutex_);
-    errors_.push_back(log->msg);
+    if (log->level == rosgraph_msgs::Log::ERROR && log->msg.find("frame skipped") != std::string::npos) {
+      errors_.push_back(log->msg);
+    } else if (log->level == rosgraph_msgs::Log::DEBUG && log->msg.find(" segmented in ") != std::string::npos) {
+      timing_lines_.push_back(log->msg);
+    } else {
+      return;
+    }
+    arrived_.notify_all();
+  }
+  void onDiagnostics(const diagnostic_msgs::DiagnosticArrayConstPtr& array) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& message : array->status) {
+      Status status;
+      status.level = message.level;
+      status.message = message.message;
+      status.hardware_id = message.hardware_id;
+      for (const auto& value : message.values) status.values[value.key] = value.value;
+      statuses_[message.name].push_back(std::move(status));
+    }
     arrived_.notify_all();
   }
   template <typename Set>
@@ -322,11 +422,13 @@ class NodeUnderTest {
 
   ros::NodeHandle nh_;
   ros::Publisher points_, image_, camera_info_;
-  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_;
+  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_, diagnostics_sub_;
   std::mutex mutex_;
   std::condition_variable arrived_;
   std::map<ros::Time, Published> published_;
   std::vector<std::string> errors_;
+  std::vector<std::string> timing_lines_;
+  std::map<std::string, std::vector<Status>> statuses_;
   std::uint32_t frames_sent_ = 0;
 };
 
@@ -355,6 +457,10 @@ void expectLibrarysResult(const Published& published, const Frame& frame, const 
   for (std::size_t k = 0; k < labels.size(); ++k) labels[k] = static_cast<std::uint32_t>(k + 1);
   std::vector<std::uint32_t> track_ids;
   if (node->tracking) labels = track_ids = node->tracker.update(expected);
+
+  // The node's time for the frame: some, and no more than the test waited for it.
+  EXPECT_GT(published.planes->segmentation_time_ms, 0.0) << frame.name;
+  EXPECT_LT(published.planes->segmentation_time_ms, published.roundTripMilliseconds()) << frame.name;
 
   const auto& planes = published.planes->planes;
   ASSERT_EQ(planes.size(), expected.planes.size()) << frame.name;
@@ -525,6 +631,42 @@ TEST(SegmentationNode, LogsAnErrorForADepthImageOfAnotherEncoding) {
   depth.image.encoding = "mono8";
   const std::string error = node->sendBadDepth(depth);
   EXPECT_NE(error.find("frame skipped: image_rect: depth image encoding 'mono8'"), std::string::npos) << error;
+}
+
+TEST(SegmentationNode, LogsEachFramesTimeAtDebugLevel) {
+  const std::string process = ros::param::param<std::string>("~process", "/floodplane");
+  ASSERT_TRUE(node->setLoggerLevel(process, "ros.floodplane_ros.timing", "debug")) << process;
+  const std::size_t lines = node->timingLineCount();
+  const Frame frame = renderedFrames().front();
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  const Published published = node->sendCloud(cloud);
+  expectLibrarysResult(published, frame, pointsOf(cloud));
+  const std::string line = node->waitForTimingLine(lines);
+  ASSERT_TRUE(node->setLoggerLevel(process, "ros.floodplane_ros.timing", "info"));
+  EXPECT_NE(line.find("640x480 frame of camera_depth_optical_frame at " +
+                      std::to_string(published.planes->header.stamp.sec) + ".000 segmented in "),
+            std::string::npos)
+      << line;
+  EXPECT_NE(line.find(" ms: " + std::to_string(published.planes->planes.size()) + " planes"), std::string::npos)
+      << line;
+}
+
+TEST(SegmentationNode, ReportsItsStreamOnDiagnostics) {
+  const std::string name = ros::param::param<std::string>("~node", "/floodplane").substr(1) + ": segmentation";
+  // The frames the node published results for, and the bad messages the tests before sent (an
+  // unorganized cloud, a mono8 depth image), are all counted.
+  const std::size_t frames = node->framesAnswered();
+  ASSERT_GT(frames, 0u);
+  const Status status = node->waitForStatus(name, frames, 2);
+  ASSERT_FALSE(status.values.empty()) << "no report named '" << name << "' on /diagnostics with " << frames
+                                      << " frames and 2 skipped messages since the start within " << kWaitSeconds
+                                      << " s";
+  EXPECT_EQ(status.hardware_id, "none");
+  for (const char* key :
+       {"Window (s)", "Frames segmented", "Messages skipped", "Frequency (Hz)", "Time per frame, mean (ms)",
+        "Time per frame, max (ms)", "Planes in the last frame", "Messages skipped since start"}) {
+    EXPECT_EQ(status.values.count(key), 1u) << key;
+  }
 }
 
 TEST(SegmentationNode, GoesOnWithTheNextFrameAfterBadOnes) {
