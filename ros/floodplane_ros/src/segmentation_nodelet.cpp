@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // The ROS 1 nodelet: organized PointCloud2 frames (points) or depth images with their
-// CameraInfo (image_rect, camera_info, as depth_image_proc subscribes them) in; the label
-// cloud (labels), the planes (planes) and rviz markers (plane_markers) out, and a status of the
-// stream on /diagnostics. The work is the ROS-free FrameSegmenter's and the conversions'
+// CameraInfo (image_rect, camera_info, as depth_image_proc subscribes them) in, by ~input; the
+// label cloud (plane_labels), the planes (planes) and rviz markers (plane_markers) out, and a
+// status of the stream on /diagnostics. The work is the ROS-free FrameSegmenter's and the conversions'
 // (conversion/); this file holds the topics, the parameters, the clock and the logging.
 
 #include <diagnostic_updater/diagnostic_updater.h>
@@ -22,6 +22,7 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,19 @@ conv::SegmentationSettings settingsFromConfig(const SegmentationConfig& config) 
   return settings;
 }
 
+// What ~input asks to segment. A camera driver computes its cloud for subscribers only: a node
+// that listened to both would make it compute the cloud and segment every frame twice.
+struct Inputs {
+  bool points = false;
+  bool depth_image = false;
+};
+Inputs inputsNamed(const std::string& name) {
+  if (name == "points") return {true, false};
+  if (name == "depth_image") return {false, true};
+  if (name == "both") return {true, true};
+  throw std::invalid_argument("~input must be points, depth_image or both, got '" + name + "'");
+}
+
 using Clock = std::chrono::steady_clock;
 double secondsOf(Clock::time_point time) { return std::chrono::duration<double>(time.time_since_epoch()).count(); }
 double millisecondsSince(Clock::time_point start) {
@@ -68,9 +82,21 @@ double millisecondsSince(Clock::time_point start) {
 
 class SegmentationNodelet : public nodelet::Nodelet {
  private:
+  // A parameter it cannot take stops the nodelet from loading, with the reason in the log (the
+  // loader drops an exception's message).
   void onInit() override {
+    try {
+      start();
+    } catch (const std::exception& error) {
+      NODELET_FATAL("%s", error.what());
+      throw;
+    }
+  }
+
+  void start() {
     ros::NodeHandle& nh = getNodeHandle();
     ros::NodeHandle& private_nh = getPrivateNodeHandle();
+    const Inputs inputs = inputsNamed(private_nh.param<std::string>("input", "points"));
     const int queue_size = private_nh.param("queue_size", 2);
     outline_points_ = private_nh.param("outline_points", 200);
     normal_length_ = private_nh.param("normal_length", 0.2);
@@ -80,7 +106,7 @@ class SegmentationNodelet : public nodelet::Nodelet {
       outline_points_ = 3;
     }
 
-    labels_publisher_ = nh.advertise<sensor_msgs::PointCloud2>("labels", 1);
+    labels_publisher_ = nh.advertise<sensor_msgs::PointCloud2>("plane_labels", 1);
     planes_publisher_ = nh.advertise<Planes>("planes", 1);
     markers_publisher_ = nh.advertise<visualization_msgs::MarkerArray>("plane_markers", 1);
 
@@ -99,11 +125,18 @@ class SegmentationNodelet : public nodelet::Nodelet {
       diagnostics_->update();  // publishes when the period is over
     });
 
-    cloud_subscriber_ =
-        nh.subscribe("points", static_cast<std::uint32_t>(queue_size), &SegmentationNodelet::onCloud, this);
-    image_transport_ = std::make_unique<image_transport::ImageTransport>(nh);
-    depth_subscriber_ = image_transport_->subscribeCamera("image_rect", static_cast<std::uint32_t>(queue_size),
-                                                          &SegmentationNodelet::onDepth, this);
+    if (inputs.points) {
+      cloud_subscriber_ =
+          nh.subscribe("points", static_cast<std::uint32_t>(queue_size), &SegmentationNodelet::onCloud, this);
+      NODELET_INFO("segmenting the organized clouds on %s", cloud_subscriber_.getTopic().c_str());
+    }
+    if (inputs.depth_image) {
+      image_transport_ = std::make_unique<image_transport::ImageTransport>(nh);
+      depth_subscriber_ = image_transport_->subscribeCamera("image_rect", static_cast<std::uint32_t>(queue_size),
+                                                            &SegmentationNodelet::onDepth, this);
+      NODELET_INFO("segmenting the depth images on %s with their %s", depth_subscriber_.getTopic().c_str(),
+                   depth_subscriber_.getInfoTopic().c_str());
+    }
   }
 
   void onReconfigure(const SegmentationConfig& config) {
@@ -124,7 +157,7 @@ class SegmentationNodelet : public nodelet::Nodelet {
       const floodplane::Segmentation& segmentation = segmenter_.segment(points.grid());
       publish(cloud->header, points.grid(), segmentation, millisecondsSince(start));
     } catch (const std::exception& error) {
-      reportProblem("points", error.what());
+      reportProblem(cloud_subscriber_.getTopic(), error.what());
     }
   }
 
@@ -141,7 +174,7 @@ class SegmentationNodelet : public nodelet::Nodelet {
       const floodplane::Segmentation& segmentation = segmenter_.segment(grid);
       publish(image->header, grid, segmentation, millisecondsSince(start));
     } catch (const std::exception& error) {
-      reportProblem("image_rect", error.what());
+      reportProblem(depth_subscriber_.getTopic(), error.what());
     }
   }
 
@@ -165,11 +198,11 @@ class SegmentationNodelet : public nodelet::Nodelet {
   }
 
   // A bad frame is skipped with an error in the log; the stream goes on with the next one.
-  void reportProblem(const char* topic, const std::string& problem) {
-    const std::string line = std::string("frame skipped: ") + topic + ": " + problem;
+  void reportProblem(const std::string& topic, const std::string& problem) {
+    const std::string line = "frame skipped: " + topic + ": " + problem;
     {
       std::lock_guard<std::mutex> lock(status_mutex_);
-      status_->messageSkipped(std::string(topic) + ": " + problem);
+      status_->messageSkipped(topic + ": " + problem);
     }
     if (!throttle_.shouldLog(line, ros::WallTime::now().toSec())) return;
     if (throttle_.suppressed() > 0) {

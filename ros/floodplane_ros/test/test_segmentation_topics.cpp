@@ -1,6 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The rostest of the node and the nodelet: frames in on their topics (the real frames of
+// The rostest of the node and the nodelet, in a camera's namespace as floodplane.launch puts
+// them (~cameras names the cameras; the first one's instance gets the SegmentationNode tests,
+// two get TwoCameras'): frames in on their topics (the real frames of
 // ../shared/data/real when they are there, rendered ones otherwise; rendered depth images in
 // millimetres and in metres), the published planes, label cloud and markers compared with the
 // library's own output for the same frames, parameters changed by dynamic_reconfigure, track
@@ -12,6 +14,9 @@
 // The tests run in order against one node, whose stream of frames the test follows with its
 // own Segmenter and PlaneTracker (head starts make a frame's result depend on the frames
 // before it).
+//
+// ~input says what the launch file told the nodes to segment: both (clouds and depth images,
+// the default here) or points.
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
@@ -37,6 +42,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -212,15 +218,18 @@ struct Status {
   std::map<std::string, std::string> values;
 };
 
-// The node's topics, seen from outside, and the test's mirror of its stream.
+// The node's topics in its camera's namespace, seen from outside, and the test's mirror of its
+// stream.
 class NodeUnderTest {
  public:
-  NodeUnderTest() {
-    points_ = nh_.advertise<sensor_msgs::PointCloud2>("points", 2);
-    image_ = nh_.advertise<sensor_msgs::Image>("image_rect", 2);
-    camera_info_ = nh_.advertise<sensor_msgs::CameraInfo>("camera_info", 2);
+  // `depth_images`: the node segments depth images too (input:=both), not only clouds.
+  NodeUnderTest(const std::string& camera, bool depth_images)
+      : camera_(camera), depth_images_(depth_images), nh_("/" + camera) {
+    points_ = nh_.advertise<sensor_msgs::PointCloud2>("depth/points", 2);
+    image_ = nh_.advertise<sensor_msgs::Image>("depth/image_rect", 2);
+    camera_info_ = nh_.advertise<sensor_msgs::CameraInfo>("depth/camera_info", 2);
     planes_sub_ = nh_.subscribe("planes", 10, &NodeUnderTest::onPlanes, this);
-    labels_sub_ = nh_.subscribe("labels", 10, &NodeUnderTest::onLabels, this);
+    labels_sub_ = nh_.subscribe("plane_labels", 10, &NodeUnderTest::onLabels, this);
     markers_sub_ = nh_.subscribe("plane_markers", 10, &NodeUnderTest::onMarkers, this);
     rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
     diagnostics_sub_ = nh_.subscribe("/diagnostics", 10, &NodeUnderTest::onDiagnostics, this);
@@ -231,9 +240,10 @@ class NodeUnderTest {
   bool connect() {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kWaitSeconds);
     while (std::chrono::steady_clock::now() < deadline) {
-      if (points_.getNumSubscribers() > 0 && image_.getNumSubscribers() > 0 && camera_info_.getNumSubscribers() > 0 &&
+      const bool depth_connected = image_.getNumSubscribers() > 0 && camera_info_.getNumSubscribers() > 0;
+      if (points_.getNumSubscribers() > 0 && (depth_connected || !depth_images_) &&
           planes_sub_.getNumPublishers() > 0 && labels_sub_.getNumPublishers() > 0 &&
-          markers_sub_.getNumPublishers() > 0 && ros::service::exists("/floodplane/set_parameters", false)) {
+          markers_sub_.getNumPublishers() > 0 && ros::service::exists(nodeName() + "/set_parameters", false)) {
         return true;
       }
       ros::WallDuration(0.05).sleep();
@@ -338,8 +348,13 @@ class NodeUnderTest {
       parameter.value = value;
       service.request.config.bools.push_back(parameter);
     }
-    return ros::service::call("/floodplane/set_parameters", service);
+    return ros::service::call(nodeName() + "/set_parameters", service);
   }
+
+  const std::string& camera() const { return camera_; }
+  std::uint32_t depthImageSubscribers() const { return image_.getNumSubscribers(); }
+  // The node's (or the nodelet's) name: floodplane in the camera's namespace.
+  std::string nodeName() const { return "/" + camera_ + "/floodplane"; }
 
   // The test's own copy of the node's stream: what the library gives for the same frames.
   floodplane::Segmenter library;
@@ -420,6 +435,8 @@ class NodeUnderTest {
     arrived_.notify_all();
   }
 
+  std::string camera_;
+  bool depth_images_;
   ros::NodeHandle nh_;
   ros::Publisher points_, image_, camera_info_;
   ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_, diagnostics_sub_;
@@ -432,6 +449,8 @@ class NodeUnderTest {
   std::uint32_t frames_sent_ = 0;
 };
 
+// The instances under test, one a camera; `node` is the first.
+std::vector<std::unique_ptr<NodeUnderTest>> cameras;
 NodeUnderTest* node = nullptr;
 
 // Compares what the node published for `frame` with the library's result for the points in
@@ -446,17 +465,19 @@ bool hasFinitePoint(const floodplane::PointGrid& grid) {
   return false;
 }
 
-void expectLibrarysResult(const Published& published, const Frame& frame, const floodplane::PointGrid& layout) {
+void expectLibrarysResult(NodeUnderTest& under_test, const Published& published, const Frame& frame,
+                          const floodplane::PointGrid& layout) {
   ASSERT_TRUE(published.complete()) << frame.name << ": the node published nothing within " << kWaitSeconds << " s";
   Segmentation no_planes;
   no_planes.width = layout.width;
   no_planes.height = layout.height;
   no_planes.labels.assign(layout.size(), 0);
-  const Segmentation& expected = hasFinitePoint(layout) ? node->library.segment(layout, node->options_) : no_planes;
+  const Segmentation& expected =
+      hasFinitePoint(layout) ? under_test.library.segment(layout, under_test.options_) : no_planes;
   std::vector<std::uint32_t> labels(expected.planes.size());
   for (std::size_t k = 0; k < labels.size(); ++k) labels[k] = static_cast<std::uint32_t>(k + 1);
   std::vector<std::uint32_t> track_ids;
-  if (node->tracking) labels = track_ids = node->tracker.update(expected);
+  if (under_test.tracking) labels = track_ids = under_test.tracker.update(expected);
 
   // The node's time for the frame: some, and no more than the test waited for it.
   EXPECT_GT(published.planes->segmentation_time_ms, 0.0) << frame.name;
@@ -467,7 +488,7 @@ void expectLibrarysResult(const Published& published, const Frame& frame, const 
   for (std::size_t k = 0; k < planes.size(); ++k) {
     const auto& fit = expected.planes[k].fit;
     EXPECT_EQ(planes[k].label, labels[k]) << frame.name << " plane " << k;
-    EXPECT_EQ(planes[k].track_id, node->tracking ? track_ids[k] : 0u) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].track_id, under_test.tracking ? track_ids[k] : 0u) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].inlier_count, expected.planes[k].inlier_count) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].plane.coef[0], fit.normal.x()) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].plane.coef[1], fit.normal.y()) << frame.name << " plane " << k;
@@ -507,6 +528,10 @@ void expectLibrarysResult(const Published& published, const Frame& frame, const 
     EXPECT_NEAR(arrow.points[0].x, expected.planes[k].fit.centroid.x(), 1e-6);
     EXPECT_EQ(outline.header.frame_id, "camera_depth_optical_frame");
   }
+}
+
+void expectLibrarysResult(const Published& published, const Frame& frame, const floodplane::PointGrid& layout) {
+  expectLibrarysResult(*node, published, frame, layout);
 }
 
 TEST(SegmentationNode, PublishesTheLibrarysPlanesForEachOrganizedCloud) {
@@ -581,7 +606,9 @@ TEST(SegmentationNode, LogsAnErrorForAnUnorganizedCloud) {
   cloud.height = 1;
   cloud.row_step = cloud.width * cloud.point_step;
   const std::string error = node->sendBadCloud(cloud);
-  EXPECT_NE(error.find("frame skipped: points: the cloud is not organized"), std::string::npos) << error;
+  EXPECT_NE(error.find("frame skipped: /" + node->camera() + "/depth/points: the cloud is not organized"),
+            std::string::npos)
+      << error;
 }
 
 TEST(SegmentationNode, PublishesNoPlanesForACloudOfNaNsOnly) {
@@ -630,11 +657,14 @@ TEST(SegmentationNode, LogsAnErrorForADepthImageOfAnotherEncoding) {
   DepthFrame depth = depthFrame(renderedFrames().front(), true);
   depth.image.encoding = "mono8";
   const std::string error = node->sendBadDepth(depth);
-  EXPECT_NE(error.find("frame skipped: image_rect: depth image encoding 'mono8'"), std::string::npos) << error;
+  EXPECT_NE(error.find("frame skipped: /" + node->camera() + "/depth/image_rect: depth image encoding 'mono8'"),
+            std::string::npos)
+      << error;
 }
 
 TEST(SegmentationNode, LogsEachFramesTimeAtDebugLevel) {
-  const std::string process = ros::param::param<std::string>("~process", "/floodplane");
+  // The process that runs the node: the node itself, or the nodelet's manager.
+  const std::string process = ros::param::param<std::string>("~process", node->nodeName());
   ASSERT_TRUE(node->setLoggerLevel(process, "ros.floodplane_ros.timing", "debug")) << process;
   const std::size_t lines = node->timingLineCount();
   const Frame frame = renderedFrames().front();
@@ -643,7 +673,7 @@ TEST(SegmentationNode, LogsEachFramesTimeAtDebugLevel) {
   expectLibrarysResult(published, frame, pointsOf(cloud));
   const std::string line = node->waitForTimingLine(lines);
   ASSERT_TRUE(node->setLoggerLevel(process, "ros.floodplane_ros.timing", "info"));
-  EXPECT_NE(line.find("640x480 frame of camera_depth_optical_frame at " +
+  EXPECT_NE(line.find(node->nodeName() + ": 640x480 frame of camera_depth_optical_frame at " +
                       std::to_string(published.planes->header.stamp.sec) + ".000 segmented in "),
             std::string::npos)
       << line;
@@ -652,7 +682,7 @@ TEST(SegmentationNode, LogsEachFramesTimeAtDebugLevel) {
 }
 
 TEST(SegmentationNode, ReportsItsStreamOnDiagnostics) {
-  const std::string name = ros::param::param<std::string>("~node", "/floodplane").substr(1) + ": segmentation";
+  const std::string name = node->nodeName().substr(1) + ": segmentation";
   // The frames the node published results for, and the bad messages the tests before sent (an
   // unorganized cloud, a mono8 depth image), are all counted.
   const std::size_t frames = node->framesAnswered();
@@ -675,6 +705,43 @@ TEST(SegmentationNode, GoesOnWithTheNextFrameAfterBadOnes) {
   expectLibrarysResult(node->sendCloud(cloud), frame, pointsOf(cloud));
 }
 
+// Two instances side by side, one a camera (two_cameras.test: a node, and a nodelet in the
+// second camera's manager): each segments the frames of its own camera and publishes its own
+// planes, with the same stamps on both, so that a frame or a result that crossed over would be
+// compared with the other camera's.
+TEST(TwoCameras, EachInstanceSegmentsItsOwnCamerasFrames) {
+  ASSERT_GE(cameras.size(), 2u) << "~cameras names fewer than two cameras";
+  NodeUnderTest& first = *cameras[0];
+  NodeUnderTest& second = *cameras[1];
+  // input:=points: a camera driver computes no depth image for them (its cloud is connected).
+  EXPECT_EQ(first.depthImageSubscribers(), 0u);
+  EXPECT_EQ(second.depthImageSubscribers(), 0u);
+  const std::vector<Frame> frames = renderedFrames();
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const Frame& first_frame = frames[k];
+    const Frame& second_frame = frames[frames.size() - 1 - k];
+    const sensor_msgs::PointCloud2 first_cloud = cloudMessage(first_frame);
+    const sensor_msgs::PointCloud2 second_cloud = cloudMessage(second_frame);
+    const Published first_planes = first.sendCloud(first_cloud);
+    const Published second_planes = second.sendCloud(second_cloud);
+    expectLibrarysResult(first, first_planes, first_frame, pointsOf(first_cloud));
+    expectLibrarysResult(second, second_planes, second_frame, pointsOf(second_cloud));
+    if (HasFatalFailure()) return;
+    ASSERT_EQ(first_planes.planes->header.stamp, second_planes.planes->header.stamp);
+    if (&first_frame != &second_frame) {
+      EXPECT_NE(first_planes.planes->planes.front().plane.coef, second_planes.planes->planes.front().plane.coef)
+          << "frame " << k << ": the two cameras' frames give the same largest plane";
+    }
+  }
+  // Each reports its own stream on /diagnostics, under its own name.
+  for (NodeUnderTest* camera : {&first, &second}) {
+    const std::string name = camera->nodeName().substr(1) + ": segmentation";
+    const Status status = camera->waitForStatus(name, frames.size(), 0);
+    EXPECT_FALSE(status.values.empty()) << "no report named '" << name << "' with " << frames.size()
+                                        << " frames on /diagnostics within " << kWaitSeconds << " s";
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -682,13 +749,20 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "floodplane_test");
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  NodeUnderTest under_test;
-  node = &under_test;
-  if (!under_test.connect()) {
-    std::cerr << "the node's topics and its set_parameters service did not come up within " << kWaitSeconds << " s\n";
-    return 1;
+  std::vector<std::string> names{"camera"};
+  ros::param::get("~cameras", names);
+  const bool depth_images = ros::param::param<std::string>("~input", "both") == "both";
+  for (const std::string& name : names) {
+    cameras.push_back(std::make_unique<NodeUnderTest>(name, depth_images));
+    if (!cameras.back()->connect()) {
+      std::cerr << "the topics of " << cameras.back()->nodeName() << " and its set_parameters service did not come "
+                << "up within " << kWaitSeconds << " s\n";
+      return 1;
+    }
   }
+  node = cameras.front().get();
   const int result = RUN_ALL_TESTS();
   node = nullptr;
+  cameras.clear();
   return result;
 }
