@@ -218,7 +218,8 @@ class SegmentationNodelet : public nodelet::Nodelet {
       std::lock_guard<std::mutex> lock(status_mutex_);
       status_->frameSegmented(time_ms, segmentation.planes.size());
     }
-    // `rosconsole set <node> ros.floodplane_ros.timing debug` shows a line a frame.
+    // A line a frame once the logger ros.floodplane_ros.timing is at debug level (README, "Speed
+    // in sight").
     ROS_DEBUG_NAMED("timing", "%s: %dx%d frame of %s at %.3f segmented in %.2f ms: %zu planes", getName().c_str(),
                     grid.width, grid.height, header.frame_id.c_str(), header.stamp.toSec(), time_ms,
                     segmentation.planes.size());
