@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
-# The installed package: the API headers, the CMake package floodplane (components core and
-# pcl, one targets file each: floodplaneConfig.cmake.in says why) and the pkg-config files
+# The installed package: the API headers, the CMake package floodplane (components core, pcl
+# and ros, one targets file each: floodplaneConfig.cmake.in says why) and the pkg-config files
 # floodplane-core.pc and floodplane.pc. Included by the top-level CMakeLists.txt after the
 # targets are defined (src/CMakeLists.txt installs them into their export sets).
 include(CMakePackageConfigHelpers)
@@ -25,6 +25,7 @@ install(EXPORT floodplane-core-targets NAMESPACE floodplane:: DESTINATION ${floo
 if(FLOODPLANE_WITH_PCL)
   install(EXPORT floodplane-pcl-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
 endif()
+install(EXPORT floodplane-ros-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/floodplaneConfig.cmake.in
   ${PROJECT_BINARY_DIR}/floodplaneConfig.cmake
   INSTALL_DESTINATION ${floodplane_cmake_dir})

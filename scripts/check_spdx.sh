@@ -10,7 +10,7 @@ missing=()
 while IFS= read -r file; do
   [ -f "$file" ] || continue
   head -n 5 "$file" | grep -q 'SPDX-License-Identifier: BSD-3-Clause' || missing+=("$file")
-done < <(git ls-files | grep -E '(\.(h|hpp|cpp|cc|py|sh|cmake|in|launch|xml|cfg|msg|test)|CMakeLists\.txt|^\.ci/run)$' |
+done < <(git ls-files | grep -E '(\.(h|hpp|cpp|cc|py|sh|cmake|in|launch|xml|cfg|msg|test|rviz)|CMakeLists\.txt|^\.ci/run)$' |
          grep -vE '(^|/)(package\.xml)$')
 if [ ${#missing[@]} -gt 0 ]; then
   echo "check_spdx: these files lack 'SPDX-License-Identifier: BSD-3-Clause' in their first 5 lines:" >&2

@@ -3,17 +3,29 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs the optional ROS 1 part's packages from Debian 12 (ROS Noetic's libraries as Debian
 # packages them; Debian 12 has no ROS 2): what ros/floodplane_ros needs to build, its nodelet
-# and node, dynamic reconfigure, and rostest with a master to run its test. The rest of
-# floodplane needs none of them (scripts/install_deps.sh). As root it installs them;
-# otherwise it prints the command to run and fails, so nothing half-happens.
+# and node, dynamic reconfigure, diagnostics and rostest with a master to run its test, and
+# what a ROS user works with next to the node (README, "Use it in ROS"): catkin_make for a
+# workspace, rosrun, the Python messages that `rostopic echo` of the node's topics imports,
+# pcd_to_pointcloud to play a PCD file and rviz to look at the planes. The rest of floodplane
+# needs none of them (scripts/install_deps.sh). As root it installs them; otherwise it prints
+# the command to run and fails, so nothing half-happens.
 set -euo pipefail
 
 packages=(
-  ros-core-dev                               # catkin, roscpp, rosbag, the std/sensor/shape/visualization messages
+  ros-core-dev                               # roscpp, rosbag, rostopic, the C++ std/sensor/shape/visualization messages
+  catkin                                     # catkin_make: the package built in a catkin workspace
   libnodeletlib-dev libnodeletlib-tools      # the nodelet and the `nodelet` manager executable
   libimage-transport-dev                     # depth image + CameraInfo subscription (depth_image_proc's way)
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure  # dynamic_reconfigure (C++ and its cfg generator)
+  libdiagnostic-updater-dev                  # the node's status on /diagnostics (diagnostic_updater)
   python3-rostest                            # rostest (roslaunch with a master on a port of its own)
+  # The Python messages of the node's topics and of the ones floodplane_ros/Planes contains:
+  # `rostopic echo` imports them.
+  python3-std-msgs python3-sensor-msgs python3-geometry-msgs python3-shape-msgs
+  python3-visualization-msgs python3-diagnostic-msgs
+  rosbash                                    # rosrun
+  pcl-ros-tools                              # pcd_to_pointcloud: a PCD file played as a PointCloud2 topic
+  rviz                                       # the planes seen
 )
 
 missing=()

@@ -69,8 +69,10 @@ float readCoordinate(const std::uint8_t* point, const PointField& field) {
 }  // namespace
 
 CloudPoints readCloudPoints(const CloudView& cloud) {
-  if (cloud.width == 0 || cloud.height == 0) throw std::invalid_argument("the cloud is empty");
-  if (cloud.height == 1) {
+  // A cloud without points is a frame without points (no planes), whatever its height says;
+  // one row of points is how ROS marks an unorganized cloud.
+  const bool no_points = cloud.width == 0 || cloud.height == 0;
+  if (cloud.height == 1 && !no_points) {
     throw std::invalid_argument("the cloud is not organized (height 1, width " + std::to_string(cloud.width) +
                                 "): floodplane needs the points on the sensor's image grid");
   }
@@ -85,7 +87,7 @@ CloudPoints readCloudPoints(const CloudView& cloud) {
                                 bytes(row_bytes) + ")");
   }
   const std::uint64_t needed = product(cloud.row_step, cloud.height);
-  if (cloud.data == nullptr || cloud.data_size < needed) {
+  if ((cloud.data == nullptr ? 0 : cloud.data_size) < needed) {
     throw std::invalid_argument("the cloud's data holds " + bytes(cloud.data == nullptr ? 0 : cloud.data_size) +
                                 ", row_step x height is " + bytes(needed));
   }
@@ -96,6 +98,7 @@ CloudPoints readCloudPoints(const CloudView& cloud) {
   CloudPoints points;
   points.grid_.width = static_cast<int>(cloud.width);
   points.grid_.height = static_cast<int>(cloud.height);
+  if (no_points) return points;
   const auto f32 = static_cast<std::uint8_t>(FieldType::float32);
   const bool in_place = x.datatype == f32 && y.datatype == f32 && z.datatype == f32 && y.offset == x.offset + 4 &&
                         z.offset == x.offset + 8 && x.offset % 4 == 0 && cloud.point_step % 4 == 0 &&

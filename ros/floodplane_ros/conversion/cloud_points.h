@@ -63,9 +63,10 @@ class CloudPoints {
 };
 
 /// Reads the points of `cloud`. Throws std::invalid_argument with a one-line reason when the
-/// cloud is not organized (height 1), is empty, lacks a float32 or float64 x, y or z field,
-/// is big-endian, or when its steps, fields and data size do not fit together. Non-finite
-/// coordinates are holes, as in the library.
+/// cloud is not organized (height 1), lacks a float32 or float64 x, y or z field, is
+/// big-endian, or when its steps, fields and data size do not fit together. Non-finite
+/// coordinates are holes, as in the library. A cloud without points (width or height 0) gives
+/// a grid of that size without points: a frame with no planes.
 CloudPoints readCloudPoints(const CloudView& cloud);
 
 /// Whether any point of `grid` has finite x, y and z (stops at the first).

@@ -57,7 +57,6 @@ io::DepthCamera depthCamera(const CameraInfoView& info, const std::string& encod
 
 void backProjectDepthImage(const ImageView& image, const CameraInfoView& info, std::vector<float>& xyz) {
   const io::DepthCamera camera = depthCamera(info, image.encoding);
-  if (image.width == 0 || image.height == 0) throw std::invalid_argument("the depth image is empty");
   if (image.is_bigendian != hostIsBigEndian()) {
     throw std::invalid_argument(std::string("the depth image is ") + (image.is_bigendian ? "big" : "little") +
                                 "-endian, this machine is not");
@@ -66,6 +65,11 @@ void backProjectDepthImage(const ImageView& image, const CameraInfoView& info, s
     throw std::invalid_argument("camera_info is " + std::to_string(info.width) + "x" + std::to_string(info.height) +
                                 ", the depth image " + std::to_string(image.width) + "x" +
                                 std::to_string(image.height));
+  }
+  // An image without pixels is a frame without points (no planes).
+  if (image.width == 0 || image.height == 0) {
+    xyz.clear();
+    return;
   }
   const std::uint64_t pixel_bytes = isMillimetres(image.encoding) ? 2 : 4;
   const std::uint64_t row_bytes = pixel_bytes * image.width;

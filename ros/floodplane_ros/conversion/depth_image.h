@@ -45,10 +45,11 @@ double depthUnitsPerMetre(const std::string& encoding);
 io::DepthCamera depthCamera(const CameraInfoView& info, const std::string& encoding);
 
 /// Back-projects `image` through `info` into `xyz` (3 floats a pixel, row-major, NaN where
-/// there is no return: 0, NaN, infinite or negative depth), resized to fit. Throws
-/// std::invalid_argument with a one-line reason for an encoding other than 16UC1, mono16 or
-/// 32FC1, a byte order other than this machine's, an empty image, a step or data size that
-/// does not hold the rows, a K that depthCamera rejects, or a CameraInfo of another size.
+/// there is no return: 0, NaN, infinite or negative depth), resized to fit: empty for an image
+/// without pixels (width or height 0). Throws std::invalid_argument with a one-line reason for
+/// an encoding other than 16UC1, mono16 or 32FC1, a byte order other than this machine's, a
+/// step or data size that does not hold the rows, a K that depthCamera rejects, or a
+/// CameraInfo of another size.
 void backProjectDepthImage(const ImageView& image, const CameraInfoView& info, std::vector<float>& xyz);
 
 }  // namespace floodplane::conversion

@@ -2,9 +2,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "frame_segmenter.h"
 
-#include <stdexcept>
-#include <string>
-
 #include "cloud_points.h"
 
 namespace floodplane::conversion {
@@ -24,16 +21,19 @@ void FrameSegmenter::setSettings(const SegmentationSettings& settings) {
 }
 
 const Segmentation& FrameSegmenter::segment(const PointGrid& grid) {
-  if (!hasFinitePoint(grid)) {
-    throw std::invalid_argument("no point of the " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
-                                " frame is finite (all NaN): nothing to segment");
+  const Segmentation* segmentation = &empty_;
+  if (hasFinitePoint(grid)) {
+    Segmenter::Options options;
+    options.head_start = settings_.head_start;
+    segmentation = &segmenter_.segment(grid, options);
+  } else {
+    empty_.width = grid.width;
+    empty_.height = grid.height;
+    empty_.labels.assign(grid.size(), 0);
   }
-  Segmenter::Options options;
-  options.head_start = settings_.head_start;
-  const Segmentation& segmentation = segmenter_.segment(grid, options);
   track_ids_.clear();
-  if (settings_.tracking) track_ids_ = tracker_.update(segmentation);
-  return segmentation;
+  if (settings_.tracking) track_ids_ = tracker_.update(*segmentation);
+  return *segmentation;
 }
 
 }  // namespace floodplane::conversion

@@ -40,9 +40,13 @@ class FrameSegmenter {
   void setSettings(const SegmentationSettings& settings);
   const SegmentationSettings& settings() const { return settings_; }
 
-  /// Segments the next frame of the stream. Throws std::invalid_argument when the grid has
-  /// no finite point (a covered lens, a wrong unit: no frame to segment), before the stream's
-  /// state changes. The result is valid until the next call.
+  /// Segments the next frame of the stream. The result is valid until the next call.
+  ///
+  /// A frame without a finite point (all NaN: a covered lens, a depth image of zeros; or no
+  /// pixel at all) is a frame with no planes, not an error, as everywhere in floodplane: its
+  /// result has the grid's size, every label 0 and no plane. The library does not see it, so
+  /// the stream's noise model stays the last real frame's (such a frame says nothing about the
+  /// noise); with tracking, the tracker sees a frame without planes.
   const Segmentation& segment(const PointGrid& grid);
 
   /// The track id of each plane of the last frame; empty when tracking is off.
@@ -53,6 +57,7 @@ class FrameSegmenter {
   Segmenter segmenter_;
   PlaneTracker tracker_;
   std::vector<std::uint32_t> track_ids_;
+  Segmentation empty_;  // the result of a frame without a finite point
 };
 
 }  // namespace floodplane::conversion

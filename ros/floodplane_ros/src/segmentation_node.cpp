@@ -11,8 +11,10 @@ int main(int argc, char** argv) {
   nodelet::Loader loader;
   const nodelet::M_string remappings = ros::names::getRemappings();
   const nodelet::V_string arguments(argv + 1, argv + argc);
+  // Why it did not load is logged: by the loader for a nodelet it cannot find, by the nodelet
+  // for a parameter it refuses.
   if (!loader.load(ros::this_node::getName(), "floodplane_ros/SegmentationNodelet", remappings, arguments)) {
-    ROS_FATAL("could not load the nodelet floodplane_ros/SegmentationNodelet (is floodplane_ros on ROS_PACKAGE_PATH?)");
+    ROS_FATAL("could not load the nodelet floodplane_ros/SegmentationNodelet: see the error above");
     return 1;
   }
   ros::spin();

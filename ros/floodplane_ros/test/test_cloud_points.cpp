@@ -13,6 +13,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -136,9 +137,22 @@ TEST(CloudPoints, RejectsAnUnorganizedCloud) {
   EXPECT_NE(problemOf(m.view).find("not organized"), std::string::npos) << problemOf(m.view);
 }
 
-TEST(CloudPoints, RejectsAnEmptyCloud) {
-  const Message m = message(0, 0, 32, pclXyzRgb());
-  EXPECT_EQ(problemOf(m.view), "the cloud is empty");
+TEST(CloudPoints, ReadsACloudWithoutPointsAsAnEmptyGrid) {
+  // No point at all is a frame without points, not an error, also in PCL's unorganized form
+  // (height 1); the data need not be there.
+  for (const auto& [width, height] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{{0, 0}, {0, 1}, {4, 0}}) {
+    Message m = message(width, height, 32, pclXyzRgb());
+    m.view.data = nullptr;
+    m.view.data_size = 0;
+    const auto points = readCloudPoints(m.view);
+    EXPECT_EQ(points.grid().width, static_cast<int>(width));
+    EXPECT_EQ(points.grid().height, static_cast<int>(height));
+    EXPECT_EQ(points.grid().size(), 0u);
+    EXPECT_FALSE(hasFinitePoint(points.grid()));
+  }
+  // Its layout must still be one the points could be read from.
+  const Message m = message(0, 0, 16, {{"x", 0, kFloat32, 1}, {"y", 4, kFloat32, 1}});
+  EXPECT_EQ(problemOf(m.view), "the cloud has no z field");
 }
 
 TEST(CloudPoints, RejectsACloudWithoutZ) {

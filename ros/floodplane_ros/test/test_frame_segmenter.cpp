@@ -1,8 +1,9 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // A node's stream of frames: the library's own results frame by frame (with head starts),
-// track ids from the library's tracker, frames without points rejected before they touch the
-// stream, and unusable settings refused.
+// track ids from the library's tracker, frames without a finite point answered with no planes
+// (not an error) without touching the stream's noise model, tiny frames segmented as the
+// library segments them, and unusable settings refused.
 
 #include "frame_segmenter.h"
 
@@ -12,6 +13,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/test_scenes.h"
@@ -65,7 +67,26 @@ TEST(FrameSegmenter, GivesTheLibrarysResultsFrameByFrameWithHeadStarts) {
   EXPECT_TRUE(node.segment(frames[0].grid()).stats.head_start);
 }
 
-TEST(FrameSegmenter, RejectsAFrameWithoutFinitePointsAndLeavesTheStreamAsItWas) {
+// A frame without a finite point: every label 0, no plane, the grid's size.
+void expectNoPlanes(const Segmentation& result, int width, int height) {
+  EXPECT_EQ(result.width, width);
+  EXPECT_EQ(result.height, height);
+  EXPECT_EQ(result.labels, std::vector<std::uint32_t>(static_cast<std::size_t>(width * height), 0u));
+  EXPECT_TRUE(result.planes.empty());
+}
+
+struct NaNFrame {
+  std::vector<float> xyz;
+  floodplane::PointGrid grid;
+  NaNFrame(int width, int height)
+      : xyz(3 * static_cast<std::size_t>(width * height), std::numeric_limits<float>::quiet_NaN()) {
+    grid.data = xyz.empty() ? nullptr : xyz.data();
+    grid.width = width;
+    grid.height = height;
+  }
+};
+
+TEST(FrameSegmenter, GivesAFrameWithoutFinitePointsNoPlanesAndLeavesTheNoiseModelAsItWas) {
   const auto frames = noisyFrames(2);
   FrameSegmenter node;
   Segmenter library;
@@ -74,19 +95,60 @@ TEST(FrameSegmenter, RejectsAFrameWithoutFinitePointsAndLeavesTheStreamAsItWas) 
   library.segment(frames[0].grid(), options);
   node.segment(frames[0].grid());
 
-  std::vector<float> nothing(3 * 160 * 120, std::numeric_limits<float>::quiet_NaN());
-  floodplane::PointGrid empty;
-  empty.data = nothing.data();
-  empty.width = 160;
-  empty.height = 120;
-  try {
-    node.segment(empty);
-    FAIL() << "an all-NaN frame was segmented";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_EQ(std::string(error.what()), "no point of the 160x120 frame is finite (all NaN): nothing to segment");
+  expectNoPlanes(node.segment(NaNFrame(160, 120).grid), 160, 120);
+  // The next frame continues from frame 0 (the library never saw the empty one): the same
+  // planes as the library's, with frame 0's noise model.
+  const Segmentation& next = node.segment(frames[1].grid());
+  expectSame(next, library.segment(frames[1].grid(), options));
+  EXPECT_TRUE(next.stats.head_start);
+}
+
+TEST(FrameSegmenter, GivesFramesWithoutPixelsNoPlanes) {
+  FrameSegmenter node;
+  for (const auto& [width, height] : std::vector<std::pair<int, int>>{{0, 0}, {0, 1}, {5, 0}}) {
+    expectNoPlanes(node.segment(NaNFrame(width, height).grid), width, height);
   }
-  // The next frame continues from frame 0, as if the empty one had never come.
-  expectSame(node.segment(frames[1].grid()), library.segment(frames[1].grid(), options));
+}
+
+TEST(FrameSegmenter, SegmentsTinyFramesAsTheLibraryDoes) {
+  FrameSegmenter node;
+  Segmenter library;
+  Segmenter::Options options;
+  options.head_start = true;
+  // Fewer than three points hold no plane; four already may.
+  for (const auto& [width, height] : std::vector<std::pair<int, int>>{{1, 1}, {1, 2}, {2, 1}, {2, 2}, {3, 2}}) {
+    floodplane::test::Pinhole tiny;
+    tiny.width = width;
+    tiny.height = height;
+    const auto frame = floodplane::test::render(tiny, {floodplane::test::frontalPlane(1.0)});
+    const Segmentation& result = node.segment(frame.grid());
+    expectSame(result, library.segment(frame.grid(), options));
+    if (width * height < 3) expectNoPlanes(result, width, height);
+  }
+}
+
+TEST(FrameSegmenter, ShowsTheTrackerAFrameWithoutFinitePointsAsOneWithoutPlanes) {
+  const auto frames = noisyFrames(2);
+  SegmentationSettings settings;
+  settings.tracking = true;
+  FrameSegmenter node(settings);
+  Segmenter library;
+  PlaneTracker tracker;
+  Segmenter::Options options;
+  options.head_start = true;
+  Segmentation nothing;
+  nothing.width = 160;
+  nothing.height = 120;
+  nothing.labels.assign(160 * 120, 0);
+
+  node.segment(frames[0].grid());
+  EXPECT_EQ(node.trackIds(), tracker.update(library.segment(frames[0].grid(), options)));
+  node.segment(NaNFrame(160, 120).grid);
+  EXPECT_EQ(node.trackIds(), tracker.update(nothing));
+  EXPECT_TRUE(node.trackIds().empty());
+  node.segment(frames[1].grid());
+  EXPECT_EQ(node.trackIds(), tracker.update(library.segment(frames[1].grid(), options)));
+  ASSERT_FALSE(node.trackIds().empty());
 }
 
 TEST(FrameSegmenter, GivesTheLibrarysTrackIdsWhenTracking) {

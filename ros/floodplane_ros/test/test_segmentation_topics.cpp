@@ -1,19 +1,28 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The rostest of the node and the nodelet: frames in on their topics (the real frames of
+// The rostest of the node and the nodelet, in a camera's namespace as floodplane.launch puts
+// them (~cameras names the cameras; the first one's instance gets the SegmentationNode tests,
+// two get TwoCameras'): frames in on their topics (the real frames of
 // ../shared/data/real when they are there, rendered ones otherwise; rendered depth images in
 // millimetres and in metres), the published planes, label cloud and markers compared with the
 // library's own output for the same frames, parameters changed by dynamic_reconfigure, track
-// ids, and bad messages (an unorganized cloud, NaN everywhere, a wrong encoding) answered by
-// an error in the log and nothing else: the node goes on with the next frame.
+// ids, frames without a finite point (a cloud of NaN, a depth image of zeros) answered with no
+// planes, and bad messages (an unorganized cloud, a wrong encoding) answered by an error in
+// the log and nothing else: the node goes on with the next frame. Each frame's time comes in
+// its planes, at debug level in the log, and in the node's status on /diagnostics.
 //
 // The tests run in order against one node, whose stream of frames the test follows with its
 // own Segmenter and PlaneTracker (head starts make a frame's result depend on the frames
 // before it).
+//
+// ~input says what the launch file told the nodes to segment: both (clouds and depth images,
+// the default here) or points.
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <floodplane_ros/Planes.h>
 #include <ros/ros.h>
+#include <roscpp/SetLoggerLevel.h>
 #include <rosgraph_msgs/Log.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
@@ -33,6 +42,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -183,25 +193,46 @@ floodplane::PointGrid pointsOf(const sensor_msgs::PointCloud2& cloud) {
   return grid;
 }
 
+using Clock = std::chrono::steady_clock;
+
 // What the node published for one frame.
 struct Published {
   floodplane_ros::PlanesConstPtr planes;
   sensor_msgs::PointCloud2ConstPtr labels;
   visualization_msgs::MarkerArrayConstPtr markers;
+  // From just before the frame was sent to the planes' arrival: the node's time for the frame
+  // lies within it.
+  Clock::time_point sent;
+  Clock::time_point planes_arrived;
+  double roundTripMilliseconds() const {
+    return std::chrono::duration<double, std::milli>(planes_arrived - sent).count();
+  }
   bool complete() const { return planes && labels && markers; }
 };
 
-// The node's topics, seen from outside, and the test's mirror of its stream.
+// The node's report on /diagnostics: its level and its values by key.
+struct Status {
+  std::uint8_t level = 0;
+  std::string message;
+  std::string hardware_id;
+  std::map<std::string, std::string> values;
+};
+
+// The node's topics in its camera's namespace, seen from outside, and the test's mirror of its
+// stream.
 class NodeUnderTest {
  public:
-  NodeUnderTest() {
-    points_ = nh_.advertise<sensor_msgs::PointCloud2>("points", 2);
-    image_ = nh_.advertise<sensor_msgs::Image>("image_rect", 2);
-    camera_info_ = nh_.advertise<sensor_msgs::CameraInfo>("camera_info", 2);
+  // `depth_images`: the node segments depth images too (input:=both), not only clouds.
+  NodeUnderTest(const std::string& camera, bool depth_images)
+      : camera_(camera), depth_images_(depth_images), nh_("/" + camera) {
+    points_ = nh_.advertise<sensor_msgs::PointCloud2>("depth/points", 2);
+    image_ = nh_.advertise<sensor_msgs::Image>("depth/image_rect", 2);
+    camera_info_ = nh_.advertise<sensor_msgs::CameraInfo>("depth/camera_info", 2);
     planes_sub_ = nh_.subscribe("planes", 10, &NodeUnderTest::onPlanes, this);
-    labels_sub_ = nh_.subscribe("labels", 10, &NodeUnderTest::onLabels, this);
+    labels_sub_ = nh_.subscribe("plane_labels", 10, &NodeUnderTest::onLabels, this);
     markers_sub_ = nh_.subscribe("plane_markers", 10, &NodeUnderTest::onMarkers, this);
     rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
+    diagnostics_sub_ = nh_.subscribe("/diagnostics", 10, &NodeUnderTest::onDiagnostics, this);
     options_.head_start = true;  // the node's default
   }
 
@@ -209,9 +240,10 @@ class NodeUnderTest {
   bool connect() {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kWaitSeconds);
     while (std::chrono::steady_clock::now() < deadline) {
-      if (points_.getNumSubscribers() > 0 && image_.getNumSubscribers() > 0 && camera_info_.getNumSubscribers() > 0 &&
+      const bool depth_connected = image_.getNumSubscribers() > 0 && camera_info_.getNumSubscribers() > 0;
+      if (points_.getNumSubscribers() > 0 && (depth_connected || !depth_images_) &&
           planes_sub_.getNumPublishers() > 0 && labels_sub_.getNumPublishers() > 0 &&
-          markers_sub_.getNumPublishers() > 0 && ros::service::exists("/floodplane/set_parameters", false)) {
+          markers_sub_.getNumPublishers() > 0 && ros::service::exists(nodeName() + "/set_parameters", false)) {
         return true;
       }
       ros::WallDuration(0.05).sleep();
@@ -221,15 +253,68 @@ class NodeUnderTest {
 
   Published sendCloud(sensor_msgs::PointCloud2 cloud) {
     cloud.header.stamp = nextStamp();
+    markSent(cloud.header.stamp);
     points_.publish(cloud);
     return waitFor(cloud.header.stamp);
   }
 
   Published sendDepth(DepthFrame depth) {
     depth.image.header.stamp = depth.info.header.stamp = nextStamp();
+    markSent(depth.image.header.stamp);
     camera_info_.publish(depth.info);
     image_.publish(depth.image);
     return waitFor(depth.image.header.stamp);
+  }
+
+  // Sets a logger's level in the process that runs the node, as `rosconsole set` does.
+  bool setLoggerLevel(const std::string& process, const std::string& logger, const std::string& level) {
+    roscpp::SetLoggerLevel service;
+    service.request.logger = logger;
+    service.request.level = level;
+    return ros::service::call(process + "/set_logger_level", service);
+  }
+
+  // The first debug line of a frame's time logged after `since` such lines came ("" if none
+  // came within the wait). /rosout names the node, not the logger.
+  std::size_t timingLineCount() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return timing_lines_.size();
+  }
+  std::string waitForTimingLine(std::size_t since) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const bool logged = arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds),
+                                          [&] { return timing_lines_.size() > since || !ros::ok(); });
+    return logged ? timing_lines_[since] : std::string();
+  }
+
+  // The first report on /diagnostics named `name` that counts at least `frames` frames
+  // segmented and `skipped` messages skipped since the node started (an empty Status if none
+  // came within the wait).
+  Status waitForStatus(const std::string& name, std::size_t frames, std::size_t skipped) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const auto counts = [](const Status& status, const char* key, std::size_t least) {
+      const auto value = status.values.find(key);
+      return value != status.values.end() && std::stoul(value->second) >= least;
+    };
+    Status found;
+    arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds), [&] {
+      for (const Status& status : statuses_[name]) {
+        if (counts(status, "Frames segmented since start", frames) &&
+            counts(status, "Messages skipped since start", skipped)) {
+          found = status;
+          return true;
+        }
+      }
+      return !ros::ok();
+    });
+    return found;
+  }
+
+  // Frames the node published a complete result for.
+  std::size_t framesAnswered() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return static_cast<std::size_t>(
+        std::count_if(published_.begin(), published_.end(), [](const auto& entry) { return entry.second.complete(); }));
   }
 
   // Sends a bad cloud or depth image and returns the error the node logged ("" if none came
@@ -263,8 +348,13 @@ class NodeUnderTest {
       parameter.value = value;
       service.request.config.bools.push_back(parameter);
     }
-    return ros::service::call("/floodplane/set_parameters", service);
+    return ros::service::call(nodeName() + "/set_parameters", service);
   }
+
+  const std::string& camera() const { return camera_; }
+  std::uint32_t depthImageSubscribers() const { return image_.getNumSubscribers(); }
+  // The node's (or the nodelet's) name: floodplane in the camera's namespace.
+  std::string nodeName() const { return "/" + camera_ + "/floodplane"; }
 
   // The test's own copy of the node's stream: what the library gives for the same frames.
   floodplane::Segmenter library;
@@ -274,6 +364,11 @@ class NodeUnderTest {
 
  private:
   ros::Time nextStamp() { return ros::Time(1000 + ++frames_sent_, 0); }
+
+  void markSent(const ros::Time& stamp) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    published_[stamp].sent = Clock::now();
+  }
 
   Published waitFor(const ros::Time& stamp) {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -297,7 +392,11 @@ class NodeUnderTest {
   }
 
   void onPlanes(const floodplane_ros::PlanesConstPtr& planes) {
-    store(planes->header.stamp, [&](Published& p) { p.planes = planes; });
+    const Clock::time_point arrived = Clock::now();
+    store(planes->header.stamp, [&](Published& p) {
+      p.planes = planes;
+      p.planes_arrived = arrived;
+    });
   }
   void onLabels(const sensor_msgs::PointCloud2ConstPtr& labels) {
     store(labels->header.stamp, [&](Published& p) { p.labels = labels; });
@@ -307,9 +406,26 @@ class NodeUnderTest {
     store(markers->markers.front().header.stamp, [&](Published& p) { p.markers = markers; });
   }
   void onLog(const rosgraph_msgs::LogConstPtr& log) {
-    if (log->level != rosgraph_msgs::Log::ERROR || log->msg.find("frame skipped") == std::string::npos) return;
     std::lock_guard<std::mutex> lock(mutex_);
-    errors_.push_back(log->msg);
+    if (log->level == rosgraph_msgs::Log::ERROR && log->msg.find("frame skipped") != std::string::npos) {
+      errors_.push_back(log->msg);
+    } else if (log->level == rosgraph_msgs::Log::DEBUG && log->msg.find(" segmented in ") != std::string::npos) {
+      timing_lines_.push_back(log->msg);
+    } else {
+      return;
+    }
+    arrived_.notify_all();
+  }
+  void onDiagnostics(const diagnostic_msgs::DiagnosticArrayConstPtr& array) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& message : array->status) {
+      Status status;
+      status.level = message.level;
+      status.message = message.message;
+      status.hardware_id = message.hardware_id;
+      for (const auto& value : message.values) status.values[value.key] = value.value;
+      statuses_[message.name].push_back(std::move(status));
+    }
     arrived_.notify_all();
   }
   template <typename Set>
@@ -319,35 +435,60 @@ class NodeUnderTest {
     arrived_.notify_all();
   }
 
+  std::string camera_;
+  bool depth_images_;
   ros::NodeHandle nh_;
   ros::Publisher points_, image_, camera_info_;
-  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_;
+  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_, diagnostics_sub_;
   std::mutex mutex_;
   std::condition_variable arrived_;
   std::map<ros::Time, Published> published_;
   std::vector<std::string> errors_;
+  std::vector<std::string> timing_lines_;
+  std::map<std::string, std::vector<Status>> statuses_;
   std::uint32_t frames_sent_ = 0;
 };
 
+// The instances under test, one a camera; `node` is the first.
+std::vector<std::unique_ptr<NodeUnderTest>> cameras;
 NodeUnderTest* node = nullptr;
 
 // Compares what the node published for `frame` with the library's result for the points in
 // `layout`: the frame's points as the node got them. The layout matters to the last bits of
 // the plane fits (the core sums points in another order for PCL's 8-float stride than for 3).
-void expectLibrarysResult(const Published& published, const Frame& frame, const floodplane::PointGrid& layout) {
+// A frame without a finite point never reaches the node's Segmenter (its noise model stays the
+// last real frame's): its result is no plane, every label 0.
+bool hasFinitePoint(const floodplane::PointGrid& grid) {
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (grid.isFinite(i)) return true;
+  }
+  return false;
+}
+
+void expectLibrarysResult(NodeUnderTest& under_test, const Published& published, const Frame& frame,
+                          const floodplane::PointGrid& layout) {
   ASSERT_TRUE(published.complete()) << frame.name << ": the node published nothing within " << kWaitSeconds << " s";
-  const Segmentation& expected = node->library.segment(layout, node->options_);
+  Segmentation no_planes;
+  no_planes.width = layout.width;
+  no_planes.height = layout.height;
+  no_planes.labels.assign(layout.size(), 0);
+  const Segmentation& expected =
+      hasFinitePoint(layout) ? under_test.library.segment(layout, under_test.options_) : no_planes;
   std::vector<std::uint32_t> labels(expected.planes.size());
   for (std::size_t k = 0; k < labels.size(); ++k) labels[k] = static_cast<std::uint32_t>(k + 1);
   std::vector<std::uint32_t> track_ids;
-  if (node->tracking) labels = track_ids = node->tracker.update(expected);
+  if (under_test.tracking) labels = track_ids = under_test.tracker.update(expected);
+
+  // The node's time for the frame: some, and no more than the test waited for it.
+  EXPECT_GT(published.planes->segmentation_time_ms, 0.0) << frame.name;
+  EXPECT_LT(published.planes->segmentation_time_ms, published.roundTripMilliseconds()) << frame.name;
 
   const auto& planes = published.planes->planes;
   ASSERT_EQ(planes.size(), expected.planes.size()) << frame.name;
   for (std::size_t k = 0; k < planes.size(); ++k) {
     const auto& fit = expected.planes[k].fit;
     EXPECT_EQ(planes[k].label, labels[k]) << frame.name << " plane " << k;
-    EXPECT_EQ(planes[k].track_id, node->tracking ? track_ids[k] : 0u) << frame.name << " plane " << k;
+    EXPECT_EQ(planes[k].track_id, under_test.tracking ? track_ids[k] : 0u) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].inlier_count, expected.planes[k].inlier_count) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].plane.coef[0], fit.normal.x()) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].plane.coef[1], fit.normal.y()) << frame.name << " plane " << k;
@@ -387,6 +528,10 @@ void expectLibrarysResult(const Published& published, const Frame& frame, const 
     EXPECT_NEAR(arrow.points[0].x, expected.planes[k].fit.centroid.x(), 1e-6);
     EXPECT_EQ(outline.header.frame_id, "camera_depth_optical_frame");
   }
+}
+
+void expectLibrarysResult(const Published& published, const Frame& frame, const floodplane::PointGrid& layout) {
+  expectLibrarysResult(*node, published, frame, layout);
 }
 
 TEST(SegmentationNode, PublishesTheLibrarysPlanesForEachOrganizedCloud) {
@@ -461,27 +606,140 @@ TEST(SegmentationNode, LogsAnErrorForAnUnorganizedCloud) {
   cloud.height = 1;
   cloud.row_step = cloud.width * cloud.point_step;
   const std::string error = node->sendBadCloud(cloud);
-  EXPECT_NE(error.find("frame skipped: points: the cloud is not organized"), std::string::npos) << error;
+  EXPECT_NE(error.find("frame skipped: /" + node->camera() + "/depth/points: the cloud is not organized"),
+            std::string::npos)
+      << error;
 }
 
-TEST(SegmentationNode, LogsAnErrorForACloudOfNaNsOnly) {
+TEST(SegmentationNode, PublishesNoPlanesForACloudOfNaNsOnly) {
   Frame frame = renderedFrames().front();
+  const sensor_msgs::PointCloud2 before = cloudMessage(frame);
+  const Published planes_before = node->sendCloud(before);
+  expectLibrarysResult(planes_before, frame, pointsOf(before));
+  ASSERT_TRUE(planes_before.complete());
+  ASSERT_GT(planes_before.markers->markers.size(), 1u);
+  frame.name = "a cloud of NaNs";
   std::fill(frame.xyz.begin(), frame.xyz.end(), std::numeric_limits<float>::quiet_NaN());
-  const std::string error = node->sendBadCloud(cloudMessage(frame));
-  EXPECT_NE(error.find("frame skipped: points: no point of the 640x480 frame is finite"), std::string::npos) << error;
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  const Published published = node->sendCloud(cloud);
+  // No planes, every label 0, and the markers of the frame before cleared (a DELETEALL alone).
+  expectLibrarysResult(published, frame, pointsOf(cloud));
+  ASSERT_TRUE(published.complete());
+  EXPECT_TRUE(published.planes->planes.empty());
+  EXPECT_EQ(published.markers->markers.size(), 1u);
+}
+
+TEST(SegmentationNode, PublishesNoPlanesForADepthImageOfZeros) {
+  DepthFrame depth = depthFrame(renderedFrames().front(), true);
+  std::fill(depth.image.data.begin(), depth.image.data.end(), std::uint8_t{0});
+  std::fill(depth.points.xyz.begin(), depth.points.xyz.end(), std::numeric_limits<float>::quiet_NaN());
+  depth.points.name = "a depth image of zeros";
+  const Published published = node->sendDepth(depth);
+  expectLibrarysResult(published, depth.points, depth.points.grid());
+  ASSERT_TRUE(published.complete());
+  EXPECT_TRUE(published.planes->planes.empty());
+}
+
+TEST(SegmentationNode, PublishesNoPlanesForACloudTooSmallForOne) {
+  Frame frame;
+  frame.name = "a cloud of one column of two points";  // organized: a height of 1 would not be
+  frame.width = 1;
+  frame.height = 2;
+  frame.xyz = {0.0f, -0.01f, 1.0f, 0.0f, 0.01f, 1.0f};
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  const Published published = node->sendCloud(cloud);
+  expectLibrarysResult(published, frame, pointsOf(cloud));
+  ASSERT_TRUE(published.complete());
+  EXPECT_TRUE(published.planes->planes.empty());
 }
 
 TEST(SegmentationNode, LogsAnErrorForADepthImageOfAnotherEncoding) {
   DepthFrame depth = depthFrame(renderedFrames().front(), true);
   depth.image.encoding = "mono8";
   const std::string error = node->sendBadDepth(depth);
-  EXPECT_NE(error.find("frame skipped: image_rect: depth image encoding 'mono8'"), std::string::npos) << error;
+  EXPECT_NE(error.find("frame skipped: /" + node->camera() + "/depth/image_rect: depth image encoding 'mono8'"),
+            std::string::npos)
+      << error;
+}
+
+TEST(SegmentationNode, LogsEachFramesTimeAtDebugLevel) {
+  // The process that runs the node: the node itself, or the nodelet's manager.
+  const std::string process = ros::param::param<std::string>("~process", node->nodeName());
+  ASSERT_TRUE(node->setLoggerLevel(process, "ros.floodplane_ros.timing", "debug")) << process;
+  const std::size_t lines = node->timingLineCount();
+  const Frame frame = renderedFrames().front();
+  const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
+  const Published published = node->sendCloud(cloud);
+  expectLibrarysResult(published, frame, pointsOf(cloud));
+  const std::string line = node->waitForTimingLine(lines);
+  ASSERT_TRUE(node->setLoggerLevel(process, "ros.floodplane_ros.timing", "info"));
+  EXPECT_NE(line.find(node->nodeName() + ": 640x480 frame of camera_depth_optical_frame at " +
+                      std::to_string(published.planes->header.stamp.sec) + ".000 segmented in "),
+            std::string::npos)
+      << line;
+  EXPECT_NE(line.find(" ms: " + std::to_string(published.planes->planes.size()) + " planes"), std::string::npos)
+      << line;
+}
+
+TEST(SegmentationNode, ReportsItsStreamOnDiagnostics) {
+  const std::string name = node->nodeName().substr(1) + ": segmentation";
+  // The frames the node published results for, and the bad messages the tests before sent (an
+  // unorganized cloud, a mono8 depth image), are all counted.
+  const std::size_t frames = node->framesAnswered();
+  ASSERT_GT(frames, 0u);
+  const Status status = node->waitForStatus(name, frames, 2);
+  ASSERT_FALSE(status.values.empty()) << "no report named '" << name << "' on /diagnostics with " << frames
+                                      << " frames and 2 skipped messages since the start within " << kWaitSeconds
+                                      << " s";
+  EXPECT_EQ(status.hardware_id, "none");
+  for (const char* key :
+       {"Window (s)", "Frames segmented", "Messages skipped", "Frequency (Hz)", "Time per frame, mean (ms)",
+        "Time per frame, max (ms)", "Planes in the last frame", "Messages skipped since start"}) {
+    EXPECT_EQ(status.values.count(key), 1u) << key;
+  }
 }
 
 TEST(SegmentationNode, GoesOnWithTheNextFrameAfterBadOnes) {
   const Frame frame = renderedFrames().back();
   const sensor_msgs::PointCloud2 cloud = cloudMessage(frame);
   expectLibrarysResult(node->sendCloud(cloud), frame, pointsOf(cloud));
+}
+
+// Two instances side by side, one a camera (two_cameras.test: a node, and a nodelet in the
+// second camera's manager): each segments the frames of its own camera and publishes its own
+// planes, with the same stamps on both, so that a frame or a result that crossed over would be
+// compared with the other camera's.
+TEST(TwoCameras, EachInstanceSegmentsItsOwnCamerasFrames) {
+  ASSERT_GE(cameras.size(), 2u) << "~cameras names fewer than two cameras";
+  NodeUnderTest& first = *cameras[0];
+  NodeUnderTest& second = *cameras[1];
+  // input:=points: a camera driver computes no depth image for them (its cloud is connected).
+  EXPECT_EQ(first.depthImageSubscribers(), 0u);
+  EXPECT_EQ(second.depthImageSubscribers(), 0u);
+  const std::vector<Frame> frames = renderedFrames();
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const Frame& first_frame = frames[k];
+    const Frame& second_frame = frames[frames.size() - 1 - k];
+    const sensor_msgs::PointCloud2 first_cloud = cloudMessage(first_frame);
+    const sensor_msgs::PointCloud2 second_cloud = cloudMessage(second_frame);
+    const Published first_planes = first.sendCloud(first_cloud);
+    const Published second_planes = second.sendCloud(second_cloud);
+    expectLibrarysResult(first, first_planes, first_frame, pointsOf(first_cloud));
+    expectLibrarysResult(second, second_planes, second_frame, pointsOf(second_cloud));
+    if (HasFatalFailure()) return;
+    ASSERT_EQ(first_planes.planes->header.stamp, second_planes.planes->header.stamp);
+    if (&first_frame != &second_frame) {
+      EXPECT_NE(first_planes.planes->planes.front().plane.coef, second_planes.planes->planes.front().plane.coef)
+          << "frame " << k << ": the two cameras' frames give the same largest plane";
+    }
+  }
+  // Each reports its own stream on /diagnostics, under its own name.
+  for (NodeUnderTest* camera : {&first, &second}) {
+    const std::string name = camera->nodeName().substr(1) + ": segmentation";
+    const Status status = camera->waitForStatus(name, frames.size(), 0);
+    EXPECT_FALSE(status.values.empty()) << "no report named '" << name << "' with " << frames.size()
+                                        << " frames on /diagnostics within " << kWaitSeconds << " s";
+  }
 }
 
 }  // namespace
@@ -491,13 +749,20 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "floodplane_test");
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  NodeUnderTest under_test;
-  node = &under_test;
-  if (!under_test.connect()) {
-    std::cerr << "the node's topics and its set_parameters service did not come up within " << kWaitSeconds << " s\n";
-    return 1;
+  std::vector<std::string> names{"camera"};
+  ros::param::get("~cameras", names);
+  const bool depth_images = ros::param::param<std::string>("~input", "both") == "both";
+  for (const std::string& name : names) {
+    cameras.push_back(std::make_unique<NodeUnderTest>(name, depth_images));
+    if (!cameras.back()->connect()) {
+      std::cerr << "the topics of " << cameras.back()->nodeName() << " and its set_parameters service did not come "
+                << "up within " << kWaitSeconds << " s\n";
+      return 1;
+    }
   }
+  node = cameras.front().get();
   const int result = RUN_ALL_TESTS();
   node = nullptr;
+  cameras.clear();
   return result;
 }
