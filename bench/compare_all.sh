@@ -35,8 +35,8 @@ if [ "$(find "$build/data/random/report" -name 'random_*.pcd' 2>/dev/null | wc -
 fi
 mkdir -p "$results"
 
-all=floodplane,floodplane/2,ransac,open3d_ransac,omps
-fast=floodplane,floodplane/2,omps
+all=floodplane,floodplane/1,ransac,open3d_ransac,omps
+fast=floodplane,floodplane/1,omps
 
 # Writes the JSON of one pcd_compare run to <name>.json and the tables and CSV that
 # compare_tables.py makes from it to <name>.md and <name>.csv (through temporaries: a run that

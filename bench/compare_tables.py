@@ -11,7 +11,8 @@ Means follow pcd_compare's: times over every file, accuracy (IoU, Hoover counts 
 over the files whose ground truth keeps a plane, the false-plane fraction over the files where
 it is defined, "x floodplane" as the ratio of the mean medians and only when floodplane ran on
 every file of the table. An undefined figure prints as "-". floodplane at sub-sampling N is the
-method "floodplane/N" ("floodplane" is 1); the sub-sampling table is printed when a factor of
+method "floodplane/N" ("floodplane" is the library's defaults, at the factor its configuration
+line names: 1 in reports from before 4 became the default); the sub-sampling table is printed when a factor of
 4 or more ran. Reports of the older format (a per-file "resolutions" object) are read too.
 
 Example:
@@ -80,7 +81,7 @@ class Result:
         parts = field(entry, "parts_median_ms", where, (dict,), optional=True) or {}
         self.parts_ms = {name: number(parts, name, f"{where}.parts_median_ms") for name in parts}
         match = SUBSAMPLED.fullmatch(method)
-        self.factor = 1 if method == "floodplane" else int(match.group(1)) if match else None
+        self.factor = int(match.group(1)) if match else None
         # Scores are there when the file has ground truth.
         self.scored = "ground_truth_planes" in entry
         if self.scored:
@@ -106,7 +107,7 @@ class Scene:
         # The older format: floodplane at sub-sampling 1, 2, 4, 8 apart from the methods.
         resolutions = field(entry, "resolutions", where, (dict,), optional=True) or {}
         for factor, result in resolutions.items():
-            name = "floodplane" if factor == "1" else f"floodplane/{factor}"
+            name = f"floodplane/{factor}"
             if self.find(name) is None:
                 self.methods.append(Result(name, result, f"{where}, resolution {factor}"))
         self.phases_ms, self.call_ms = None, NAN
@@ -136,7 +137,15 @@ def read_report(path):
         configuration = report.get("configuration", {}) if isinstance(report, dict) else {}
         if not isinstance(configuration, dict):
             raise NotAReport('"configuration" is not an object')
-        return configuration, [Scene(scene, f"scenes[{k}]") for k, scene in enumerate(scenes)]
+        scenes = [Scene(scene, f"scenes[{k}]") for k, scene in enumerate(scenes)]
+        # floodplane at the library's defaults: its sub-sampling is the one its configuration
+        # line names (1 in reports from before 4 became the default).
+        described = re.search(r"sub-sampling ([1-9][0-9]*)", str(configuration.get("method floodplane", "")))
+        for scene in scenes:
+            for result in scene.methods:
+                if result.method == "floodplane" and described:
+                    result.factor = int(described.group(1))
+        return configuration, scenes
     except NotAReport as error:
         sys.exit(f"compare_tables.py: {path} is not a pcd_compare report: {error}")
 
@@ -327,7 +336,7 @@ def files_table(scenes):
 
 def subsampling_table(scenes):
     """floodplane at each sub-sampling factor that ran (Table III): a row per file and factor,
-    the speed-up over the file's floodplane at 1, and a mean row per factor. Empty unless a
+    the speed-up over the file's floodplane/1 (else its floodplane), and a mean row per factor. Empty unless a
     factor of 4 or more ran: floodplane/2 alone is in the other tables already."""
     if not any((r.factor or 0) >= 4 for scene in scenes for r in scene.methods):
         return ""
@@ -338,7 +347,7 @@ def subsampling_table(scenes):
            "|---|---:|---:|---:|---:|---:|" + ("---:|---:|---:|" if accuracy else "") + "\n")
     means, speedups = {}, {}
     for scene in scenes:
-        full = scene.find("floodplane")
+        full = scene.find("floodplane/1") or scene.find("floodplane")
         full_ms = full.median_ms if full is not None else NAN
         for r in sorted((r for r in scene.methods if r.factor is not None), key=lambda r: r.factor):
             speedup = divide(full_ms, r.median_ms)

@@ -6,14 +6,14 @@
 # RANSAC and OMPS on them. Prints the summary table and where the side-by-side pictures are.
 # Run again, it rebuilds only what changed.
 # Usage: scripts/demo.sh [build-dir]   (default: build)
-# Settings (environment): METHODS (default floodplane,floodplane/2,ransac,omps; add
+# Settings (environment): METHODS (default floodplane,floodplane/1,ransac,omps; add
 # open3d_ransac for Open3D's RANSAC, several seconds a noisy cloud), REPEAT (timed runs of the
 # fast methods per cloud, default 5; the sequential RANSACs are timed once).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 out="$build/demo"
-methods=${METHODS:-floodplane,floodplane/2,ransac,omps}
+methods=${METHODS:-floodplane,floodplane/1,ransac,omps}
 repeat=${REPEAT:-5}
 start=$(date +%s)
 
@@ -37,6 +37,6 @@ cat <<EOF
 demo: done in $(( $(date +%s) - start )) s
   the means:         $out/compare.md (and per sensor model)
   every file, plane: $out/compare.json (as tables: bench/compare_tables.py $out/compare.json)
-  the pictures:      $out/<scene>.png (ground truth | RANSAC | OMPS | floodplane/2 | floodplane)
+  the pictures:      $out/<scene>.png (ground truth | RANSAC | OMPS | floodplane/1 | floodplane)
   your own frames:   $build/apps/pcd_segment/pcd_segment frame.pcd -o out/ --png --json
 EOF

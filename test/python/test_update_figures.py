@@ -54,7 +54,7 @@ def compare_report():
     """Two Kinect files and one exact one, floodplane at s = 1 and 2."""
     def scene(name, sensor, s1, s2):
         return {"name": name, "file": f"{name}.pcd", "width": 64, "height": 48, "ground_truth": True,
-                "sensor": sensor, "methods": {"floodplane": s1, "floodplane/2": s2}}
+                "sensor": sensor, "methods": {"floodplane/1": s1, "floodplane/2": s2}}
     return {"configuration": {}, "scenes": [
         scene("a.kinect", "kinect", result(0.9, 9, 10, 0.0), result(0.8, 8, 10, 0.1)),
         scene("b.kinect", "kinect", result(0.7, 3, 10, 0.2), result(0.6, 2, 10, 0.3)),
