@@ -282,6 +282,7 @@ TEST(SegmentationMetrics, DefaultMinimumSizeScalesWithThePixelCount) {
   EXPECT_EQ(defaultMinPoints(160, 120), 31u);  // 31.25
   EXPECT_EQ(defaultMinPoints(80, 60), 8u);     // 7.8125
   EXPECT_EQ(defaultMinPoints(1280, 960), 2000u);
+  EXPECT_EQ(defaultMinPoints(512, 512), 427u);  // 426.67: the ABW scans' default
 }
 
 }  // namespace

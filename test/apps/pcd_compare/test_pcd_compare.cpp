@@ -319,6 +319,37 @@ TEST_F(PcdCompare, ResolutionsAddFloodplaneAtEachSubsampling) {
   }
 }
 
+TEST_F(PcdCompare, MinGtPointsSetsTheSizeOfTheRegionsThatCount) {
+  // The scene's planes, counted with a minimum of n pixels; every kept plane has n or more.
+  const auto planesOfAtLeast = [this](const std::string& option, std::uint32_t n) {
+    const fs::path json_file = dir_ / "out.json";
+    const Result outcome = run("--repeat 0 --methods floodplane " + option + " --json " + quote(json_file.string()) +
+                               " " + quote(kStaircase));
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+    const auto& scene = json["scenes"][0];
+    EXPECT_EQ(scene["min_points"].get<std::uint32_t>(), n) << option;
+    const auto& floodplane = scene["methods"]["floodplane"];
+    for (const auto& plane : floodplane["per_plane"]) {
+      EXPECT_GE(plane["pixels"].get<std::uint32_t>(), n) << option;
+    }
+    if (!option.empty()) {
+      EXPECT_NE(outcome.out.find("pixels (--min-gt-points)"), std::string::npos) << outcome.out;
+    }
+    return floodplane["ground_truth_planes"].get<std::size_t>();
+  };
+  const std::size_t by_default = planesOfAtLeast("", 125);  // round(500 * 320 * 240 / (640 * 480))
+  EXPECT_GE(planesOfAtLeast("--min-gt-points 100", 100), by_default);
+  EXPECT_LT(planesOfAtLeast("--min-gt-points 5000", 5000), by_default);
+}
+
+TEST_F(PcdCompare, MinGtPointsMustBeAWholeNumberOfPixelsAboveZero) {
+  for (const std::string value : {"0", "-3", "many", "1.5", "5000000000"}) {
+    expectUsageError(run("--min-gt-points " + value + " " + quote(kStaircase)), "pcd_compare", "--min-gt-points");
+  }
+  EXPECT_NE(run("--help").out.find("--min-gt-points"), std::string::npos);
+}
+
 }  // namespace
 
 namespace {
