@@ -63,7 +63,7 @@ struct Options {
   std::string json_file, png_dir, png3d_dir;
   std::string sensor;      // every input's sensor model; empty: from the file name
   std::string tuned_file;  // empty: defaultTunedFile()
-  bool resolutions = false, tuned = false, quiet = false;
+  bool resolutions = false, tuned = false, quiet = false, misses = false;
 };
 
 // `names` in order, each once.
@@ -401,6 +401,11 @@ void addOptions(CLI::App& app, Options& options) {
                  "The sensor model of every input, for --tuned and the means per sensor model; default: from "
                  "file names <scene>.<sensor>.pcd")
       ->check(CLI::IsMember(kSensors));
+  app.add_flag("--misses", options.misses,
+               "After the means, list per method every ground-truth plane that is not a correct detection, with "
+               "why (no_segment: at least half of it unlabelled; under_segmented: merged into a segment with other "
+               "planes; over_segmented: split into several; iou_below_t: found at an IoU below T), its size, IoU "
+               "and unlabelled share, and every noise segment (--json has them too)");
   app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the means and errors");
 }
 
@@ -488,6 +493,7 @@ int main(int argc, char** argv) {
   compareAll(options, files, methods, report, missing);
   addMeans(report);
   std::cout << markdownMeans(report) << std::flush;
+  if (options.misses) std::cout << markdownMisses(report) << std::flush;
   bool written = true;
   try {
     if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, report.dump(2) + "\n");
