@@ -382,9 +382,10 @@ void addOptions(CLI::App& app, Options& options) {
   app.add_option("--json", options.json_file,
                  "Write the whole report (every file, method and plane) to this .json file");
   app.add_option("--png", options.png_dir,
-                 "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | omps | "
-                 "--labels' methods | floodplane (those run), segments coloured by the ground-truth plane they "
-                 "overlap most, near-black on no plane, white where there is no point (no depth)");
+                 std::string("Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | "
+                             "omps | --labels' methods | floodplane (those run), a pixel per point, segments coloured "
+                             "by the ground-truth plane they overlap most, ") +
+                     floodplane::apps::kUnlabelledPixels);
   // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
   // display (CI, headless machines).
   app.add_option("--png3d", options.png3d_dir,

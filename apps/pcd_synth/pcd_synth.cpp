@@ -497,11 +497,10 @@ int main(int argc, char** argv) {
                      ->check(CLI::Range(1, 32768));
   width->needs(height);
   height->needs(width);
-  app.add_flag("--ascii", options.ascii, "Write the PCDs as text, as pcd_segment --ascii (default: binary compressed)");
+  floodplane::apps::addAsciiFlag(app, options.ascii, "the PCDs");
   app.add_flag("--png", options.png,
-               "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels: each "
-               "plane in a colour of its own, near-black where a point is on no plane, white where the sensor saw "
-               "nothing");
+               "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels, " +
+                   floodplane::apps::labelImageHelp());
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json (<scene>.boards.json with --family boards)");

@@ -205,6 +205,9 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
   for (const std::string option : {"--resolutions", "--sensor", "--tuned-file", "--png3d"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
   }
+  // --png's pictures as every app's label images (common/cli.h).
+  EXPECT_NE(help.out.find("near-black where a point is on no plane, white where there is no point (no depth)"),
+            std::string::npos);
   const Result version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_FALSE(version.out.empty());
