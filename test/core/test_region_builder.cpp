@@ -16,15 +16,14 @@
 
 #include "stages/region_builder.h"
 #include "support/pinhole_grid.h"
+#include "support/stage_fixture.h"
 
 namespace floodplane {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kFocal = test::kPinholeFocal;
-constexpr float kPitch = static_cast<float>(1.0 / kFocal);
-
 using Grid = test::PinholeGrid;
+using test::kNaN;
+using test::kPinholePitch;
 
 // What the merging hands over: a frame, the grid that was segmented (s = 1: the frame; s > 1:
 // the means of its s x s blocks, as the segmenter reads them), a segment per point of that grid
@@ -46,15 +45,13 @@ struct Merged {
   Merged(Grid frame, int subsampling, const std::function<std::int32_t(int, int)>& segment,
          std::uint32_t min_inliers = 1)
       : full(std::move(frame)), s(subsampling) {
-    params.distance_threshold = 0.01;
-    params.merge_distance = 0.03;
-    params.depth_noise_coefficient = 0.0;
+    params = test::exactParams();
     params.min_inliers = min_inliers;
     params.subsampling = s;
     segmented = full.grid();
     if (s > 1) {
       blocks.read(full.grid(), s);
-      blocks.separateSurfaces(full.grid(), NoiseModel(), kPitch);  // exact data
+      blocks.separateSurfaces(full.grid(), NoiseModel(), kPinholePitch);  // exact data
       segmented = blocks.means();
     }
     // A block takes the segment of its pixels where they all have one, none where it straddles
@@ -95,10 +92,10 @@ struct Merged {
     frame.measured = measured;
     frame.grid = segmented;
     frame.subsampling = s;
-    frame.full_pitch = kPitch;
-    frame.pitch = kPitch * static_cast<float>(s);
+    frame.full_pitch = kPinholePitch;
+    frame.pitch = kPinholePitch * static_cast<float>(s);
     frame.tolerances = Tolerances(params, {}, frame.pitch, full.data.size() / full.stride);
-    frame.pixel_tolerances = Tolerances(params, {}, kPitch, full.data.size() / full.stride);
+    frame.pixel_tolerances = Tolerances(params, {}, kPinholePitch, full.data.size() / full.stride);
     frame.holes = &holes;
     frame.blocks = s > 1 ? &blocks : nullptr;
     builder.assemble(frame, merged, params, refine, out);
