@@ -30,7 +30,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from bench_common import ROOT, machine  # noqa: E402
+from bench_common import ROOT, machine, run_or_exit  # noqa: E402
 
 DATA = ROOT.parent / "shared/data/abw-tune"
 MIN_GT_POINTS = 100  # SegComp's minimum region size [pixels]
@@ -123,14 +123,6 @@ def listing(methods):
     return "\n".join(out)
 
 
-def run(command):
-    completed = subprocess.run([str(word) for word in command], capture_output=True, text=True)
-    if completed.returncode != 0:
-        lines = (completed.stderr.strip() or completed.stdout.strip() or "no message").splitlines()
-        sys.exit(f"abw_scores.py: {pathlib.Path(command[0]).name} failed: {lines[0]}")
-    return completed.stdout
-
-
 def shown(command, files):
     """`command` as text, the scans' paths as SCANS (listed above it)."""
     words = [str(word) for word in command if word not in files]
@@ -193,9 +185,9 @@ def main(argv):
               f"{TOLERANCE}; correct detections over all regions of all frames, mean IoU over the same regions")
         if segment:
             print(f"- {SEGMENT_ROW} row: `{shown(segment, files)}`")
-            run(segment)
+            run_or_exit(segment)
         print(f"- `{shown(compare, files)}`\n")
-        run(compare)
+        run_or_exit(compare)
         methods = summarize(json.loads(pathlib.Path(report_file).read_text()))
     print(markdown(methods))
     if arguments.list:
