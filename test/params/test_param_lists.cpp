@@ -107,56 +107,56 @@ std::size_t lineOf(const std::string& text, std::size_t at) {
   return static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1;
 }
 
+// Walks Python or C++ text a character at a time, knowing whether it is inside a quoted
+// literal and how deep inside brackets.
+struct TextWalk {
+  int depth = 0;
+  char quote = 0;
+
+  // Steps over text[i] (a backslash in a literal takes the next character along, moving i);
+  // whether text[i] is outside any literal (a literal's quote marks are inside it).
+  bool outside(const std::string& text, std::size_t& i) {
+    const char c = text[i];
+    if (quote != 0) {
+      if (c == '\\' && i + 1 < text.size()) {
+        ++i;
+      } else if (c == quote) {
+        quote = 0;
+      }
+      return false;
+    }
+    if (c == '"' || c == '\'') {
+      quote = c;
+      return false;
+    }
+    if (c == '(' || c == '[' || c == '{') ++depth;
+    if (c == ')' || c == ']' || c == '}') --depth;
+    return true;
+  }
+};
+
 // The text between the bracket at `open` and its match (quotes and nesting respected), and the
 // index after the match; npos when it has none.
 std::pair<std::string, std::size_t> bracketed(const std::string& text, std::size_t open) {
-  int depth = 0;
-  char quote = 0;
+  TextWalk walk;
   for (std::size_t i = open; i < text.size(); ++i) {
-    const char c = text[i];
-    if (quote != 0) {
-      if (c == '\\')
-        ++i;
-      else if (c == quote)
-        quote = 0;
-    } else if (c == '"' || c == '\'') {
-      quote = c;
-    } else if (c == '(' || c == '[' || c == '{') {
-      ++depth;
-    } else if ((c == ')' || c == ']' || c == '}') && --depth == 0) {
-      return {text.substr(open + 1, i - open - 1), i + 1};
-    }
+    if (walk.outside(text, i) && walk.depth == 0) return {text.substr(open + 1, i - open - 1), i + 1};
   }
   return {{}, std::string::npos};
 }
 
-// `text` split at the commas outside brackets and quotes, each part trimmed.
+// `text` split at the separators outside brackets and quotes, each part trimmed.
 std::vector<std::string> topLevelParts(const std::string& text, char separator = ',') {
   std::vector<std::string> parts;
-  std::string current;
-  int depth = 0;
-  char quote = 0;
+  TextWalk walk;
+  std::size_t start = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (quote != 0) {
-      if (c == '\\' && i + 1 < text.size())
-        current += text[i++];
-      else if (c == quote)
-        quote = 0;
-    } else if (c == '"' || c == '\'') {
-      quote = c;
-    } else if (c == '(' || c == '[' || c == '{') {
-      ++depth;
-    } else if (c == ')' || c == ']' || c == '}') {
-      --depth;
-    } else if (c == separator && depth == 0) {
-      parts.push_back(trimmed(current));
-      current.clear();
-      continue;
+    if (walk.outside(text, i) && walk.depth == 0 && text[i] == separator) {
+      parts.push_back(trimmed(text.substr(start, i - start)));
+      start = i + 1;
     }
-    current += c;
   }
-  if (!trimmed(current).empty()) parts.push_back(trimmed(current));
+  if (!trimmed(text.substr(std::min(start, text.size()))).empty()) parts.push_back(trimmed(text.substr(start)));
   return parts;
 }
 
@@ -498,67 +498,78 @@ TEST(ParamLists, TheRosNodeletReadsEveryParameterFromItsNamesake) {
 
 // ---- the checks find each kind of difference ----------------------------------------------
 
-TEST(ParamLists, AStubThatLacksAKeywordOrMistypesOneIsFound) {
+// Whether `check` finds `problem` in `text` once `from` is replaced by `to`.
+template <typename Check>
+::testing::AssertionResult finds(const Check& check, const std::string& text, const std::string& from,
+                                 const std::string& to, const std::string& problem) {
+  const std::vector<std::string> problems = check(doctored(text, from, to));
+  if (mentions(problems, problem)) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "with '" << from << "' as '" << to << "', no \"" << problem
+                                       << "\" among:" << joined(problems);
+}
+
+std::vector<std::string> stubProblemsOf(const std::string& text) {
   std::size_t signatures = 0;
+  return stubProblems(text, signatures);
+}
+
+TEST(ParamLists, AStubThatLacksAKeywordOrMistypesOneIsFound) {
   const std::string stubs = readSource(kStubs);
   const std::vector<std::string> lacking =
-      stubProblems(doctored(stubs, "        seed_size: Optional[float] = ...,\n", ""), signatures);
+      stubProblemsOf(doctored(stubs, "        seed_size: Optional[float] = ...,\n", ""));
   ASSERT_EQ(lacking.size(), 1u) << joined(lacking);
   EXPECT_EQ(lacking[0].rfind("__init__ (__init__.pyi line ", 0), 0u) << lacking[0];
   EXPECT_TRUE(mentions(lacking, ") lacks seed_size")) << lacking[0];
-  EXPECT_TRUE(mentions(stubProblems(doctored(stubs, "subsampling: int = ...", "subsampling: float = ..."), signatures),
-                       "subsampling is float, the table's int"));
+  const auto stubFinds = [&stubs](const std::string& from, const std::string& to, const std::string& problem) {
+    return finds(stubProblemsOf, stubs, from, to, problem);
+  };
+  EXPECT_TRUE(stubFinds("subsampling: int = ...", "subsampling: float = ...", "subsampling is float, the table's int"));
+  EXPECT_TRUE(stubFinds("min_inliers: Optional[int] = ...", "min_inliers: int = ...",
+                        "min_inliers is int, the table's Optional[int]"));
+  EXPECT_TRUE(stubFinds("angular_threshold: float = ...", "angular_threshold: float = 0.2",
+                        "angular_threshold defaults to 0.2, Params to 0.1"));
+  // A default stated as Params has it is no difference.
   EXPECT_TRUE(
-      mentions(stubProblems(doctored(stubs, "min_inliers: Optional[int] = ...", "min_inliers: int = ..."), signatures),
-               "min_inliers is int, the table's Optional[int]"));
-  EXPECT_TRUE(mentions(
-      stubProblems(doctored(stubs, "angular_threshold: float = ...", "angular_threshold: float = 0.2"), signatures),
-      "angular_threshold defaults to 0.2, Params to 0.1"));
-  EXPECT_TRUE(
-      stubProblems(doctored(stubs, "angular_threshold: float = ...", "angular_threshold: float = 0.1"), signatures)
-          .empty());
+      stubProblemsOf(doctored(stubs, "angular_threshold: float = ...", "angular_threshold: float = 0.1")).empty());
 }
 
 TEST(ParamLists, AConfigEntryMissingMistypedOrDefaultingOtherwiseIsFound) {
   const std::string cfg = readSource(kCfg);
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "gen.add(\"seed_size\"", "gen.add(\"seed_sizes\"")),
-                       "Segmentation.cfg lacks seed_size"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "gen.add(\"seed_size\"", "gen.add(\"seed_sizes\"")),
-                       "offers seed_sizes, which is neither"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "\"min_inliers\", int_t", "\"min_inliers\", double_t")),
-                       "min_inliers is double_t, the table's int_t"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "in merging\", 0.1,", "in merging\", 0.2,")),
-                       "angular_threshold defaults to 0.2, Params to 0.1"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "3 noise deviations\", 0.0,", "3 noise deviations\", 0.01,")),
+  const auto cfgFinds = [&cfg](const std::string& from, const std::string& to, const std::string& problem) {
+    return finds(cfgProblems, cfg, from, to, problem);
+  };
+  EXPECT_TRUE(cfgFinds("gen.add(\"seed_size\"", "gen.add(\"seed_sizes\"", "Segmentation.cfg lacks seed_size"));
+  EXPECT_TRUE(cfgFinds("gen.add(\"seed_size\"", "gen.add(\"seed_sizes\"", "offers seed_sizes, which is neither"));
+  EXPECT_TRUE(
+      cfgFinds("\"min_inliers\", int_t", "\"min_inliers\", double_t", "min_inliers is double_t, the table's int_t"));
+  EXPECT_TRUE(cfgFinds("in merging\", 0.1,", "in merging\", 0.2,", "angular_threshold defaults to 0.2, Params to 0.1"));
+  EXPECT_TRUE(cfgFinds("3 noise deviations\", 0.0,", "3 noise deviations\", 0.01,",
                        "distance_threshold defaults to 0.01, Params to unset (0 in the config)"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "0.1, 0.001, 1.5)", "0.1, 0.001, 1.6)")),
-                       "angular_threshold offers 1.6, which Params refuses"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "gen.const(\"eighth\", int_t, 8,", "gen.const(\"eighth\", int_t, 6,")),
+  EXPECT_TRUE(cfgFinds("0.1, 0.001, 1.5)", "0.1, 0.001, 1.6)", "angular_threshold offers 1.6, which Params refuses"));
+  EXPECT_TRUE(cfgFinds("gen.const(\"eighth\", int_t, 8,", "gen.const(\"eighth\", int_t, 6,",
                        "subsampling offers 6, which Params refuses"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "gen.const(\"eighth\", int_t, 8,", "gen.const(\"eighth\", int_t, 4,")),
-                       "the choices lack 8"));
-  EXPECT_TRUE(mentions(cfgProblems(doctored(cfg, "(false: use the two values below)\", True)",
-                                            "(false: use the two values below)\", False)")),
+  EXPECT_TRUE(cfgFinds("gen.const(\"eighth\", int_t, 8,", "gen.const(\"eighth\", int_t, 4,", "the choices lack 8"));
+  EXPECT_TRUE(cfgFinds("(false: use the two values below)\", True)", "(false: use the two values below)\", False)",
                        "measure_noise must default to True"));
 }
 
 TEST(ParamLists, ANodeletThatReadsAParameterAmissIsFound) {
   const std::string nodelet = readSource(kNodelet);
-  EXPECT_TRUE(
-      mentions(nodeletProblems(doctored(nodelet, "params.seed_size = conv::lengthOrDerived(config.seed_size);", "")),
-               "does not set params.seed_size"));
-  EXPECT_TRUE(mentions(nodeletProblems(doctored(nodelet, "params.seed_size = conv::lengthOrDerived(config.seed_size);",
-                                                "params.seed_size = conv::lengthOrDerived(config.merge_distance);")),
-                       "sets params.seed_size from config.merge_distance"));
-  EXPECT_TRUE(mentions(nodeletProblems(doctored(nodelet, "params.seed_size = conv::lengthOrDerived(config.seed_size);",
-                                                "params.seed_size = config.seed_size;")),
-                       "takes config.seed_size = 0 as a value"));
-  EXPECT_TRUE(mentions(
-      nodeletProblems(doctored(nodelet, "if (config.min_inliers > 0) params.min_inliers", "params.min_inliers")),
-      "takes config.min_inliers = 0 as a value"));
-  EXPECT_TRUE(mentions(nodeletProblems(doctored(nodelet, "params.subsampling = config.subsampling;",
-                                                "params.subsampling = config.subsampling;\n  params.seeds = 3;")),
-                       "sets params.seeds, which is not in params_table.h"));
+  const auto nodeletFinds = [&nodelet](const std::string& from, const std::string& to, const std::string& problem) {
+    return finds(nodeletProblems, nodelet, from, to, problem);
+  };
+  const std::string seed_size = "params.seed_size = conv::lengthOrDerived(config.seed_size);";
+  EXPECT_TRUE(nodeletFinds(seed_size, "", "does not set params.seed_size"));
+  EXPECT_TRUE(nodeletFinds(seed_size, "params.seed_size = conv::lengthOrDerived(config.merge_distance);",
+                           "sets params.seed_size from config.merge_distance"));
+  EXPECT_TRUE(nodeletFinds(seed_size, "params.seed_size = config.seed_size;", "takes config.seed_size = 0 as a value"));
+  EXPECT_TRUE(nodeletFinds("if (config.min_inliers > 0) params.min_inliers", "params.min_inliers",
+                           "takes config.min_inliers = 0 as a value"));
+  EXPECT_TRUE(nodeletFinds("if (!config.measure_noise) {", "{",
+                           "sets params.depth_noise_coefficient whether or not measure_noise"));
+  EXPECT_TRUE(nodeletFinds("params.subsampling = config.subsampling;",
+                           "params.subsampling = config.subsampling;\n  params.seeds = 3;",
+                           "sets params.seeds, which is not in params_table.h"));
 }
 
 }  // namespace
