@@ -56,6 +56,16 @@ def median(values):
     return statistics.median(values)
 
 
+def run_or_exit(command):
+    """Runs `command` (its words, paths and numbers too) and returns its stdout; when it fails,
+    exits with one line naming the script, the program and the first line it said."""
+    completed = subprocess.run([str(word) for word in command], capture_output=True, text=True)
+    if completed.returncode != 0:
+        lines = (completed.stderr.strip() or completed.stdout.strip() or "no message").splitlines()
+        sys.exit(f"{pathlib.Path(sys.argv[0]).name}: {pathlib.Path(command[0]).name} failed: {lines[0]}")
+    return completed.stdout
+
+
 def run_pcd_segment(binary, inputs, out_dir, *options):
     """Runs pcd_segment quietly; raises with its stderr when it fails."""
     completed = subprocess.run([str(binary), *map(str, inputs), "-o", str(out_dir), "-q", *map(str, options)],

@@ -16,7 +16,7 @@ and the segments of a frame are matched one to one, best IoU first (each pair's 
 --min-iou (default 0.8, the issue's target: found in >= 90 % of cases). From IoU 0.5 on a
 match is one to one anyway, so at 0.8 this is "IoU(g) = the best over all segments >= 0.8".
 A face is a board's when its primitive is named "<kind> board <n>", thin when it is not the
-board's face +y or -y (src/synth/scene_generator.h, isBoardEdgeFace).
+board's face +y or -y (apps/synth/scene_generator.h, isBoardEdgeFace).
 
 Example:
   bench/thin_faces.py --seeds 1-100                # the tuning split
@@ -27,7 +27,6 @@ Example:
 import argparse
 import json
 import pathlib
-import subprocess
 import sys
 import tempfile
 import time
@@ -35,20 +34,12 @@ import time
 import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from bench_common import ROOT, machine, run_pcd_segment  # noqa: E402
+from bench_common import ROOT, machine, run_or_exit, run_pcd_segment  # noqa: E402
 from track_sequences import parse_seeds, read_ascii_pcd  # noqa: E402
 
 SENSORS = ("kinect", "none")
 CLASSES = ("thin", "large", "room")
 SIZE_BINS = ((0, 1000), (1000, 3000), (3000, None))
-
-
-def run(command):
-    completed = subprocess.run([str(word) for word in command], capture_output=True, text=True)
-    if completed.returncode != 0:
-        lines = (completed.stderr.strip() or completed.stdout.strip() or "no message").splitlines()
-        sys.exit(f"thin_faces.py: {pathlib.Path(command[0]).name} failed: {lines[0]}")
-    return completed.stdout
 
 
 def board_kind(primitive):
@@ -233,7 +224,7 @@ def main():
     for binary in [args.pcd_synth] + ([] if args.ground_truth_as_segments else [args.pcd_segment]):
         if not pathlib.Path(binary).is_file():
             sys.exit(f"thin_faces.py: no binary {binary} (build it, or give its path)")
-    if "--family" not in run([args.pcd_synth, "--help"]):
+    if "--family" not in run_or_exit([args.pcd_synth, "--help"]):
         sys.exit(f"thin_faces.py: {args.pcd_synth} has no --family option (the boards family is not built)")
 
     segmenter = "ground truth as segments" if args.ground_truth_as_segments else f"{args.pcd_segment} (defaults)"
@@ -245,8 +236,8 @@ def main():
         truth, segmented = work / "truth", work / "segmented"
         start = time.monotonic()
         for first, count in seed_runs(args.seeds):
-            run([args.pcd_synth, "--random", count, "--seed", first, "--family", "boards", "--sensor",
-                 sensors[0] if len(sensors) == 1 else "both", "--ascii", "-q", "-o", truth])
+            run_or_exit([args.pcd_synth, "--random", count, "--seed", first, "--family", "boards", "--sensor",
+                         sensors[0] if len(sensors) == 1 else "both", "--ascii", "-q", "-o", truth])
         render_seconds = time.monotonic() - start
         names = [f"boards_{seed:04d}" for seed in args.seeds]
         frames = {sensor: [truth / f"{name}.{sensor}.pcd" for name in names] for sensor in sensors}

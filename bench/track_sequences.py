@@ -6,7 +6,7 @@ with `pcd_synth --sequence`, segments each with `pcd_segment --track` (the label
 outputs holds track ids) and prints, per seed and over all, the id switches, lost planes and
 re-entries.
 
-The figures follow src/eval/tracking_metrics.h, which is the reference for their definitions;
+The figures follow apps/eval/tracking_metrics.h, which is the reference for their definitions;
 this script counts the same in Python from the text PCDs (`--ascii`) of both tools:
 - a ground-truth plane is present in a frame with at least --min-fraction of its pixels (valid
   ones: a finite ground-truth point); each present plane in a frame is a plane-frame;
@@ -39,7 +39,6 @@ import argparse
 import json
 import math
 import pathlib
-import subprocess
 import sys
 import tempfile
 import warnings
@@ -47,11 +46,11 @@ import warnings
 import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from bench_common import ROOT, machine  # noqa: E402
+from bench_common import ROOT, machine, run_or_exit  # noqa: E402
 
 
 class TrackingEvaluator:
-    """Mirrors floodplane::eval::TrackingEvaluator (src/eval/tracking_metrics.h)."""
+    """Mirrors floodplane::eval::TrackingEvaluator (apps/eval/tracking_metrics.h)."""
 
     def __init__(self, min_fraction=0.01, min_iou=0.5, max_gap=29):
         self.min_fraction, self.min_iou, self.max_gap = min_fraction, min_iou, max_gap
@@ -168,16 +167,8 @@ def parse_seeds(text):
     return seeds
 
 
-def run(command):
-    completed = subprocess.run([str(word) for word in command], capture_output=True, text=True)
-    if completed.returncode != 0:
-        lines = (completed.stderr.strip() or completed.stdout.strip() or "no message").splitlines()
-        sys.exit(f"track_sequences.py: {pathlib.Path(command[0]).name} failed: {lines[0]}")
-    return completed.stdout
-
-
 def has_option(pcd_segment, option):
-    return option in run([pcd_segment, "--help"])
+    return option in run_or_exit([pcd_segment, "--help"])
 
 
 def evaluate_seed(seed, args, work):
@@ -185,8 +176,8 @@ def evaluate_seed(seed, args, work):
     pcd_segment had the sequence's camera poses."""
     name = f"random_{seed:04d}"
     truth, tracks = work / name / "truth", work / name / "tracks"
-    run([args.pcd_synth, "--random", 1, "--seed", seed, "--sequence", args.frames, "--sensor", args.sensor,
-         *(["--look-away"] if args.look_away else []), "--ascii", "-q", "-o", truth])
+    run_or_exit([args.pcd_synth, "--random", 1, "--seed", seed, "--sequence", args.frames, "--sensor", args.sensor,
+                 *(["--look-away"] if args.look_away else []), "--ascii", "-q", "-o", truth])
     frames = sorted(truth.glob(f"{name}_f*.{args.sensor}.pcd"))
     if len(frames) != args.frames:
         sys.exit(f"track_sequences.py: {truth}: {len(frames)} frames, expected {args.frames}")
@@ -195,8 +186,9 @@ def evaluate_seed(seed, args, work):
     if args.ground_truth_as_tracks:
         outputs = frames
     else:
-        run([args.pcd_segment, *frames, "-o", tracks, "--track", *(["--poses", poses] if with_poses else []),
-             *(["--cold-starts"] if args.cold_starts else []), "--ascii", "-q"])
+        run_or_exit([args.pcd_segment, *frames, "-o", tracks, "--track",
+                     *(["--poses", poses] if with_poses else []), *(["--cold-starts"] if args.cold_starts else []),
+                     "--ascii", "-q"])
         outputs = [tracks / (frame.name[:-len(".pcd")] + ".labels.pcd") for frame in frames]
     evaluator = TrackingEvaluator(args.min_fraction, args.min_iou, args.max_gap)
     for frame, output in zip(frames, outputs):

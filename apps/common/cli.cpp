@@ -34,6 +34,15 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv) {
   return std::nullopt;
 }
 
+std::string labelImageHelp() {
+  return std::string("a pixel per point: each plane in a colour of its own (label k always the same colour), ") +
+         kUnlabelledPixels;
+}
+
+void addAsciiFlag(CLI::App& app, bool& ascii, const std::string& files) {
+  app.add_flag("--ascii", ascii, "Write " + files + " as text (default: binary compressed)");
+}
+
 int usageError(CLI::App& app, const std::string& message) {
   app.failure_message(oneLineFailure);
   app.exit(CLI::ValidationError(message));

@@ -34,6 +34,19 @@ void addVersionFlag(CLI::App& app);
 /// the program goes on.
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv);
 
+/// How the apps draw a pixel on no plane and one without a point in every label image, for the
+/// help of the options that write them.
+inline constexpr const char* kUnlabelledPixels =
+    "near-black where a point is on no plane, white where there is no point (no depth)";
+
+/// How the apps draw label images (io/label_palette.h's colours), for the help of the options
+/// that write them (--png): a pixel per point, each plane in a colour of its own (label k
+/// always the same colour), then kUnlabelledPixels.
+std::string labelImageHelp();
+
+/// Adds --ascii, which writes `files` ("the label PCD") as text instead of binary compressed.
+void addAsciiFlag(CLI::App& app, bool& ascii, const std::string& files);
+
 /// Reports `message` as a usage error through CLI11, in the same form as the errors it finds
 /// itself, and returns kUsageExitCode. For options that parse but are refused later (a value
 /// the library rejects, options that contradict each other); `message` names the flag.

@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -60,10 +61,11 @@ struct Options {
   std::string ground_truth_dir;                       // --ground-truth DIR
   std::vector<std::string> methods = {"floodplane", "floodplane/2", "ransac", "open3d_ransac", "omps"};
   int repeat = 20;
+  std::uint32_t min_gt_points = 0;  // --min-gt-points; 0: defaultMinPoints of each file's size
   std::string json_file, png_dir, png3d_dir;
   std::string sensor;      // every input's sensor model; empty: from the file name
   std::string tuned_file;  // empty: defaultTunedFile()
-  bool resolutions = false, tuned = false, quiet = false;
+  bool resolutions = false, tuned = false, quiet = false, misses = false;
 };
 
 // `names` in order, each once.
@@ -177,9 +179,11 @@ Json configuration(const Options& options) {
                                                         : "against the ground truth in " + options.ground_truth_dir +
                                                               " (<stem>.labels.pcd or <stem>.png)") +
                ": IoU, weighted IoU, Hoover counts (T = 0.8) and false-plane fraction as in metrics.md; pixels "
-               "with NaN xyz ignored; planes and segments below round(500 * W*H / (640*480)) pixels ignored; "
-               "labels of the warm-up run; means per method, and per sensor model (--sensor, or the name "
-               "<scene>.<sensor>.pcd)"}};
+               "with NaN xyz ignored; planes and segments below " +
+               (options.min_gt_points > 0 ? std::to_string(options.min_gt_points) + " pixels (--min-gt-points)"
+                                          : std::string("round(500 * W*H / (640*480)) pixels")) +
+               " ignored; labels of the warm-up run; means per method, and per sensor model (--sensor, or the "
+               "name <scene>.<sensor>.pcd)"}};
 }
 
 // <scene>.png in --png's directory (label images) and in --png3d's (3-D renderings): ground
@@ -219,7 +223,9 @@ void reportLabelProblem(const InputCloud& input, const std::string& option, cons
 
 Json compareScene(const Options& options, Methods& methods, const InputCloud& input, MissingTuned& missing,
                   Json& report) {
-  const std::uint32_t min_points = floodplane::eval::defaultMinPoints(input.cloud->width, input.cloud->height);
+  const std::uint32_t min_points = options.min_gt_points > 0
+                                       ? options.min_gt_points
+                                       : floodplane::eval::defaultMinPoints(input.cloud->width, input.cloud->height);
   Json scene = {{"name", input.name},
                 {"file", input.path},
                 {"width", input.cloud->width},
@@ -330,6 +336,16 @@ constexpr const char* kLabelFiles =
     "unsigned label field on the input's grid, as pcd_segment -o DIR writes) or <stem>.png (a grey 8- or 16-bit "
     "image of the input's size whose pixel values are the labels); label 0 is no plane";
 
+// CLI11's check for a count of pixels >= 1 that fits the metrics' 32 bits: "" when `value` is
+// one, else the reason, which CLI11 reports after the flag's name.
+std::string wholePixelCount(const std::string& value) {
+  const bool digits = !value.empty() && value.size() <= 10 &&
+                      std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (digits && std::stoull(value) >= 1 && std::stoull(value) <= std::numeric_limits<std::uint32_t>::max()) return "";
+  return "N must be a whole number of pixels from 1 to " + std::to_string(std::numeric_limits<std::uint32_t>::max()) +
+         ", got '" + value + "'";
+}
+
 void addOptions(CLI::App& app, Options& options) {
   // No existence check here: a missing file is reported with the others, and the batch goes on.
   app.add_option("INPUT", options.inputs,
@@ -364,12 +380,19 @@ void addOptions(CLI::App& app, Options& options) {
                  "only, timed and scored")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  app.add_option("--min-gt-points", options.min_gt_points,
+                 "Score only ground-truth planes, and predicted segments, of at least N valid pixels (metrics.md); "
+                 "default round(500 * W * H / (640 * 480)) for each file: 500 at 640x480, 427 at 512x512. SegComp "
+                 "(Hoover et al.) counts regions of 100 pixels and more: --min-gt-points 100")
+      ->type_name("N")
+      ->check(CLI::Validator(wholePixelCount, ""));
   app.add_option("--json", options.json_file,
                  "Write the whole report (every file, method and plane) to this .json file");
   app.add_option("--png", options.png_dir,
-                 "Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | omps | "
-                 "--labels' methods | floodplane (those run), segments coloured by the ground-truth plane they "
-                 "overlap most, near-black on no plane, white where there is no point (no depth)");
+                 std::string("Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | "
+                             "omps | --labels' methods | floodplane (those run), a pixel per point, segments coloured "
+                             "by the ground-truth plane they overlap most, ") +
+                     floodplane::apps::kUnlabelledPixels);
   // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
   // display (CI, headless machines).
   app.add_option("--png3d", options.png3d_dir,
@@ -386,6 +409,11 @@ void addOptions(CLI::App& app, Options& options) {
                  "The sensor model of every input, for --tuned and the means per sensor model; default: from "
                  "file names <scene>.<sensor>.pcd")
       ->check(CLI::IsMember(kSensors));
+  app.add_flag("--misses", options.misses,
+               "After the means, list per method every ground-truth plane that is not a correct detection, with "
+               "why (no_segment: at least half of it unlabelled; under_segmented: merged into a segment with other "
+               "planes; over_segmented: split into several; iou_below_t: found at an IoU below T), its size, IoU "
+               "and unlabelled share, and every noise segment (--json has them too)");
   app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the means and errors");
 }
 
@@ -473,6 +501,7 @@ int main(int argc, char** argv) {
   compareAll(options, files, methods, report, missing);
   addMeans(report);
   std::cout << markdownMeans(report) << std::flush;
+  if (options.misses) std::cout << markdownMisses(report) << std::flush;
   bool written = true;
   try {
     if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, report.dump(2) + "\n");

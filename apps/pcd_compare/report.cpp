@@ -20,6 +20,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The Hoover counts' keys: a plane's class (HooverClass's order), then the noise segments.
 constexpr const char* kHooverCounts[] = {"correct", "over", "under", "missed", "noise"};
 static_assert(static_cast<int>(floodplane::eval::HooverClass::missed) == 3, "kHooverCounts follows HooverClass");
+// A plane's MissReason in the JSON and the --misses table; null for a correct detection.
+constexpr const char* kMissReasons[] = {nullptr, "no_segment", "under_segmented", "over_segmented", "iou_below_t"};
+static_assert(static_cast<int>(floodplane::eval::MissReason::iou_below_t) == 4, "kMissReasons follows MissReason");
 
 Json number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
@@ -86,6 +89,10 @@ std::string fixed(const Json& json, int decimals) {
   return text;
 }
 
+std::string percent(const Json& share) {
+  return share.is_number() ? fixed(Json(100.0 * share.get<double>()), 0) + " %" : "-";
+}
+
 // One table of means; `normals` and `accuracy` add their columns.
 std::string meanTable(const std::string& title, const Json& rows, bool normals, bool accuracy) {
   std::string out =
@@ -135,11 +142,23 @@ Json methodJson(Json timing, const std::vector<std::uint32_t>& labels, const Inp
   json["predicted_segments"] = scores.predicted_segments;
   json["per_plane"] = Json::array();
   for (const auto& plane : scores.planes) {
+    const char* miss = kMissReasons[static_cast<int>(plane.miss)];
     json["per_plane"].push_back({{"label", plane.label},
                                  {"pixels", plane.pixels},
                                  {"iou", plane.iou},
                                  {"best_segment", plane.best_segment},
-                                 {"hoover", kHooverCounts[static_cast<int>(plane.hoover)]}});
+                                 {"hoover", kHooverCounts[static_cast<int>(plane.hoover)]},
+                                 {"miss", miss != nullptr ? Json(miss) : Json(nullptr)},
+                                 {"unlabelled_share", plane.unlabelled_share},
+                                 {"main_segment", plane.main_segment},
+                                 {"main_segment_share", plane.main_segment_share}});
+  }
+  json["noise_segments"] = Json::array();
+  for (const auto& segment : scores.noise) {
+    json["noise_segments"].push_back({{"label", segment.label},
+                                      {"pixels", segment.pixels},
+                                      {"iou", segment.iou},
+                                      {"off_plane_share", segment.off_plane_share}});
   }
   return json;
 }
@@ -188,6 +207,53 @@ std::string markdownMeans(const Json& report) {
     std::size_t files = 0;
     for (const auto& [method, row] : rows.items()) files = std::max(files, row["scenes"].get<std::size_t>());
     out += meanTable("sensor model " + sensor + " (" + std::to_string(files) + " files)", rows, normals, accuracy);
+  }
+  return out;
+}
+
+std::string markdownMisses(const Json& report) {
+  std::vector<std::string> methods;  // in run order, those with scores
+  for (const Json& scene : report["scenes"]) {
+    for (const auto& [method, result] : scene["methods"].items()) {
+      if (result.contains("per_plane") && std::find(methods.begin(), methods.end(), method) == methods.end())
+        methods.push_back(method);
+    }
+  }
+  std::string out = "## Misses per method\n\n";
+  if (methods.empty()) return out + "No file has ground truth: nothing to miss.\n\n";
+  for (const std::string& method : methods) {
+    std::string rows;
+    std::size_t planes = 0, misses = 0, noise = 0;
+    for (const Json& scene : report["scenes"]) {
+      const Json& result = scene["methods"].value(method, Json::object());
+      const std::string file = scene["name"].get<std::string>();
+      for (const Json& plane : result.value("per_plane", Json::array())) {
+        ++planes;
+        if (plane["miss"].is_null()) continue;
+        ++misses;
+        rows += "| " + file + " | " + std::to_string(plane["label"].get<std::uint32_t>()) + " | " +
+                plane["miss"].get<std::string>() + " | " + std::to_string(plane["pixels"].get<std::size_t>()) + " | " +
+                fixed(plane["iou"], 2) + " | " + percent(plane["unlabelled_share"]) + " | " +
+                (plane["main_segment"].get<std::uint32_t>() == 0
+                     ? std::string("no segment holds any of it")
+                     : "segment " + std::to_string(plane["main_segment"].get<std::uint32_t>()) + " holds " +
+                           percent(plane["main_segment_share"])) +
+                " |\n";
+      }
+      for (const Json& segment : result.value("noise_segments", Json::array())) {
+        ++noise;
+        rows += "| " + file + " | segment " + std::to_string(segment["label"].get<std::uint32_t>()) + " | noise | " +
+                std::to_string(segment["pixels"].get<std::size_t>()) + " | " + fixed(segment["iou"], 2) + " | - | " +
+                percent(segment["off_plane_share"]) + " of it on no plane |\n";
+      }
+    }
+    out += "### " + method + ": " + std::to_string(misses) + " of " + std::to_string(planes) +
+           " ground-truth planes not correct, " + std::to_string(noise) + " noise segments\n\n";
+    if (rows.empty()) continue;
+    out +=
+        "| file | region | class | pixels | IoU | unlabelled | where it went |\n"
+        "|---|---|---|---:|---:|---:|---|\n" +
+        rows + "\n";
   }
   return out;
 }

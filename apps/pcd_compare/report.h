@@ -21,7 +21,8 @@ using Json = nlohmann::ordered_json;
 /// A method's entry in a scene: `timing` (median_ms, min_ms and the parts' parts_median_ms),
 /// the planes of `labels` and, when `input` has ground truth, the scores against it as in
 /// metrics.md (T = 0.8; planes and segments below `min_points` pixels ignored): mean and
-/// weighted IoU, Hoover counts, false-plane fraction, per plane; NaN as null.
+/// weighted IoU, Hoover counts, false-plane fraction, per plane (with why it is not a correct
+/// detection: floodplane::eval::MissReason) and the noise segments; NaN as null.
 Json methodJson(Json timing, const std::vector<std::uint32_t>& labels, const InputCloud& input,
                 std::uint32_t min_points);
 
@@ -36,5 +37,9 @@ void addMeans(Json& report);
 std::string markdownConfiguration(const Json& report);
 /// The means as Markdown tables: every file, then one table per sensor model.
 std::string markdownMeans(const Json& report);
+/// Per method, every kept ground-truth plane that is not a correct detection (file, label,
+/// class of miss, size, IoU, unlabelled share, the segment holding most of it) and every noise
+/// segment, as a Markdown table (--misses).
+std::string markdownMisses(const Json& report);
 
 }  // namespace pcd_compare

@@ -101,11 +101,8 @@ void addInputOutputOptions(CLI::App& app, Options& options) {
 }
 
 void addOutputFlags(CLI::App& app, Options& options) {
-  app.add_flag("--ascii", options.ascii, "Write the label PCD as text (default: binary compressed)");
-  app.add_flag("--png", options.png,
-               "Also write <name>.labels.png, a pixel per point: each plane in a colour of its own (label k always "
-               "the same colour), near-black where a point is on no plane, white where there is no point (no "
-               "depth)");
+  floodplane::apps::addAsciiFlag(app, options.ascii, "the label PCD");
+  app.add_flag("--png", options.png, "Also write <name>.labels.png, " + floodplane::apps::labelImageHelp());
   app.add_flag("--overlay", options.overlay,
                "Also write <name>.overlay.png: the input's own colours (its rgb field) with each plane's colour "
                "blended half over its pixels, white where there is no point. An input without colour (no rgb "

@@ -435,22 +435,20 @@ std::string quirkInconsistency(const Options& options) {
   return "";
 }
 
-}  // namespace
+constexpr const char* kDescription =
+    "Renders scene files (JSON, see data/scenes/README.md), or N procedurally generated scenes (--random), "
+    "into organized pcl::PointXYZL clouds: the measured point in x y z (NaN for no return) and the "
+    "ground-truth plane id in label. Writes <scene>.<sensor>.pcd and <scene>.<sensor>.planes.json per scene "
+    "and sensor model into OUTDIR. Random scene i (from 0) has seed S + i and is named random_<seed, 4 "
+    "digits>; the kinect and none frames show a room, the scanner frame blocks on a table (--family boards: "
+    "boards_<seed>, 2 cm boards in a bare room, none and kinect only). With --sequence N, "
+    "writes N frames of a camera walking through each scene instead: <scene>_f0000.<sensor>.pcd to "
+    "<scene>_f<N-1>.<sensor>.pcd (and .planes.json), with one ground-truth id per surface over the whole "
+    "sequence, and <scene>.poses.json with each frame's camera pose.";
 
-int main(int argc, char** argv) {
-  Options options;
-  CLI::App app{
-      "Renders scene files (JSON, see data/scenes/README.md), or N procedurally generated scenes (--random), "
-      "into organized pcl::PointXYZL clouds: the measured point in x y z (NaN for no return) and the "
-      "ground-truth plane id in label. Writes <scene>.<sensor>.pcd and <scene>.<sensor>.planes.json per scene "
-      "and sensor model into OUTDIR. Random scene i (from 0) has seed S + i and is named random_<seed, 4 "
-      "digits>; the kinect and none frames show a room, the scanner frame blocks on a table (--family boards: "
-      "boards_<seed>, 2 cm boards in a bare room, none and kinect only). With --sequence N, "
-      "writes N frames of a camera walking through each scene instead: <scene>_f0000.<sensor>.pcd to "
-      "<scene>_f<N-1>.<sensor>.pcd (and .planes.json), with one ground-truth id per surface over the whole "
-      "sequence, and <scene>.poses.json with each frame's camera pose.",
-      "pcd_synth"};
-  floodplane::apps::addVersionFlag(app);
+// The scenes to render and how: scene files or --random (--family), a walking camera
+// (--sequence), the sensor models, the seed, the resolution, the output directory.
+void addSceneOptions(CLI::App& app, Options& options) {
   // No existence check here: a missing file is reported with the others at the end.
   app.add_option("scenes", options.scene_files, "Scene files to render");
   app.add_option("-o,--output-dir", options.output_dir,
@@ -497,16 +495,22 @@ int main(int argc, char** argv) {
                      ->check(CLI::Range(1, 32768));
   width->needs(height);
   height->needs(width);
-  app.add_flag("--ascii", options.ascii, "Write the PCDs as text, as pcd_segment --ascii (default: binary compressed)");
+}
+
+// What is written besides each frame's PCD and ground truth, and how.
+void addOutputFlags(CLI::App& app, Options& options) {
+  floodplane::apps::addAsciiFlag(app, options.ascii, "the PCDs");
   app.add_flag("--png", options.png,
-               "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels: each "
-               "plane in a colour of its own, near-black where a point is on no plane, white where the sensor saw "
-               "nothing");
+               "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels, " +
+                   floodplane::apps::labelImageHelp());
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json (<scene>.boards.json with --family boards)");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
-  // A real sensor's quirks (synth/scanner_model.h, synth/sensor_model.h, synth/depth_warp.h).
+}
+
+// A real sensor's quirks (synth/scanner_model.h, synth/sensor_model.h, synth/depth_warp.h).
+void addQuirkOptions(CLI::App& app, Options& options) {
   app.add_option("--quantize-bits", options.quantize_bits,
                  "Scanner: report the range as an N-bit code over the working window 0.7-1.5 m, uniform in "
                  "depth, in place of the scanner's inverse-depth lattice (8 bits: 3.1 mm steps, a staircase on "
@@ -528,21 +532,52 @@ int main(int argc, char** argv) {
                  "corners read far). Between -1 and 1, not 0; 0.02 moves the corners of a wall at 3.5 m by 7 "
                  "cm; default off")
       ->type_name("PER_M");
-  if (const std::optional<int> done = floodplane::apps::parseCommandLine(app, argc, argv)) return *done;
-  if (const std::string problem = inconsistency(options); !problem.empty())
-    return floodplane::apps::usageError(app, problem);
+}
+
+// What the parsed options cannot do together, and what -o names, checked before any work; fills
+// in the default sensor models. An empty string when they are fine, else the usage error.
+std::string problemWith(Options& options) {
+  if (const std::string problem = inconsistency(options); !problem.empty()) return problem;
   if (!options.sensor) {
     options.sensor = options.random_count && !options.sequence_frames && !boardsFamily(options) ? "all" : "both";
   }
-  if (const std::string problem = quirkInconsistency(options); !problem.empty())
-    return floodplane::apps::usageError(app, problem);
+  if (const std::string problem = quirkInconsistency(options); !problem.empty()) return problem;
   try {
     floodplane::apps::outputKind("-o", options.output_dir, {},
                                  "-o names a directory: pcd_synth writes several files per scene");
   } catch (const std::invalid_argument& error) {
-    return floodplane::apps::usageError(app, error.what());
+    return error.what();
   }
+  return "";
+}
 
+// Says which scenes or seeds failed, if any; the exit code.
+int reportFailures(const std::vector<std::string>& failed, const Options& options) {
+  if (failed.empty()) return 0;
+  const std::size_t total =
+      options.random_count ? static_cast<std::size_t>(*options.random_count) : options.scene_files.size();
+  std::cerr << "pcd_synth: " << failed.size() << " of " << total
+            << (options.random_count ? " seeds failed:" : " scene files failed:");
+  for (const auto& item : failed) {
+    std::cerr << " " << item;
+  }
+  std::cerr << "\n";
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{kDescription, "pcd_synth"};
+  floodplane::apps::addVersionFlag(app);
+  addSceneOptions(app, options);
+  addOutputFlags(app, options);
+  addQuirkOptions(app, options);
+  if (const std::optional<int> done = floodplane::apps::parseCommandLine(app, argc, argv)) return *done;
+  if (const std::string problem = problemWith(options); !problem.empty()) {
+    return floodplane::apps::usageError(app, problem);
+  }
   try {
     fs::create_directories(options.output_dir);
   } catch (const fs::filesystem_error& error) {
@@ -550,19 +585,5 @@ int main(int argc, char** argv) {
               << "': " << error.code().message() << "\n";
     return 1;
   }
-
-  const std::vector<std::string> failed =
-      options.random_count ? renderRandomScenes(options) : renderSceneFiles(options);
-  if (!failed.empty()) {
-    const std::size_t total =
-        options.random_count ? static_cast<std::size_t>(*options.random_count) : options.scene_files.size();
-    std::cerr << "pcd_synth: " << failed.size() << " of " << total
-              << (options.random_count ? " seeds failed:" : " scene files failed:");
-    for (const auto& item : failed) {
-      std::cerr << " " << item;
-    }
-    std::cerr << "\n";
-    return 1;
-  }
-  return 0;
+  return reportFailures(options.random_count ? renderRandomScenes(options) : renderSceneFiles(options), options);
 }

@@ -7,8 +7,9 @@
 // command-line flags and the flag names in the apps' error messages (apps/common/
 // param_options.cpp). The PCL class's setters are written by hand, for their documentation;
 // test_param_options calls the setter named here for every entry, so a missing one does not
-// compile. A new parameter: a field in Params, a line here, a setter in
-// FloodFillPlaneSegmentation.
+// compile. So are the Python stubs' keywords and the ROS node's config and its reading:
+// test_param_lists (test/params) holds them to this list. A new parameter: a field in Params, a
+// line here, a setter in FloodFillPlaneSegmentation.
 //
 // X(field, Kind, flag, setter, help):
 //   field   the Params member;

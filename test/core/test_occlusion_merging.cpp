@@ -16,24 +16,15 @@
 
 #include "stages/occlusion_merging.h"
 #include "support/pinhole_grid.h"
+#include "support/stage_fixture.h"
 
 namespace floodplane {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kFocal = test::kPinholeFocal;
-constexpr float kPitch = static_cast<float>(1.0 / kFocal);
-
 using Grid = test::PinholeGrid;
-
-// The paper's fixed thresholds (sigma_plane 1 cm, sigma_plane-merge 3 cm), exact data.
-Params exactParams() {
-  Params params;
-  params.distance_threshold = 0.01;
-  params.merge_distance = 0.03;
-  params.depth_noise_coefficient = 0.0;
-  return params;
-}
+using test::exactParams;
+using test::kNaN;
+using test::kPinholePitch;
 
 // A frame whose planes are labelled by string art ('.' none, digits: plane numbers 1..K,
 // numbered by size as region output leaves them); each plane's sums are those of its pixels.
@@ -49,32 +40,20 @@ struct Frame {
   // number -> plane number).
   Frame(const std::vector<std::string>& art, const std::function<double(int, int)>& depth,
         const std::vector<std::uint32_t>& renumbering = {})
-      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth), number(renumbering) {
-    std::uint32_t count = 0;
-    for (const std::string& row : art)
-      for (const char c : row) {
-        image.push_back(c == '.' ? 0u : static_cast<std::uint32_t>(c - '0'));
-        count = std::max(count, image.back());
-      }
+      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth),
+        image(test::labelsFromArt(art)),
+        number(renumbering) {
     if (number.empty()) {
-      number.resize(count + 1);
+      number.resize(*std::max_element(image.begin(), image.end()) + 1);
       std::iota(number.begin(), number.end(), 0u);
     }
-    tolerances = Tolerances(params, {}, 1.0 / kFocal, image.size());
-    planes.list().resize(*std::max_element(number.begin(), number.end()));
-    for (std::size_t i = 0; i < image.size(); ++i) {
-      const std::uint32_t k = number[image[i]];
-      if (k == 0) continue;
-      PlaneCandidate& plane = planes[k];
-      plane.sums.add(Vec3::load(&grid.data[i * 3]));
-      plane.first_pixel = std::min(plane.first_pixel, i);
-    }
-    for (PlaneCandidate& plane : planes.list()) plane.criterion = planeCriterion(plane.sums.fit(), tolerances, kPitch);
+    tolerances = Tolerances(params, {}, 1.0 / test::kPinholeFocal, image.size());
+    planes = test::planesOfLabels(grid, image, tolerances, number);
   }
 
   bool merge() {
     return OcclusionMerging().run(grid.grid(), {image.data(), number.data()}, planes,
-                                  MergeCriterion(params, tolerances), tolerances, kPitch);
+                                  MergeCriterion(params, tolerances), tolerances, kPinholePitch);
   }
 };
 
@@ -230,7 +209,7 @@ TEST(OcclusionMerging, KeepsPlanesAtAnAngleApart) {
     if (inGap(u)) return 2.0;
     if (u < 10) return 3.0;
     // Along pixel u's ray x = (u - cx) z / f, on z = 3 + slope (x - x_mid).
-    const double ray = (u - 14.5) / kFocal;
+    const double ray = (u - 14.5) / test::kPinholeFocal;
     return 3.0 / (1.0 - slope * ray);
   });
   EXPECT_FALSE(f.merge());

@@ -9,9 +9,12 @@
 #include <vector>
 
 #include "stages/plane_merger.h"
+#include "support/stage_fixture.h"
 
 namespace floodplane {
 namespace {
+
+using test::exactParams;
 
 // A checkerboard of +-0.1 mm off the plane: the residual of a real surface. Exactly planar
 // patches are tested on their own (RejectsTwoExactPlanesAtAnAngleAboveTheThreshold).
@@ -43,15 +46,6 @@ PlaneSums smallPatch(float cx, float cz, float tilt, float roughness = kRoughnes
                 cz + s * std::sin(tilt) + w * std::cos(tilt)});
     }
   return sums;
-}
-
-// The paper's fixed thresholds, no noise.
-Params exactParams() {
-  Params params;
-  params.distance_threshold = 0.01;
-  params.merge_distance = 0.03;
-  params.depth_noise_coefficient = 0.0;
-  return params;
 }
 
 MergeCriterion criterionFor(const Params& params) {

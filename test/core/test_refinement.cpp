@@ -15,15 +15,14 @@
 
 #include "stages/refinement.h"
 #include "support/pinhole_grid.h"
+#include "support/stage_fixture.h"
 
 namespace floodplane {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kFocal = test::kPinholeFocal;
-constexpr float kPitch = static_cast<float>(1.0 / kFocal);
-
 using Grid = test::PinholeGrid;
+using test::kNaN;
+using test::kPinholePitch;
 
 // A frame labelled by string art ('.' none, digits: plane numbers); each plane's sums, first
 // pixel and criterion are those of its labelled pixels, as region output hands them over.
@@ -35,24 +34,10 @@ struct Frame {
   std::vector<std::size_t> queue;
 
   Frame(const std::vector<std::string>& art, const std::function<double(int, int)>& depth)
-      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth) {
-    std::uint32_t count = 0;
-    for (const std::string& row : art)
-      for (const char c : row) {
-        labels.push_back(c == '.' ? 0u : static_cast<std::uint32_t>(c - '0'));
-        count = std::max(count, labels.back());
-      }
-    planes.list().resize(count);
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-      if (labels[i] == 0) continue;
-      PlaneCandidate& plane = planes[labels[i]];
-      plane.sums.add(grid.point(i));
-      plane.first_pixel = std::min(plane.first_pixel, i);
-    }
+      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth), labels(test::labelsFromArt(art)) {
     Params params;
     params.distance_threshold = 0.01;  // the paper's sigma_plane; exact data
-    const Tolerances tolerances(params, {}, 1.0 / kFocal, labels.size());
-    for (PlaneCandidate& plane : planes.list()) plane.criterion = planeCriterion(plane.sums.fit(), tolerances, kPitch);
+    planes = test::planesOfLabels(grid, labels, Tolerances(params, {}, 1.0 / test::kPinholeFocal, labels.size()));
   }
 
   void refine(bool renumber_first = false) { refinePlanes(grid.grid(), holes, labels, planes, renumber_first, queue); }
@@ -229,7 +214,7 @@ TEST(Refinement, NeverLabelsFilledInHoles) {
   const Grid measured(width, height, [&](int u, int v) { return missing(u, v) ? kNaN : 2.0; });
   Params params;
   params.distance_threshold = 0.01;
-  const Tolerances tolerances(params, {}, 1.0 / kFocal, measured.data.size() / 3);
+  const Tolerances tolerances(params, {}, 1.0 / test::kPinholeFocal, measured.data.size() / 3);
   HoleFilling holes;
   const PointGrid& full = holes.fill(measured.grid(), tolerances);
   ASSERT_TRUE(holes.filled());
@@ -245,7 +230,7 @@ TEST(Refinement, NeverLabelsFilledInHoles) {
       planes[1].sums.add(Vec3::load(full.point(i)));
       planes[1].first_pixel = std::min(planes[1].first_pixel, i);
     }
-  planes[1].criterion = planeCriterion(planes[1].sums.fit(), tolerances, kPitch);
+  planes[1].criterion = planeCriterion(planes[1].sums.fit(), tolerances, kPinholePitch);
   std::vector<std::size_t> queue;
   refinePlanes(full, holes, labels, planes, false, queue);
   std::size_t labelled = 0, measured_points = 0, filled = 0;

@@ -16,15 +16,14 @@
 
 #include "stages/region_builder.h"
 #include "support/pinhole_grid.h"
+#include "support/stage_fixture.h"
 
 namespace floodplane {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kFocal = test::kPinholeFocal;
-constexpr float kPitch = static_cast<float>(1.0 / kFocal);
-
 using Grid = test::PinholeGrid;
+using test::kNaN;
+using test::kPinholePitch;
 
 // What the merging hands over: a frame, the grid that was segmented (the frame), a segment per
 // point, each segment its own cluster unless `root` says otherwise, and each root's sums over
@@ -42,9 +41,7 @@ struct Merged {
 
   Merged(Grid frame, const std::function<std::int32_t(int, int)>& segment, std::uint32_t min_inliers = 1)
       : full(std::move(frame)) {
-    params.distance_threshold = 0.01;
-    params.merge_distance = 0.03;
-    params.depth_noise_coefficient = 0.0;
+    params = test::exactParams();
     params.min_inliers = min_inliers;
     segmented = full.grid();
     std::int32_t count = 1;
@@ -75,7 +72,7 @@ struct Merged {
     PreparedFrame frame;
     frame.measured = measured;
     frame.grid = segmented;
-    frame.pitch = kPitch;
+    frame.pitch = kPinholePitch;
     frame.tolerances = Tolerances(params, {}, frame.pitch, full.data.size() / full.stride);
     frame.pixel_tolerances = frame.tolerances;
     frame.holes = &holes;

@@ -252,6 +252,9 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
   for (const std::string option : {"--resolutions", "--sensor", "--tuned-file", "--png3d"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
   }
+  // --png's pictures as every app's label images (common/cli.h).
+  EXPECT_NE(help.out.find("near-black where a point is on no plane, white where there is no point (no depth)"),
+            std::string::npos);
   const Result version = run("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_FALSE(version.out.empty());
@@ -364,6 +367,88 @@ TEST_F(PcdCompare, ResolutionsAddFloodplaneAtEachSubsampling) {
   for (const std::string method : {"floodplane/1", "floodplane/2", "floodplane/4", "floodplane/8"}) {
     expectIouAveragesOfThePlanes(scene["methods"][method], method);
   }
+}
+
+TEST_F(PcdCompare, MinGtPointsSetsTheSizeOfTheRegionsThatCount) {
+  // The scene's planes, counted with a minimum of n pixels; every kept plane has n or more.
+  const auto planesOfAtLeast = [this](const std::string& option, std::uint32_t n) {
+    const fs::path json_file = dir_ / "out.json";
+    const Result outcome = run("--repeat 0 --methods floodplane " + option + " --json " + quote(json_file.string()) +
+                               " " + quote(kStaircase));
+    EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+    const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+    const auto& scene = json["scenes"][0];
+    EXPECT_EQ(scene["min_points"].get<std::uint32_t>(), n) << option;
+    const auto& floodplane = scene["methods"]["floodplane"];
+    for (const auto& plane : floodplane["per_plane"]) {
+      EXPECT_GE(plane["pixels"].get<std::uint32_t>(), n) << option;
+    }
+    if (!option.empty()) {
+      EXPECT_NE(outcome.out.find("pixels (--min-gt-points)"), std::string::npos) << outcome.out;
+    }
+    return floodplane["ground_truth_planes"].get<std::size_t>();
+  };
+  const std::size_t by_default = planesOfAtLeast("", 125);  // round(500 * 320 * 240 / (640 * 480))
+  EXPECT_GE(planesOfAtLeast("--min-gt-points 100", 100), by_default);
+  EXPECT_LT(planesOfAtLeast("--min-gt-points 5000", 5000), by_default);
+}
+
+TEST_F(PcdCompare, MinGtPointsMustBeAWholeNumberOfPixelsAboveZero) {
+  for (const std::string value : {"0", "-3", "many", "1.5", "5000000000"}) {
+    expectUsageError(run("--min-gt-points " + value + " " + quote(kStaircase)), "pcd_compare", "--min-gt-points");
+  }
+  EXPECT_NE(run("--help").out.find("--min-gt-points"), std::string::npos);
+}
+
+TEST_F(PcdCompare, MissesListEveryPlaneNotFoundCorrectlyWithItsReason) {
+  const fs::path json_file = dir_ / "out.json";
+  const Result outcome = run("--repeat 0 --quiet --misses --methods floodplane,omps --json " +
+                             quote(json_file.string()) + " " + quote(kTabletop) + " " + quote(kStaircase));
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const std::size_t misses = outcome.out.find("## Misses per method");
+  ASSERT_NE(misses, std::string::npos) << outcome.out;
+  EXPECT_GT(misses, outcome.out.find("## Means per method"));
+  const std::string table = outcome.out.substr(misses);
+  const nlohmann::json json = nlohmann::json::parse(readFile(json_file));
+  std::size_t rows = 0;
+  for (const std::string method : {"floodplane", "omps"}) {
+    std::size_t planes = 0, missed = 0, noise = 0;
+    for (const auto& scene : json["scenes"]) {
+      const auto& result = scene["methods"][method];
+      const std::string file = scene["name"];
+      for (const auto& plane : result["per_plane"]) {
+        ++planes;
+        // A reason exactly for the planes that are not correct detections.
+        EXPECT_EQ(plane["miss"].is_null(), plane["hoover"] == "correct") << plane.dump();
+        EXPECT_GE(plane["unlabelled_share"].get<double>(), 0.0);
+        EXPECT_LE(plane["unlabelled_share"].get<double>(), 1.0);
+        if (plane["miss"].is_null()) continue;
+        ++missed;
+        const std::string reason = plane["miss"];
+        EXPECT_TRUE(reason == "no_segment" || reason == "under_segmented" || reason == "over_segmented" ||
+                    reason == "iou_below_t")
+            << reason;
+        // Hoover's own classes keep their names.
+        if (plane["hoover"] == "over" || plane["hoover"] == "under") {
+          EXPECT_EQ(reason, plane["hoover"].get<std::string>() + "_segmented");
+        }
+        const std::string row = "| " + file + " | " + std::to_string(plane["label"].get<int>()) + " | " + reason +
+                                " | " + std::to_string(plane["pixels"].get<int>()) + " | ";
+        EXPECT_NE(table.find(row), std::string::npos) << row << "\n" << table;
+        ++rows;
+      }
+      EXPECT_EQ(result["noise_segments"].size(), result["hoover"]["noise"].get<std::size_t>());
+      noise += result["noise_segments"].size();
+    }
+    EXPECT_NE(table.find("### " + method + ": " + std::to_string(missed) + " of " + std::to_string(planes) +
+                         " ground-truth planes not correct, " + std::to_string(noise) + " noise segments"),
+              std::string::npos)
+        << table;
+  }
+  EXPECT_GT(rows, 0u) << "OMPS at its defaults misses planes of these scenes";
+  // Without --misses, no such table.
+  EXPECT_EQ(run("--repeat 0 --quiet --methods floodplane " + quote(kStaircase)).out.find("## Misses"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -396,5 +396,19 @@ TEST_F(PcdSynth, BadArgumentsAreRejectedWithAClearMessage) {
   }
 }
 
+TEST_F(PcdSynth, HelpListsEveryOptionAndDrawsLabelsAsEveryApp) {
+  const Result help = run({"--help"});
+  ASSERT_EQ(help.exit_code, 0) << help.err;
+  for (const std::string option : {"--output-dir", "--random", "--family", "--sequence", "--look-away", "--sensor",
+                                   "--seed", "--width", "--height", "--ascii", "--png", "--write-scene", "--quiet",
+                                   "--quantize-bits", "--warp", "--speckle", "--bend", "--version"}) {
+    EXPECT_TRUE(contains(help.out, option)) << option;
+  }
+  // The words of every app (common/cli.h).
+  EXPECT_TRUE(contains(help.out, "Write the PCDs as text (default: binary compressed)")) << help.out;
+  EXPECT_TRUE(contains(help.out, "near-black where a point is on no plane, white where there is no point (no depth)"))
+      << help.out;
+}
+
 }  // namespace
 }  // namespace floodplane::test

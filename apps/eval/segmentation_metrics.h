@@ -28,6 +28,19 @@ std::uint32_t defaultMinPoints(std::size_t width, std::size_t height);
 /// How a kept ground-truth plane was classified by Hoover's metric.
 enum class HooverClass { correct, over_segmented, under_segmented, missed };
 
+/// Why a kept ground-truth plane g is not a correct detection, from where its pixels went; the
+/// first of these that applies:
+/// 1. over_segmented or under_segmented: Hoover's class of g.
+/// 2. no_segment: at least half of g's pixels carry no predicted label (0).
+/// 3. over_segmented: no kept segment holds half of g: its labelled pixels are split among
+///    several segments (kept ones, or ones below the size rule).
+/// 4. under_segmented: the segment p holding most of g has more than (1 - T)|p| pixels on other
+///    ground-truth planes: merged with other regions.
+/// 5. iou_below_t: one segment holds at least half of g but covers less than T of it, or spills
+///    beyond it (mostly onto no plane): found, at an IoU below T.
+/// `none` for a correct detection.
+enum class MissReason { none, no_segment, under_segmented, over_segmented, iou_below_t };
+
 /// One kept ground-truth plane.
 struct PlaneScore {
   std::uint32_t label = 0;         ///< its ground-truth label
@@ -35,6 +48,20 @@ struct PlaneScore {
   double iou = 0.0;                ///< max over kept predicted segments of |g n p| / |g u p|
   std::uint32_t best_segment = 0;  ///< the predicted label reaching `iou`; 0 if none overlaps
   HooverClass hoover = HooverClass::missed;
+  MissReason miss = MissReason::none;  ///< why it is not a correct detection
+  double unlabelled_share = 0.0;       ///< the share of its pixels with predicted label 0
+  /// The kept segment that holds most of its pixels (ties: the lower label), 0 if none does,
+  /// and the share of its pixels that segment holds.
+  std::uint32_t main_segment = 0;
+  double main_segment_share = 0.0;
+};
+
+/// A kept predicted segment in no Hoover instance (noise).
+struct NoiseSegment {
+  std::uint32_t label = 0;       ///< its predicted label
+  std::size_t pixels = 0;        ///< |p|, valid pixels only
+  double iou = 0.0;              ///< max over kept ground-truth planes of |g n p| / |g u p|
+  double off_plane_share = 0.0;  ///< the share of its pixels whose ground-truth label is 0 (on no plane)
 };
 
 /// Hoover et al.'s counts. `over` counts over-segmented ground-truth planes and `under`
@@ -50,6 +77,7 @@ struct HooverCounts {
 
 struct SegmentationScores {
   std::vector<PlaneScore> planes;      ///< kept ground-truth planes, by ascending label
+  std::vector<NoiseSegment> noise;     ///< the noise segments, by ascending label
   std::size_t predicted_segments = 0;  ///< kept predicted segments
   /// Averages of PlaneScore::iou, plain and weighted by |g|. NaN when no plane is kept:
   /// there is nothing to average, and 0 would read as "found nothing".
@@ -77,6 +105,7 @@ double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth, const 
 /// Hoover classification order: correct detections first, then over-segmentations (ground-
 /// truth planes by ascending label), then under-segmentations (predicted segments by
 /// ascending label), each among regions not yet classified; what is left is missed / noise.
+/// Every plane that is not a correct detection gets its MissReason.
 ///
 /// Throws std::invalid_argument if the three vectors differ in size or the tolerance is not
 /// in (0.5, 1].

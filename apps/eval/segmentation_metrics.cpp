@@ -21,6 +21,10 @@ struct Region {
   std::uint32_t label = 0;
   std::size_t pixels = 0;
   bool classified = false;
+  // Where its pixels went, for the reasons of the misses: a plane's pixels with predicted
+  // label 0, a segment's pixels on a ground-truth plane (any label but 0, kept or not).
+  std::size_t unlabelled = 0;
+  std::size_t on_planes = 0;
 };
 
 // Pixel counts per label over the valid pixels, for labels > 0.
@@ -42,7 +46,7 @@ std::vector<Region> keptRegions(const std::map<std::uint32_t, std::size_t>& coun
   for (const auto& [label, pixels] : counts) {
     if (pixels >= min_points) {
       index_of.emplace(label, regions.size());
-      regions.push_back({label, pixels, false});
+      regions.push_back({label, pixels, false, 0, 0});
     }
   }
   return regions;
@@ -88,6 +92,8 @@ Regions keptRegionsAndOverlaps(const std::vector<std::uint32_t>& ground_truth,
     if (valid[i] == 0) continue;
     const auto g = gt_index.find(ground_truth[i]);
     const auto p = segment_index.find(predicted[i]);
+    if (g != gt_index.end() && predicted[i] == 0) ++regions.gt[g->second].unlabelled;
+    if (p != segment_index.end() && ground_truth[i] != 0) ++regions.segments[p->second].on_planes;
     if (g != gt_index.end() && p != segment_index.end()) ++overlap_pixels[{g->second, p->second}];
   }
   regions.overlaps_of_gt.resize(regions.gt.size());
@@ -134,8 +140,8 @@ void scoreIou(const Regions& regions, SegmentationScores& scores) {
 // regions that no earlier step has classified.
 class HooverClassifier {
  public:
-  HooverClassifier(Regions regions, double tolerance, SegmentationScores& scores)
-      : regions_(std::move(regions)), tolerance_(tolerance), scores_(scores) {}
+  HooverClassifier(Regions& regions, double tolerance, SegmentationScores& scores)
+      : regions_(regions), tolerance_(tolerance), scores_(scores) {}
 
   void classify() {
     findCorrectDetections();
@@ -221,10 +227,71 @@ class HooverClassifier {
                });
   }
 
-  Regions regions_;
+  Regions& regions_;
   double tolerance_;
   SegmentationScores& scores_;
 };
+
+double share(std::size_t part, std::size_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
+// Why each plane that is not a correct detection is not (MissReason, in its order), and the
+// noise segments, once the Hoover classification is done.
+void explainMisses(const Regions& regions, double tolerance, SegmentationScores& scores) {
+  for (std::size_t g = 0; g < regions.gt.size(); ++g) {
+    PlaneScore& plane = scores.planes[g];
+    const Region& truth = regions.gt[g];
+    plane.unlabelled_share = share(truth.unlabelled, truth.pixels);
+    const Overlap* main = nullptr;  // the first of the largest: the lower label on a tie
+    for (const Overlap& overlap : regions.overlaps_of_gt[g]) {
+      if (main == nullptr || overlap.pixels > main->pixels) main = &overlap;
+    }
+    if (main != nullptr) {
+      plane.main_segment = regions.segments[main->other].label;
+      plane.main_segment_share = share(main->pixels, truth.pixels);
+    }
+    switch (plane.hoover) {
+      case HooverClass::correct:
+        plane.miss = MissReason::none;
+        continue;
+      case HooverClass::over_segmented:
+        plane.miss = MissReason::over_segmented;
+        continue;
+      case HooverClass::under_segmented:
+        plane.miss = MissReason::under_segmented;
+        continue;
+      case HooverClass::missed:
+        break;
+    }
+    if (2 * truth.unlabelled >= truth.pixels) {
+      plane.miss = MissReason::no_segment;
+    } else if (main == nullptr || 2 * main->pixels < truth.pixels) {
+      plane.miss = MissReason::over_segmented;
+    } else {
+      const Region& segment = regions.segments[main->other];
+      // More than (1 - T)|p| on other planes: what is left of p is less than T|p| (as Hoover's
+      // tests compare, without rounding 1 - T).
+      const std::size_t off_other_planes = segment.pixels - (segment.on_planes - main->pixels);
+      plane.miss = static_cast<double>(off_other_planes) < tolerance * static_cast<double>(segment.pixels)
+                       ? MissReason::under_segmented
+                       : MissReason::iou_below_t;
+    }
+  }
+  for (std::size_t p = 0; p < regions.segments.size(); ++p) {
+    const Region& segment = regions.segments[p];
+    if (segment.classified) continue;
+    NoiseSegment noise;
+    noise.label = segment.label;
+    noise.pixels = segment.pixels;
+    noise.off_plane_share = share(segment.pixels - segment.on_planes, segment.pixels);
+    for (const Overlap& overlap : regions.overlaps_of_segment[p]) {
+      const std::size_t united = segment.pixels + regions.gt[overlap.other].pixels - overlap.pixels;
+      noise.iou = std::max(noise.iou, share(overlap.pixels, united));
+    }
+    scores.noise.push_back(noise);
+  }
+}
 
 // The false-plane fraction over the kept segments of `segments` (labels, ascending).
 double falsePlaneFraction(const std::vector<std::uint32_t>& ground_truth, const std::vector<std::uint32_t>& predicted,
@@ -270,7 +337,8 @@ SegmentationScores evaluateSegmentation(const std::vector<std::uint32_t>& ground
   scores.predicted_segments = regions.segments.size();
   scores.false_plane_fraction = falsePlaneFraction(ground_truth, predicted, valid, regions.segments);
   scoreIou(regions, scores);
-  HooverClassifier(std::move(regions), options.tolerance, scores).classify();
+  HooverClassifier(regions, options.tolerance, scores).classify();
+  explainMisses(regions, options.tolerance, scores);
   return scores;
 }
 

@@ -21,6 +21,7 @@ using floodplane::eval::evaluateSegmentation;
 using floodplane::eval::falsePlaneFraction;
 using floodplane::eval::HooverClass;
 using floodplane::eval::MetricsOptions;
+using floodplane::eval::MissReason;
 using floodplane::eval::SegmentationScores;
 
 std::vector<std::uint32_t> grid(const std::vector<std::string>& rows) {
@@ -230,6 +231,95 @@ TEST(SegmentationMetrics, GridsOfDifferentSizesAreRejected) {
   EXPECT_THROW(evaluateSegmentation(grid({"11"}), grid({"11"}), allValid(3)), std::invalid_argument);
 }
 
+// Why a plane is missed, one test per reason (MissReason, in its order).
+
+TEST(SegmentationMetrics, CorrectDetectionHasNoMissReason) {
+  const auto s = score({"1111111111.."}, {"222222222..."});
+  ASSERT_EQ(s.planes.size(), 1u);
+  EXPECT_EQ(s.planes[0].miss, MissReason::none);
+  EXPECT_DOUBLE_EQ(s.planes[0].unlabelled_share, 0.1);
+  EXPECT_EQ(s.planes[0].main_segment, 2u);
+  EXPECT_DOUBLE_EQ(s.planes[0].main_segment_share, 0.9);
+  EXPECT_TRUE(s.noise.empty());
+}
+
+TEST(SegmentationMetrics, PlaneMostlyUnlabelledIsMissedForNoSegment) {
+  // 8 of 10 pixels unlabelled; segment 2 lies inside the plane, alone: noise.
+  const auto s = score({"1111111111"}, {"22........"});
+  expectCounts(s, 0, 0, 0, 1, 1);
+  EXPECT_EQ(s.planes[0].miss, MissReason::no_segment);
+  EXPECT_DOUBLE_EQ(s.planes[0].unlabelled_share, 0.8);
+  EXPECT_EQ(s.planes[0].main_segment, 2u);
+  EXPECT_DOUBLE_EQ(s.planes[0].main_segment_share, 0.2);
+  // Half unlabelled is "most" too.
+  EXPECT_EQ(score({"1111111111"}, {"22222....."}).planes[0].miss, MissReason::no_segment);
+}
+
+TEST(SegmentationMetrics, UnlabelledShareCountsOnlyValidPixels) {
+  // 4 of the plane's 6 pixels with a point are unlabelled; the other 4 have no point.
+  const auto gt = grid({"1111111111"});
+  const auto s = evaluateSegmentation(gt, grid({"22........"}), mask({"..xxxx...."}), keepAll());
+  ASSERT_EQ(s.planes.size(), 1u);
+  EXPECT_EQ(s.planes[0].pixels, 6u);
+  EXPECT_DOUBLE_EQ(s.planes[0].unlabelled_share, 4.0 / 6.0);
+}
+
+TEST(SegmentationMetrics, HooversOverAndUnderSegmentationsAreTheirOwnReasons) {
+  EXPECT_EQ(score({"1111111111"}, {"2222233333"}).planes[0].miss, MissReason::over_segmented);
+  const auto under = score({"1111122222"}, {"3333333333"});
+  EXPECT_EQ(under.planes[0].miss, MissReason::under_segmented);
+  EXPECT_EQ(under.planes[1].miss, MissReason::under_segmented);
+  EXPECT_TRUE(under.noise.empty());
+}
+
+TEST(SegmentationMetrics, PlaneSplitAmongSegmentsThatSpillIsMissedAsOverSegmented) {
+  // Segments 2 and 3 each hold 4 of the plane's 10 pixels and as many off it: too much spill
+  // for Hoover's over-segmentation (4 < 0.8 * 8), and neither holds half of the plane.
+  const auto s = score({"....1111111111...."}, {"222222223333..3333"});
+  expectCounts(s, 0, 0, 0, 1, 2);
+  EXPECT_EQ(s.planes[0].miss, MissReason::over_segmented);
+  EXPECT_DOUBLE_EQ(s.planes[0].unlabelled_share, 0.2);
+  EXPECT_EQ(s.planes[0].main_segment, 2u);  // a tie: the lower label
+  EXPECT_DOUBLE_EQ(s.planes[0].main_segment_share, 0.4);
+  // Both segments are noise, half of each on no plane.
+  ASSERT_EQ(s.noise.size(), 2u);
+  EXPECT_EQ(s.noise[0].label, 2u);
+  EXPECT_EQ(s.noise[0].pixels, 8u);
+  EXPECT_DOUBLE_EQ(s.noise[0].iou, 4.0 / 14.0);
+  EXPECT_DOUBLE_EQ(s.noise[0].off_plane_share, 0.5);
+  EXPECT_EQ(s.noise[1].label, 3u);
+}
+
+TEST(SegmentationMetrics, PlaneWhoseSegmentRunsOnOverAnotherPlaneIsMissedAsUnderSegmented) {
+  // Segment 3 holds all of plane 1 and half of plane 2: not Hoover's under-segmentation (it
+  // covers too little of plane 2), but 5 of its 15 pixels lie on another plane, more than
+  // (1 - 0.8) * 15. Plane 2 is half unlabelled.
+  const auto s = score({"11111111112222222222"}, {"333333333333333....."});
+  expectCounts(s, 0, 0, 0, 2, 1);
+  EXPECT_EQ(s.planes[0].miss, MissReason::under_segmented);
+  EXPECT_DOUBLE_EQ(s.planes[0].main_segment_share, 1.0);
+  EXPECT_EQ(s.planes[1].miss, MissReason::no_segment);
+  ASSERT_EQ(s.noise.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.noise[0].off_plane_share, 0.0);
+}
+
+TEST(SegmentationMetrics, PlaneFoundAtALowOverlapIsMissedAsIouBelowT) {
+  // Too little of the plane: 7 of 10.
+  const auto part = score({"1111111111"}, {"2222222..."});
+  EXPECT_EQ(part.planes[0].miss, MissReason::iou_below_t);
+  EXPECT_DOUBLE_EQ(part.planes[0].unlabelled_share, 0.3);
+  // All of it, but spilling over 4 pixels on no plane: 10 < 0.8 * 14.
+  const auto spill = score({"1111111111...."}, {"22222222222222"});
+  EXPECT_EQ(spill.planes[0].miss, MissReason::iou_below_t);
+  ASSERT_EQ(spill.noise.size(), 1u);
+  EXPECT_DOUBLE_EQ(spill.noise[0].off_plane_share, 4.0 / 14.0);
+  EXPECT_DOUBLE_EQ(spill.noise[0].iou, 10.0 / 14.0);
+  // Spilling onto another plane by no more than 1 - T of the segment is no merge: segment 3
+  // (10 px) holds 7 of plane 1 and 2 of plane 2 (2 <= 0.2 * 10, and 1 pixel on no plane).
+  const auto small_spill = score({"11111111112222222222."}, {"...333333333........3"});
+  EXPECT_EQ(small_spill.planes[0].miss, MissReason::iou_below_t);
+}
+
 TEST(SegmentationMetrics, FalsePlaneFractionIsTheShareOfNonPlanePixelsInASegment) {
   // Ground truth 0 at columns 5-9 of both rows (a curved surface): 10 pixels. Segment 3 claims
   // 3 of them in the first row, segment 4 one in the second: 4 / 10.
@@ -282,6 +372,7 @@ TEST(SegmentationMetrics, DefaultMinimumSizeScalesWithThePixelCount) {
   EXPECT_EQ(defaultMinPoints(160, 120), 31u);  // 31.25
   EXPECT_EQ(defaultMinPoints(80, 60), 8u);     // 7.8125
   EXPECT_EQ(defaultMinPoints(1280, 960), 2000u);
+  EXPECT_EQ(defaultMinPoints(512, 512), 427u);  // 426.67: the ABW scans' default
 }
 
 }  // namespace
