@@ -155,7 +155,7 @@ def test_keywords_are_the_fields_of_params(scene):
     segmenter = floodplane.Segmenter()
     assert list(segmenter.params) == fields
     assert segmenter.params["distance_threshold"] is None and segmenter.params["min_inliers"] is None
-    assert segmenter.params["subsampling"] == 1
+    assert segmenter.params["subsampling"] == 4
 
     given = dict(distance_threshold=0.02, seed_size=0.05, angular_threshold=0.2, merge_distance=0.04,
                  min_inliers=50, maximum_curvature=0.01, subsampling=2,

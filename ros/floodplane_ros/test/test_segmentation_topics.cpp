@@ -568,13 +568,15 @@ TEST(SegmentationNode, TakesNewParametersThroughDynamicReconfigure) {
   const Published subsampled = node->sendCloud(cloud);
   expectLibrarysResult(subsampled, frame, pointsOf(cloud));
 
-  ASSERT_TRUE(node->reconfigure({{"subsampling", 1}}, {}));
+  // Back to the default (the tests after this one run at the node's defaults).
+  ASSERT_TRUE(node->reconfigure({{"subsampling", floodplane::Params().subsampling}}, {}));
   node->library.setParams(floodplane::Params());
-  const Published full = node->sendCloud(cloud);
-  expectLibrarysResult(full, frame, pointsOf(cloud));
-  // The parameter reached the segmentation: sub-sampled planes are fitted to other points.
-  ASSERT_TRUE(subsampled.complete() && full.complete());
-  EXPECT_NE(subsampled.planes->planes.front().plane.coef, full.planes->planes.front().plane.coef);
+  const Published by_default = node->sendCloud(cloud);
+  expectLibrarysResult(by_default, frame, pointsOf(cloud));
+  // The parameter reached the segmentation: planes of another sub-sampling are fitted to other
+  // points.
+  ASSERT_TRUE(subsampled.complete() && by_default.complete());
+  EXPECT_NE(subsampled.planes->planes.front().plane.coef, by_default.planes->planes.front().plane.coef);
 }
 
 TEST(SegmentationNode, GivesThePlanesTrackIdsWhenTracking) {
