@@ -363,7 +363,8 @@ TEST_F(PcdCompare, ResolutionsAddFloodplaneAtEachSubsampling) {
   std::vector<std::string> order;
   const auto in_file_order = nlohmann::ordered_json::parse(readFile(json_file))["scenes"][0]["methods"];
   for (const auto& [method, result] : in_file_order.items()) order.push_back(method);
-  EXPECT_EQ(order, (std::vector<std::string>{"ransac", "floodplane/2", "floodplane/1", "floodplane/4", "floodplane/8"}));
+  EXPECT_EQ(order,
+            (std::vector<std::string>{"ransac", "floodplane/2", "floodplane/1", "floodplane/4", "floodplane/8"}));
   for (const std::string method : {"floodplane/1", "floodplane/2", "floodplane/4", "floodplane/8"}) {
     expectIouAveragesOfThePlanes(scene["methods"][method], method);
   }
