@@ -82,7 +82,7 @@ class Segmenter {
     bool measure_phases = false;
     /// The frame continues the last one this Segmenter segmented (a stream from one sensor):
     /// that frame's noise models (raw, smoothed, of the block means) are taken again instead of
-    /// measured anew, which saves the noise measurements (bench/README.md, head_start); it is
+    /// measured anew, which saves the noise measurements (bench/HISTORY.md, "Head start"); it is
     /// measured again every kNoiseRefreshFrames frames, and whenever the last estimate rested
     /// on too few flat patches. A cold start on the first frame, after setParams, after a
     /// failed call, when the size changed, and when Params fix the noise. Planes are those of
