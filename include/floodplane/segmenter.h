@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "floodplane/noise_model.h"
 #include "floodplane/params.h"
 #include "floodplane/plane_fit.h"
 #include "floodplane/point_grid.h"
@@ -39,22 +40,6 @@ struct SegmentationStats {
   std::size_t merges = 0;             ///< merges by Eq. 9
   /// The noise model was the previous frame's (Segmenter::Options::head_start), not measured.
   bool head_start = false;
-};
-
-/// The sensor noise a segmentation assumed: the depth noise along a viewing ray at range r,
-///   sigma(r) = sigma_0 + c r^2,
-/// and, where the sensor reports depths on a lattice, the depth step q(r) = q_0 + q_2 r^2
-/// (0 where it does not). Measured on the frame (self-calibration) unless Params fixes it.
-struct NoiseModel {
-  double sigma_constant = 0.0;   ///< sigma_0 [m]
-  double sigma_quadratic = 0.0;  ///< c [1/m]
-  double step_constant = 0.0;    ///< q_0 [m]
-  double step_quadratic = 0.0;   ///< q_2 [1/m]
-  std::size_t patches = 0;       ///< flat 5 x 5 patches the estimate rests on
-  bool estimated = false;        ///< false: taken from Params
-
-  double sigma(double range) const { return sigma_constant + sigma_quadratic * range * range; }
-  double step(double range) const { return step_constant + step_quadratic * range * range; }
 };
 
 /// One plane found in the cloud.
@@ -96,8 +81,8 @@ class Segmenter {
     /// Fill Segmentation::phases (a few clock reads per flood).
     bool measure_phases = false;
     /// The frame continues the last one this Segmenter segmented (a stream from one sensor):
-    /// that frame's noise model (raw and smoothed) is taken again instead of measured anew,
-    /// which saves the two noise measurements, about a sixth of a Kinect frame's time; it is
+    /// that frame's noise models (raw, smoothed, of the block means) are taken again instead of
+    /// measured anew, which saves the noise measurements (bench/HISTORY.md, "Head start"); it is
     /// measured again every kNoiseRefreshFrames frames, and whenever the last estimate rested
     /// on too few flat patches. A cold start on the first frame, after setParams, after a
     /// failed call, when the size changed, and when Params fix the noise. Planes are those of

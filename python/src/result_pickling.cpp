@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "errors.h"
@@ -110,58 +111,50 @@ SegmentedPlane segmentedPlaneFrom(StateReader& reader) {
   return plane;
 }
 
+// The plain structs' states: each struct's fields are listed once (its `fields` function
+// hands them to a visitor in their order), for both ways.
+template <typename T, typename Fields>
+py::tuple plainState(T value, Fields fields) {
+  return fields(value, [](auto&... field) { return py::make_tuple(kStateFormat, field...); });
+}
+
+template <typename T, typename Fields>
+T plainFromState(const py::tuple& state, const char* type, Fields fields) {
+  T value;
+  StateReader reader(state, type, fields(value, [](auto&... field) { return sizeof...(field); }));
+  fields(value, [&reader](auto&... field) {
+    ((field = reader.next<std::decay_t<decltype(field)>>()), ...);  // left to right: the fields' order
+    return 0;
+  });
+  return value;
+}
+
+const auto noiseFields = [](NoiseModel& n, auto&& visit) {
+  return visit(n.sigma_constant, n.sigma_quadratic, n.step_constant, n.step_quadratic, n.patches, n.estimated);
+};
+const auto phasesFields = [](PhaseTimes& t, auto&& visit) {
+  return visit(t.preparation, t.seed_selection, t.flood_fill, t.relabelling, t.merging, t.region_output,
+               t.pcl_conversion);
+};
+const auto statsFields = [](SegmentationStats& s, auto&& visit) {
+  return visit(s.seed_candidates, s.seeds, s.pixels_taken_over, s.segments, s.merges, s.head_start);
+};
+
 }  // namespace
 
-py::tuple noiseState(const NoiseModel& n) {
-  return py::make_tuple(kStateFormat, n.sigma_constant, n.sigma_quadratic, n.step_constant, n.step_quadratic, n.patches,
-                        n.estimated);
-}
-
+py::tuple noiseState(const NoiseModel& noise) { return plainState(noise, noiseFields); }
 NoiseModel noiseFromState(const py::tuple& state) {
-  StateReader reader(state, "NoiseModel", 6);
-  NoiseModel n;
-  n.sigma_constant = reader.next<double>();
-  n.sigma_quadratic = reader.next<double>();
-  n.step_constant = reader.next<double>();
-  n.step_quadratic = reader.next<double>();
-  n.patches = reader.next<std::size_t>();
-  n.estimated = reader.next<bool>();
-  return n;
+  return plainFromState<NoiseModel>(state, "NoiseModel", noiseFields);
 }
 
-py::tuple phasesState(const PhaseTimes& t) {
-  return py::make_tuple(kStateFormat, t.preparation, t.seed_selection, t.flood_fill, t.relabelling, t.merging,
-                        t.region_output, t.pcl_conversion);
-}
-
+py::tuple phasesState(const PhaseTimes& phases) { return plainState(phases, phasesFields); }
 PhaseTimes phasesFromState(const py::tuple& state) {
-  StateReader reader(state, "PhaseTimes", 7);
-  PhaseTimes t;
-  t.preparation = reader.next<double>();
-  t.seed_selection = reader.next<double>();
-  t.flood_fill = reader.next<double>();
-  t.relabelling = reader.next<double>();
-  t.merging = reader.next<double>();
-  t.region_output = reader.next<double>();
-  t.pcl_conversion = reader.next<double>();
-  return t;
+  return plainFromState<PhaseTimes>(state, "PhaseTimes", phasesFields);
 }
 
-py::tuple statsState(const SegmentationStats& s) {
-  return py::make_tuple(kStateFormat, s.seed_candidates, s.seeds, s.pixels_taken_over, s.segments, s.merges,
-                        s.head_start);
-}
-
+py::tuple statsState(const SegmentationStats& stats) { return plainState(stats, statsFields); }
 SegmentationStats statsFromState(const py::tuple& state) {
-  StateReader reader(state, "SegmentationStats", 6);
-  SegmentationStats s;
-  s.seed_candidates = reader.next<std::size_t>();
-  s.seeds = reader.next<std::size_t>();
-  s.pixels_taken_over = reader.next<std::size_t>();
-  s.segments = reader.next<std::size_t>();
-  s.merges = reader.next<std::size_t>();
-  s.head_start = reader.next<bool>();
-  return s;
+  return plainFromState<SegmentationStats>(state, "SegmentationStats", statsFields);
 }
 
 py::tuple planeState(const PlaneResult& plane) {

@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "floodplane/segmenter.h"
+#include <initializer_list>
+
+#include "floodplane/noise_model.h"
+#include "util/simd.h"
 
 namespace floodplane {
 
@@ -77,5 +80,36 @@ inline bool roundingOnly(const NoiseModel& noise) {
 /// out) must not widen its own tolerances by c r^2 until it fits every plane. A hole at p
 /// (NaN) leaves q's own range.
 inline float nearerRangeSq(float p_sq, float q_sq) { return p_sq < q_sq ? p_sq : q_sq; }
+
+#if FLOODPLANE_SIMD
+/// static_cast<float>(noiseDeviations(noise, k, double(range_sq))) lane by lane: the noise in
+/// double, as the scalar code takes it.
+inline Float4 noiseDeviations(const NoiseModel& noise, double k, Float4 range_sq) {
+  const __m128d constant = _mm_set1_pd(noise.sigma_constant), quadratic = _mm_set1_pd(noise.sigma_quadratic),
+                scale = _mm_set1_pd(k);
+  const auto half = [&](__m128d r2) { return _mm_mul_pd(scale, _mm_add_pd(constant, _mm_mul_pd(quadratic, r2))); };
+  const __m128 low = _mm_cvtpd_ps(half(_mm_cvtps_pd(range_sq.v)));
+  const __m128 high = _mm_cvtpd_ps(half(_mm_cvtps_pd(_mm_movehl_ps(range_sq.v, range_sq.v))));
+  return {_mm_movelh_ps(low, high)};
+}
+
+#endif  // FLOODPLANE_SIMD
+
+#if FLOODPLANE_AVX
+/// noiseDeviations for four lanes, in double.
+FLOODPLANE_TARGET_AVX inline __m128 noiseDeviationsInDouble(const NoiseModel& noise, double k, __m128 range_sq) {
+  const __m256d sigma = _mm256_add_pd(_mm256_set1_pd(noise.sigma_constant),
+                                      _mm256_mul_pd(_mm256_set1_pd(noise.sigma_quadratic), _mm256_cvtps_pd(range_sq)));
+  return _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_set1_pd(k), sigma));
+}
+
+/// noiseDeviations in eight lanes: the noise in double, four lanes at a time.
+FLOODPLANE_TARGET_AVX inline Float8 noiseDeviations(const NoiseModel& noise, double k, Float8 range_sq) {
+  const __m128 low = noiseDeviationsInDouble(noise, k, _mm256_castps256_ps128(range_sq.v));
+  const __m128 high = noiseDeviationsInDouble(noise, k, _mm256_extractf128_ps(range_sq.v, 1));
+  return {_mm256_insertf128_ps(_mm256_castps128_ps256(low), high, 1)};
+}
+
+#endif  // FLOODPLANE_AVX
 
 }  // namespace floodplane

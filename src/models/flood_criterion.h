@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "models/depth_noise.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 #include "util/simd.h"
 #include "util/vec3.h"
 

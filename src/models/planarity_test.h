@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "floodplane/plane_fit.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 #include "util/vec3.h"
 
 namespace floodplane {

@@ -76,6 +76,20 @@ struct PlaneSums {
     sxx += axx; sxy += axy; sxz += axz;
     syy += ayy; syz += ayz; szz += azz;
   }
+  /// Adds n points whose mean is (x, y, z) and whose scatter about it, sum (P - mean)(P - mean)^T,
+  /// is `scatter` (xx yy zz - xy yz zx -, as BlockGrid keeps it), or nothing: all n at the mean.
+  void addGroup(double n, double x, double y, double z, const float* scatter = nullptr) {
+    count += n;
+    sx += n * x; sy += n * y; sz += n * z;
+    if (scatter) {
+      const float* c = scatter;
+      sxx += c[0] + n * x * x; syy += c[1] + n * y * y; szz += c[2] + n * z * z;
+      sxy += c[4] + n * x * y; syz += c[5] + n * y * z; sxz += c[6] + n * z * x;
+    } else {
+      sxx += n * x * x; syy += n * y * y; szz += n * z * z;
+      sxy += n * x * y; syz += n * y * z; sxz += n * z * x;
+    }
+  }
   void remove(const Vec3& p) {
     const double x = p.x, y = p.y, z = p.z;
     count -= 1.0;

@@ -279,38 +279,15 @@ PlaneSums BlockGrid::sums(std::size_t i) const {
 }
 
 void BlockGrid::addTo(std::size_t i, PlaneSums& sums) const {
-  const double n = counts_[i];
-  if (n == 0.0) return;
+  if (counts_[i] == 0) return;
   const float* mean = &mean_points_[4 * i];
-  const float* c = &moments_[8 * i];
-  const double x = mean[0], y = mean[1], z = mean[2];
-  sums.count += n;
-  sums.sx += n * x;
-  sums.sy += n * y;
-  sums.sz += n * z;
-  sums.sxx += c[0] + n * x * x;
-  sums.syy += c[1] + n * y * y;
-  sums.szz += c[2] + n * z * z;
-  sums.sxy += c[4] + n * x * y;
-  sums.syz += c[5] + n * y * z;
-  sums.sxz += c[6] + n * z * x;
+  sums.addGroup(counts_[i], mean[0], mean[1], mean[2], &moments_[8 * i]);
 }
 
 void BlockGrid::addMeanTo(std::size_t i, PlaneSums& sums) const {
-  const double n = counts_[i];
-  if (n == 0.0) return;
+  if (counts_[i] == 0) return;
   const float* mean = &mean_points_[4 * i];
-  const double x = mean[0], y = mean[1], z = mean[2];
-  sums.count += n;
-  sums.sx += n * x;
-  sums.sy += n * y;
-  sums.sz += n * z;
-  sums.sxx += n * x * x;
-  sums.syy += n * y * y;
-  sums.szz += n * z * z;
-  sums.sxy += n * x * y;
-  sums.syz += n * y * z;
-  sums.sxz += n * z * x;
+  sums.addGroup(counts_[i], mean[0], mean[1], mean[2]);
 }
 
 double BlockGrid::meanSquaredDistance(std::size_t i, const Vec3& normal, float offset) const {

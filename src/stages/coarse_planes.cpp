@@ -23,20 +23,20 @@ constexpr std::size_t kLargestPocket = 16;
 }  // namespace
 
 bool CoarsePlanes::insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
-                              const Tolerances& pixel_tolerances) {
+                              const Tolerances& measured_tolerances) {
   // The band across the plane: one pixel's noise band along its ray (Eq. 2) times the cosine
   // of the incidence, or sigma_plane's fixed part. Noise alone gives a third of that.
   const Vec3 mean = Vec3::load(blocks.means().point(i));
   const double range_sq = mean.squaredNorm();
   const double range = std::sqrt(range_sq);
   const double incidence = std::abs(normal.dot(mean)) / range;
-  const double band = std::max(pixel_tolerances.planeFloor(range),
-                               noiseDeviations(pixel_tolerances.noise(), kPointDeviations, range_sq) * incidence);
+  const double band = std::max(measured_tolerances.planeFloor(range),
+                               noiseDeviations(measured_tolerances.noise(), kPointDeviations, range_sq) * incidence);
   return blocks.meanSquaredDistance(i, normal, offset) <= band * band;
 }
 
 void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, const FloodPass& coarse,
-                        const MergedSegments& merged, const Params& params, const Tolerances& pixel_tolerances) {
+                        const MergedSegments& merged, const Params& params, const Tolerances& measured_tolerances) {
   planes_.clear();
   const PointGrid& means = blocks.means();
   const Tolerances& block_tolerances = block_grid.tolerances;
@@ -141,7 +141,7 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, co
           }
         }
       }
-      if (!inside || !insideBand(blocks, i, own.normal, own.offset, pixel_tolerances)) continue;
+      if (!inside || !insideBand(blocks, i, own.normal, own.offset, measured_tolerances)) continue;
       Plane& plane = planes_[static_cast<std::size_t>(k - 1)];
       plane.inner.push_back(i);
       inner_plane_[i] = k;

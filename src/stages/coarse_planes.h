@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "floodplane/params.h"
-#include "models/facet_pairs.h"
 #include "models/planarity_test.h"
 #include "models/plane_sums.h"
+#include "models/tolerances.h"
 #include "stages/block_grid.h"
+#include "stages/facet_pairs.h"
 #include "stages/flood_pass.h"
 #include "stages/hole_filling.h"
 #include "stages/plane_candidates.h"
-#include "stages/tolerances.h"
 
 namespace floodplane {
 
@@ -39,9 +39,9 @@ class CoarsePlanes {
  public:
   /// Finds the coarse planes among the clusters `merged` of the coarse pass `coarse` over
   /// `block_grid`, the means of `blocks` (its tolerances: the means' noise).
-  /// `pixel_tolerances` describe the measured pixels' noise.
+  /// `measured_tolerances` describe the noise of the measured pixels.
   void find(const BlockGrid& blocks, const FloodGrid& block_grid, const FloodPass& coarse, const MergedSegments& merged,
-            const Params& params, const Tolerances& pixel_tolerances);
+            const Params& params, const Tolerances& measured_tolerances);
   /// Gives the pixels of every inner block to the fine pass `fine` over `pixels` (the frame at
   /// full resolution): a segment per coarse plane, whose sums are those of its inner blocks'
   /// means (as if each of its measured pixels were there: their scatter is then about that of
@@ -71,7 +71,7 @@ class CoarsePlanes {
                    float pixel_pitch, FloodPass& fine, SegmentationStats& stats);
   // Whether block i's pixels lie within the noise band of the plane (normal, offset) on average.
   static bool insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
-                         const Tolerances& pixel_tolerances);
+                         const Tolerances& measured_tolerances);
 
   std::vector<Plane> planes_;
   std::vector<std::int32_t> inner_plane_;    // per block: the plane it is inside of + 1, 0 none

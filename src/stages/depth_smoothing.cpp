@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "util/simd.h"
 #include "util/vec3.h"
@@ -49,68 +51,52 @@ inline void smoothPoint(const float* before, const float* centre, const float* a
 #if FLOODPLANE_SIMD
 // smoothPoint's sum of one coordinate, lane by lane: from +0, before (where used), centre,
 // after (where used). A neighbour left out is not added at all (adding a zero would turn a -0
-// sum into +0).
-inline Float4 gatedSum(Mask4 use_before, Mask4 use_after, Float4 before, Float4 centre, Float4 after) {
-  const Float4 zero = Float4::broadcast(0.f);
-  const Float4 with_before = Float4::select(use_before, zero + before, zero) + centre;
-  return Float4::select(use_after, with_before + after, with_before);
+// sum into +0). Float: Float4, or Float8 in a function compiled for AVX.
+template <class Float, class Mask>
+FLOODPLANE_SIMD_INLINE Float gatedSum(Mask use_before, Mask use_after, Float before, Float centre, Float after) {
+  const Float zero = Float::broadcast(0.f);
+  const Float with_before = Float::select(use_before, zero + before, zero) + centre;
+  return Float::select(use_after, with_before + after, with_before);
 }
 
-// smoothPoint for the four points from `centre` on, each with the point at the same place
+// smoothPoint for the points of one register from `centre` on (Lanes: PointLanes, four, or
+// PointLanes8, eight, in a function compiled for AVX), each with the point at the same place
 // from `before` and from `after` (all three `stride` floats a point), into `out` (four floats
 // a point). Every lane operation is smoothPoint's in its order, so each lane holds
 // smoothPoint's result bit for bit.
+template <class Lanes>
+FLOODPLANE_SIMD_INLINE void smoothLanes(const float* before_points, const float* centre, const float* after_points,
+                                        std::size_t stride, float* out, const NoiseModel& noise) {
+  using Float = std::decay_t<decltype(std::declval<Lanes>().x)>;
+  const Lanes c = Lanes::load(centre, stride), before = Lanes::load(before_points, stride),
+              after = Lanes::load(after_points, stride);
+  const Float gate = noiseDeviations(noise, kDifferenceDeviations, c.squaredNorm());
+  const auto use_before = (before.z - c.z).abs() <= gate;
+  const auto use_after = (after.z - c.z).abs() <= gate;
+  const Float zero = Float::broadcast(0.f), one = Float::broadcast(1.f);
+  const Float count = (one + Float::select(use_before, one, zero)) + Float::select(use_after, one, zero);
+  const Float inverse = one / count;
+  // smoothPoint's early return: a centre without a finite depth stays a hole.
+  const auto finite = c.z.abs() < Float::broadcast(std::numeric_limits<float>::infinity());
+  const Float nan = Float::broadcast(std::numeric_limits<float>::quiet_NaN());
+  Lanes result;
+  result.x = Float::select(finite, gatedSum(use_before, use_after, before.x, c.x, after.x) * inverse, nan);
+  result.y = Float::select(finite, gatedSum(use_before, use_after, before.y, c.y, after.y) * inverse, nan);
+  result.z = Float::select(finite, gatedSum(use_before, use_after, before.z, c.z, after.z) * inverse, nan);
+  result.storePoints(out);
+}
+
 void smoothFour(const float* before_points, const float* centre, const float* after_points, std::size_t stride,
                 float* out, const NoiseModel& noise) {
-  const auto points = [stride](const float* first) {
-    return PointLanes::transpose(first, first + stride, first + 2 * stride, first + 3 * stride);
-  };
-  const PointLanes c = points(centre), before = points(before_points), after = points(after_points);
-  const Float4 gate = noiseDeviations(noise, kDifferenceDeviations, c.squaredNorm());
-  const Mask4 use_before = (before.z - c.z).abs() <= gate;
-  const Mask4 use_after = (after.z - c.z).abs() <= gate;
-  const Float4 zero = Float4::broadcast(0.f), one = Float4::broadcast(1.f);
-  const Float4 count = (one + Float4::select(use_before, one, zero)) + Float4::select(use_after, one, zero);
-  const Float4 inverse = one / count;
-  // smoothPoint's early return: a centre without a finite depth stays a hole.
-  const Mask4 finite = c.z.abs() < Float4::broadcast(std::numeric_limits<float>::infinity());
-  const Float4 nan = Float4::broadcast(std::numeric_limits<float>::quiet_NaN());
-  PointLanes result;
-  result.x = Float4::select(finite, gatedSum(use_before, use_after, before.x, c.x, after.x) * inverse, nan);
-  result.y = Float4::select(finite, gatedSum(use_before, use_after, before.y, c.y, after.y) * inverse, nan);
-  result.z = Float4::select(finite, gatedSum(use_before, use_after, before.z, c.z, after.z) * inverse, nan);
-  result.storePoints(out);
+  smoothLanes<PointLanes>(before_points, centre, after_points, stride, out, noise);
 }
 #endif
 
 #if FLOODPLANE_AVX
-// gatedSum in eight lanes.
-FLOODPLANE_TARGET_AVX inline Float8 gatedSum(Mask8 use_before, Mask8 use_after, Float8 before, Float8 centre,
-                                             Float8 after) {
-  const Float8 zero = Float8::broadcast(0.f);
-  const Float8 with_before = Float8::select(use_before, zero + before, zero) + centre;
-  return Float8::select(use_after, with_before + after, with_before);
-}
-
-// smoothFour for eight points, with the same operations in each lane (AVX; only where
-// cpuHasAvx()).
+// smoothFour for eight points (only where cpuHasAvx()).
 FLOODPLANE_TARGET_AVX void smoothEight(const float* before_points, const float* centre, const float* after_points,
                                        std::size_t stride, float* out, const NoiseModel& noise) {
-  const PointLanes8 c = PointLanes8::load(centre, stride), before = PointLanes8::load(before_points, stride),
-                    after = PointLanes8::load(after_points, stride);
-  const Float8 gate = noiseDeviations(noise, kDifferenceDeviations, c.squaredNorm());
-  const Mask8 use_before = (before.z - c.z).abs() <= gate;
-  const Mask8 use_after = (after.z - c.z).abs() <= gate;
-  const Float8 zero = Float8::broadcast(0.f), one = Float8::broadcast(1.f);
-  const Float8 count = (one + Float8::select(use_before, one, zero)) + Float8::select(use_after, one, zero);
-  const Float8 inverse = one / count;
-  const Mask8 finite = c.z.abs() < Float8::broadcast(std::numeric_limits<float>::infinity());
-  const Float8 nan = Float8::broadcast(std::numeric_limits<float>::quiet_NaN());
-  PointLanes8 result;
-  result.x = Float8::select(finite, gatedSum(use_before, use_after, before.x, c.x, after.x) * inverse, nan);
-  result.y = Float8::select(finite, gatedSum(use_before, use_after, before.y, c.y, after.y) * inverse, nan);
-  result.z = Float8::select(finite, gatedSum(use_before, use_after, before.z, c.z, after.z) * inverse, nan);
-  result.storePoints(out);
+  smoothLanes<PointLanes8>(before_points, centre, after_points, stride, out, noise);
 }
 #endif
 

@@ -56,7 +56,7 @@ std::int32_t FloodPass::addSegment(const Segment& segment) {
 void FloodPass::extend(std::int32_t label, const std::vector<std::size_t>& starts, const FloodCriterion& criterion,
                        SegmentationStats& stats) {
   stats.pixels_taken_over +=
-      flood_.extend(grid_->points, starts, label, criterion, params_, buffer_, segments_, edges_);
+      flood_.extend(grid_->points, starts, label, criterion, params_, {buffer_, segments_, edges_});
 }
 
 void FloodPass::seedAndFlood(bool timed, SegmentationStats& stats, PhaseTimes& phases) {
@@ -72,7 +72,7 @@ void FloodPass::seedAndFlood(bool timed, SegmentationStats& stats, PhaseTimes& p
     const std::int32_t label = static_cast<std::int32_t>(segments_.size());
     segments_.emplace_back();
     const Clock::time_point flood_start = timed ? Clock::now() : Clock::time_point();
-    stats.pixels_taken_over += flood_.grow(grid, accepted, label, params_, tolerances, buffer_, segments_, edges_);
+    stats.pixels_taken_over += flood_.grow(grid, accepted, label, params_, tolerances, {buffer_, segments_, edges_});
     if (timed) flooding += millisecondsSince(flood_start);
   };
   Seed seed;

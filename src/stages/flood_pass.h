@@ -9,13 +9,13 @@
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
+#include "models/tolerances.h"
 #include "stages/leftover_seeds.h"
 #include "stages/plane_flood.h"
 #include "stages/plane_merger.h"
 #include "stages/relabelling.h"
 #include "stages/seed_selector.h"
 #include "stages/segment_borders.h"
-#include "stages/tolerances.h"
 #include "util/distance_buffer.h"
 
 namespace floodplane {

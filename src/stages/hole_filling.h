@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 
 namespace floodplane {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
+#include "models/tolerances.h"
 #include "stages/seed_selector.h"
-#include "stages/tolerances.h"
 #include "util/distance_buffer.h"
 
 namespace floodplane {

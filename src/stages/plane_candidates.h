@@ -11,7 +11,7 @@
 #include "floodplane/plane_fit.h"
 #include "models/flood_criterion.h"
 #include "models/plane_sums.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 
 namespace floodplane {
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "models/lane_sums.h"
 #include "util/simd.h"
 
 namespace floodplane {
@@ -18,27 +19,39 @@ constexpr float kTakeoverMargin = 0.25f;
 // Pixels a flood tests at once along a row (one SSE register of floats).
 constexpr int kBlock = 4;
 
+// When a flood refits its plane: first at `first` pixels, then at each doubling, and only
+// where the refit's normal is more certain than the current one's (`uncertainty` [rad]).
+struct RefitSchedule {
+  std::size_t first;
+  double uncertainty;
+};
+
+// A flood's scratch that outlives it: the pixels rejected under the current plane, and per
+// segment the last flood that noted it as a neighbour.
+struct FloodScratch {
+  std::vector<std::pair<std::size_t, std::size_t>>& frontier;
+  std::vector<std::int32_t>& neighbour_mark;
+};
+
 // The membership test of one flood, as spanFloodFill's visitor.
 class FloodVisitor {
  public:
-  FloodVisitor(const PointGrid& grid, std::int32_t label, const FloodCriterion& criterion, DistanceBuffer& buffer,
-               std::vector<Segment>& segments, std::vector<std::pair<std::size_t, std::size_t>>& frontier,
-               std::vector<std::int32_t>& neighbour_mark, std::vector<SegmentEdge>& edges, std::size_t first_refit,
-               double seed_uncertainty, double angular_threshold)
+  FloodVisitor(const PointGrid& grid, std::int32_t label, const FloodCriterion& criterion, FloodTarget target,
+               FloodScratch scratch, RefitSchedule refits, double angular_threshold)
       : grid_(grid),
         blocks_(fourPixelsAtATime(grid)),
         label_(label),
-        buffer_(buffer),
-        labels_(buffer.labels().data()),
-        distances_(buffer.distances().data()),
-        segments_(segments),
-        frontier_(frontier),
-        neighbour_mark_(neighbour_mark),
-        edges_(edges),
-        self_(segments[label]),
+        buffer_(target.buffer),
+        labels_(target.buffer.labels().data()),
+        distances_(target.buffer.distances().data()),
+        segments_(target.segments),
+        frontier_(scratch.frontier),
+        neighbour_mark_(scratch.neighbour_mark),
+        edges_(target.edges),
+        self_(target.segments[label]),
         criterion_(criterion),
-        next_refit_(static_cast<double>(first_refit)),
-        uncertainty_(seed_uncertainty),
+        next_refit_(static_cast<double>(refits.first)),
+        uncertainty_(refits.uncertainty),
         same_plane_cosine_(std::cos(static_cast<float>(angular_threshold))) {}
 
   // Eq. 1 with Eq. 4: `to` joins from its neighbour `from` when its point is a 3-D neighbour
@@ -250,8 +263,9 @@ class FloodVisitor {
 }  // namespace
 
 std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                             const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
-                             std::vector<SegmentEdge>& edges) {
+                             const Tolerances& tolerances, FloodTarget target) {
+  DistanceBuffer& buffer = target.buffer;
+  std::vector<Segment>& segments = target.segments;
   if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
 
   Segment& segment = segments[label];
@@ -274,8 +288,9 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
 
   frontier_.clear();
   const std::size_t first_refit = std::max<std::size_t>(16, static_cast<std::size_t>(seed.rho) * seed.rho);
-  FloodVisitor visitor(grid, label, segment.criterion, buffer, segments, frontier_, neighbour_mark_, edges, first_refit,
-                       std::max(static_cast<double>(seed.normal_uncertainty), 1e-4), params.angular_threshold);
+  FloodVisitor visitor(grid, label, segment.criterion, target, {frontier_, neighbour_mark_},
+                       {first_refit, std::max(static_cast<double>(seed.normal_uncertainty), 1e-4)},
+                       params.angular_threshold);
   spanFloodFill(width, grid.height, seed_x, seed_y, visitor, shadows_);
 
   // Give the pixels rejected under an earlier plane estimate a second chance.
@@ -296,15 +311,14 @@ std::size_t PlaneFlood::grow(const PointGrid& grid, const Seed& seed, std::int32
 }
 
 std::size_t PlaneFlood::extend(const PointGrid& grid, const std::vector<std::size_t>& starts, std::int32_t label,
-                               const FloodCriterion& criterion, const Params& params, DistanceBuffer& buffer,
-                               std::vector<Segment>& segments, std::vector<SegmentEdge>& edges) {
-  if (neighbour_mark_.size() < segments.size()) neighbour_mark_.resize(segments.size(), 0);
+                               const FloodCriterion& criterion, const Params& params, FloodTarget target) {
+  if (neighbour_mark_.size() < target.segments.size()) neighbour_mark_.resize(target.segments.size(), 0);
   frontier_.clear();
   // No refit: the first would come at twice the pixels the segment has.
-  FloodVisitor visitor(grid, label, criterion, buffer, segments, frontier_, neighbour_mark_, edges,
-                       std::numeric_limits<std::size_t>::max(), 0.0, params.angular_threshold);
+  FloodVisitor visitor(grid, label, criterion, target, {frontier_, neighbour_mark_},
+                       {std::numeric_limits<std::size_t>::max(), 0.0}, params.angular_threshold);
   const std::size_t width = static_cast<std::size_t>(grid.width);
-  const std::int32_t* labels = buffer.labels().data();
+  const std::int32_t* labels = target.buffer.labels().data();
   for (const std::size_t start : starts) {
     // A start whose neighbours are all the segment's already (the fill from an earlier start
     // took them) has nothing to look at.

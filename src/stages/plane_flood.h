@@ -11,8 +11,8 @@
 #include "floodplane/point_grid.h"
 #include "models/flood_criterion.h"
 #include "models/plane_sums.h"
+#include "models/tolerances.h"
 #include "stages/seed_selector.h"
-#include "stages/tolerances.h"
 #include "util/distance_buffer.h"
 #include "util/span_flood_fill.h"
 
@@ -27,6 +27,14 @@ struct Segment {
 
 /// A pair of segments that touch: pixel neighbours whose points are 3-D neighbours.
 using SegmentEdge = std::pair<std::int32_t, std::int32_t>;
+
+/// What the floods of one pass write to: the owner and distance of every pixel (Eq. 4), the
+/// segments with their sums, and the pairs of segments that touch.
+struct FloodTarget {
+  DistanceBuffer& buffer;
+  std::vector<Segment>& segments;
+  std::vector<SegmentEdge>& edges;
+};
 
 /// Grows one segment from a seed (Sec. III-A, III-B): the span flood fill with the distance
 /// function of Eqs. 1-3 and the distance buffer of Eq. 4, collecting the neighbour graph on
@@ -47,12 +55,11 @@ class PlaneFlood {
   /// Forgets the neighbour marks of the previous frame.
   void beginFrame() { neighbour_mark_.clear(); }
 
-  /// Floods segment `label` (already present in `segments`) from `seed`.
-  /// Appends the segment's neighbour pairs to `edges`; returns the pixels it took from other
-  /// segments under Eq. 4.
+  /// Floods segment `label` (already present in the target's segments) from `seed`.
+  /// Appends the segment's neighbour pairs to the target's edges; returns the pixels it took
+  /// from other segments under Eq. 4.
   std::size_t grow(const PointGrid& grid, const Seed& seed, std::int32_t label, const Params& params,
-                   const Tolerances& tolerances, DistanceBuffer& buffer, std::vector<Segment>& segments,
-                   std::vector<SegmentEdge>& edges);
+                   const Tolerances& tolerances, FloodTarget target);
 
   /// Continues segment `label`, whose pixels `starts` are claimed already (a coarse plane's
   /// inner blocks along their edge), into the pixels around them, with the tests of grow()
@@ -60,8 +67,7 @@ class PlaneFlood {
   /// refit: it is that of many pixels. Returns the pixels it took from other segments under
   /// Eq. 4.
   std::size_t extend(const PointGrid& grid, const std::vector<std::size_t>& starts, std::int32_t label,
-                     const FloodCriterion& criterion, const Params& params, DistanceBuffer& buffer,
-                     std::vector<Segment>& segments, std::vector<SegmentEdge>& edges);
+                     const FloodCriterion& criterion, const Params& params, FloodTarget target);
 
  private:
   std::vector<Shadow> shadows_;

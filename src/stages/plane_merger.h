@@ -9,8 +9,8 @@
 
 #include "floodplane/params.h"
 #include "models/plane_sums.h"
+#include "models/tolerances.h"
 #include "stages/segment_borders.h"
-#include "stages/tolerances.h"
 
 namespace floodplane {
 

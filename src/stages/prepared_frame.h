@@ -3,10 +3,10 @@
 #pragma once
 
 #include "floodplane/point_grid.h"
+#include "models/tolerances.h"
 #include "stages/block_grid.h"
 #include "stages/flood_pass.h"
 #include "stages/hole_filling.h"
-#include "stages/tolerances.h"
 
 namespace floodplane {
 
@@ -23,7 +23,7 @@ struct PreparedFrame {
   /// The depth noise of `grid`'s points and every length derived from it.
   Tolerances tolerances;
   /// The depth noise of the measured pixels (before smoothing) and its lengths.
-  Tolerances pixel_tolerances;
+  Tolerances measured_tolerances;
   /// Which points of `grid` were filled in (never labelled).
   const HoleFilling* holes = nullptr;
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 
+#include "models/lane_sums.h"
 #include "stages/refinement.h"
 #include "util/row_search.h"
 #include "util/simd.h"
@@ -38,8 +39,8 @@ void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& m
   if (!frame.holes->filled()) {
     // Counts are known: number the planes by size before writing any label.
     candidates_.sortBySize(min_inliers, nullptr);
-    for (std::size_t s = 1; s < merged.segment_count; ++s)
-      candidate_of_segment_[s] = candidates_.remap(candidate_of_segment_[s]);
+    for (std::size_t segment = 1; segment < merged.segment_count; ++segment)
+      candidate_of_segment_[segment] = candidates_.remap(candidate_of_segment_[segment]);
     labelSegmentedGrid(frame, merged, labels);
   } else {
     labelSegmentedGrid(frame, merged, labels);
@@ -85,9 +86,9 @@ void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSeg
   // Refinement only adds pixels: drop small ones now. (A filled-in hole counts here, and
   // leaves the count when the labels are written.)
   const double smallest = frame.tolerances.minInliers();
-  for (std::size_t s = 1; s < merged.segment_count; ++s) {
-    if (merged.root[s] != static_cast<std::int32_t>(s)) continue;
-    const PlaneSums& sums = merged.sums[s];
+  for (std::size_t segment = 1; segment < merged.segment_count; ++segment) {
+    if (merged.root[segment] != static_cast<std::int32_t>(segment)) continue;
+    const PlaneSums& sums = merged.sums[segment];
     if (sums.count < smallest) continue;
     const PlaneFit fit = sums.fit();
     if (!acceptablePlane(fit, params)) continue;
@@ -95,10 +96,10 @@ void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSeg
     candidate.criterion = planeCriterion(fit, frame.tolerances, frame.pitch);
     candidate.sums = sums;
     list.push_back(candidate);
-    candidate_of_segment_[s] = static_cast<std::uint32_t>(list.size());
+    candidate_of_segment_[segment] = static_cast<std::uint32_t>(list.size());
   }
-  for (std::size_t s = 1; s < merged.segment_count; ++s)
-    candidate_of_segment_[s] = candidate_of_segment_[static_cast<std::size_t>(merged.root[s])];
+  for (std::size_t segment = 1; segment < merged.segment_count; ++segment)
+    candidate_of_segment_[segment] = candidate_of_segment_[static_cast<std::size_t>(merged.root[segment])];
 }
 
 void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedSegments& merged,

@@ -11,15 +11,15 @@
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
-#include "models/facet_pairs.h"
 #include "models/flood_criterion.h"
 #include "models/planarity_test.h"
 #include "models/plane_sums.h"
+#include "models/tolerances.h"
+#include "stages/facet_pairs.h"
 #include "stages/flood_pass.h"
 #include "stages/occlusion_merging.h"
 #include "stages/plane_candidates.h"
 #include "stages/prepared_frame.h"
-#include "stages/tolerances.h"
 
 namespace floodplane {
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "models/lane_sums.h"
 #include "util/simd.h"
 
 namespace floodplane {

@@ -7,7 +7,7 @@
 
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 #include "util/vec3.h"
 
 namespace floodplane {

@@ -80,9 +80,9 @@ struct Segmenter::Workspace {
     frame.measured = full;
     frame.pitch = SeedSelector::estimateAngularPitch(full, pitch_scratch);
     noise = reuse_noise ? previous.noise : noiseModel(full, params);
-    frame.pixel_tolerances = Tolerances(params, noise, frame.pitch, full.size());
+    frame.measured_tolerances = Tolerances(params, noise, frame.pitch, full.size());
     NoiseModel segment_noise = noise;
-    const PointGrid& filled = holes.fill(full, frame.pixel_tolerances);
+    const PointGrid& filled = holes.fill(full, frame.measured_tolerances);
     // The smoothed frame, and its own noise (the smoothing's gain depends on how correlated
     // the sensor's noise is: a third of it on the Kinect model, a quarter less on a real
     // Kinect). A noise model the user gives describes the raw data: no smoothing then; nor
@@ -170,7 +170,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     PhaseTimer timer(timed, result_.phases.merging);
     ws.coarse.relabel();
     const MergedSegments clusters = ws.coarse.merge(MergeCriterion(params_, frame.coarse.tolerances));
-    ws.coarse_planes.find(*frame.blocks, frame.coarse, ws.coarse, clusters, params_, frame.pixel_tolerances);
+    ws.coarse_planes.find(*frame.blocks, frame.coarse, ws.coarse, clusters, params_, frame.measured_tolerances);
   }
   ws.fine.begin(ws.fine_grid, params_);
   if (frame.blocks)

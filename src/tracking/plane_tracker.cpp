@@ -215,8 +215,8 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
   // 2. The tracks into the current camera frame.
   // Without a motion the best measurement is in a camera frame that has since moved by an
   // unknown amount, and the newest takes its place: a stale view of one surface would match
-  // whatever the camera now sees where that surface was (without motions, measured on the
-  // report seeds: 42 id switches with it, 37 without).
+  // whatever the camera now sees where that surface was (measured: bench/HISTORY.md,
+  // "Tracking without a camera motion").
   if (motion && frame > 0)
     for (PlaneTrack& track : tracks_) moveIntoCurrentFrame(track, *motion);
   else

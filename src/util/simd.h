@@ -6,14 +6,14 @@
 // option FLOODPLANE_SIMD=OFF defines FLOODPLANE_NO_SIMD (a private definition of every target
 // that compiles the core's sources); then, as on CPUs without SSE2, every such loop runs pixel
 // by pixel. Every lane operation here is the scalar one of Vec3 / flood_criterion.h in the
-// same order, so a lane holds, bit for bit, what the scalar code computes for its pixel.
+// same order, so a lane holds, bit for bit, what the scalar code computes for its pixel. The
+// lanes of the models (the noise model's tolerances, plane sums) are theirs: depth_noise.h,
+// lane_sums.h.
 
 #include <cstddef>
 #include <cstdint>
 
 #include "floodplane/point_grid.h"
-#include "models/depth_noise.h"
-#include "models/plane_sums.h"
 #include "util/vec3.h"
 
 #if defined(__SSE2__) && !defined(FLOODPLANE_NO_SIMD)
@@ -35,6 +35,14 @@
 #define FLOODPLANE_TARGET_AVX __attribute__((target("avx")))
 #else
 #define FLOODPLANE_AVX 0
+#endif
+
+// A small SIMD helper written once for four and eight lanes: inlined into its caller, so that
+// the eight-lane copy is compiled for AVX as the FLOODPLANE_TARGET_AVX function that calls it.
+#if defined(__GNUC__) || defined(__clang__)
+#define FLOODPLANE_SIMD_INLINE inline __attribute__((always_inline))
+#else
+#define FLOODPLANE_SIMD_INLINE inline
 #endif
 
 namespace floodplane {
@@ -135,17 +143,6 @@ struct Float4 {
   }
 };
 
-/// static_cast<float>(noiseDeviations(noise, k, double(range_sq))) lane by lane: the noise in
-/// double, as the scalar code takes it.
-inline Float4 noiseDeviations(const NoiseModel& noise, double k, Float4 range_sq) {
-  const __m128d constant = _mm_set1_pd(noise.sigma_constant), quadratic = _mm_set1_pd(noise.sigma_quadratic),
-                scale = _mm_set1_pd(k);
-  const auto half = [&](__m128d r2) { return _mm_mul_pd(scale, _mm_add_pd(constant, _mm_mul_pd(quadratic, r2))); };
-  const __m128 low = _mm_cvtpd_ps(half(_mm_cvtps_pd(range_sq.v)));
-  const __m128 high = _mm_cvtpd_ps(half(_mm_cvtps_pd(_mm_movehl_ps(range_sq.v, range_sq.v))));
-  return {_mm_movelh_ps(low, high)};
-}
-
 /// Whether the four 32-bit labels from `labels` on all equal `value`.
 inline bool allLabelsEqual(const std::int32_t* labels, std::int32_t value) {
   const __m128i block = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
@@ -198,6 +195,11 @@ struct PointLanes {
     return transpose(grid.point(first), grid.point(first + 1), grid.point(first + 2), grid.point(first + 3));
   }
   /// From four points of which four floats each are readable (x, y, z, anything).
+  /// Points first, first + stride, first + 2 stride, first + 3 stride (floats), of which four
+  /// floats each are readable (x, y, z, anything): PointLanes8::load's four-lane twin.
+  static PointLanes load(const float* first, std::size_t stride) {
+    return transpose(first, first + stride, first + 2 * stride, first + 3 * stride);
+  }
   static PointLanes transpose(const float* a, const float* b, const float* c, const float* d) {
     __m128 pa = _mm_loadu_ps(a), pb = _mm_loadu_ps(b), pc = _mm_loadu_ps(c), pd = _mm_loadu_ps(d);
     _MM_TRANSPOSE4_PS(pa, pb, pc, pd);
@@ -225,54 +227,6 @@ struct PointLanes {
   Float4 dot(const Vec3& normal) const {
     return (Float4::broadcast(normal.x) * x + Float4::broadcast(normal.y) * y) + Float4::broadcast(normal.z) * z;
   }
-};
-
-/// Plane sums of points taken four at a time (PointLanes), in two double lanes per sum;
-/// addTo() adds them to a PlaneSums. The one place where lanes are summed.
-class LaneSums {
- public:
-  void add(const PointLanes& p) {
-    add(_mm_cvtps_pd(p.x.v), _mm_cvtps_pd(p.y.v), _mm_cvtps_pd(p.z.v));
-    add(_mm_cvtps_pd(_mm_movehl_ps(p.x.v, p.x.v)), _mm_cvtps_pd(_mm_movehl_ps(p.y.v, p.y.v)),
-        _mm_cvtps_pd(_mm_movehl_ps(p.z.v, p.z.v)));
-    count_ += 4.0;
-  }
-  /// Adds the points of the lanes where `members` is set.
-  void add(const PointLanes& p, Mask4 members) {
-    const Float4 zero = Float4::broadcast(0.f);
-    add(PointLanes{Float4::select(members, p.x, zero), Float4::select(members, p.y, zero),
-                   Float4::select(members, p.z, zero)});
-    count_ -= 4.0 - static_cast<double>(__builtin_popcount(static_cast<unsigned>(_mm_movemask_ps(members.bits))));
-  }
-  void addTo(PlaneSums& sums) const {
-    const auto total = [](__m128d a) { return _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a))); };
-    sums.count += count_;
-    sums.sx += total(sx_);
-    sums.sy += total(sy_);
-    sums.sz += total(sz_);
-    sums.sxx += total(sxx_);
-    sums.sxy += total(sxy_);
-    sums.sxz += total(sxz_);
-    sums.syy += total(syy_);
-    sums.syz += total(syz_);
-    sums.szz += total(szz_);
-  }
-
- private:
-  void add(__m128d x, __m128d y, __m128d z) {
-    sx_ = _mm_add_pd(sx_, x);
-    sy_ = _mm_add_pd(sy_, y);
-    sz_ = _mm_add_pd(sz_, z);
-    sxx_ = _mm_add_pd(sxx_, _mm_mul_pd(x, x));
-    sxy_ = _mm_add_pd(sxy_, _mm_mul_pd(x, y));
-    sxz_ = _mm_add_pd(sxz_, _mm_mul_pd(x, z));
-    syy_ = _mm_add_pd(syy_, _mm_mul_pd(y, y));
-    syz_ = _mm_add_pd(syz_, _mm_mul_pd(y, z));
-    szz_ = _mm_add_pd(szz_, _mm_mul_pd(z, z));
-  }
-  __m128d sx_ = _mm_setzero_pd(), sy_ = sx_, sz_ = sx_, sxx_ = sx_, sxy_ = sx_, sxz_ = sx_, syy_ = sx_, syz_ = sx_,
-          szz_ = sx_;
-  double count_ = 0.0;
 };
 
 #endif  // FLOODPLANE_SIMD
@@ -304,20 +258,6 @@ struct Float8 {
     return {_mm256_or_ps(_mm256_and_ps(mask.bits, a.v), _mm256_andnot_ps(mask.bits, b.v))};
   }
 };
-
-/// noiseDeviations for four lanes, in double.
-FLOODPLANE_TARGET_AVX inline __m128 noiseDeviationsInDouble(const NoiseModel& noise, double k, __m128 range_sq) {
-  const __m256d sigma = _mm256_add_pd(_mm256_set1_pd(noise.sigma_constant),
-                                      _mm256_mul_pd(_mm256_set1_pd(noise.sigma_quadratic), _mm256_cvtps_pd(range_sq)));
-  return _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_set1_pd(k), sigma));
-}
-
-/// noiseDeviations in eight lanes: the noise in double, four lanes at a time.
-FLOODPLANE_TARGET_AVX inline Float8 noiseDeviations(const NoiseModel& noise, double k, Float8 range_sq) {
-  const __m128 low = noiseDeviationsInDouble(noise, k, _mm256_castps256_ps128(range_sq.v));
-  const __m128 high = noiseDeviationsInDouble(noise, k, _mm256_extractf128_ps(range_sq.v, 1));
-  return {_mm256_insertf128_ps(_mm256_castps128_ps256(low), high, 1)};
-}
 
 /// Eight points as x, y, z across lanes: lanes 0-3 hold points 0-3, lanes 4-7 points 4-7.
 struct PointLanes8 {
@@ -361,22 +301,5 @@ struct PointLanes8 {
 };
 
 #endif  // FLOODPLANE_AVX
-
-/// Adds points first .. first + n - 1 of a grid to the sums: four at a time into vector
-/// accumulators where fourPixelsAtATime(grid), as PlaneSums::addRun otherwise and for the
-/// rest. The same sums but for the order of the additions.
-inline void addRunToSums(PlaneSums& sums, const PointGrid& grid, std::size_t first, std::size_t n) {
-#if FLOODPLANE_SIMD
-  if (fourPixelsAtATime(grid) && n >= 4) {
-    LaneSums lanes;
-    std::size_t done = 0;
-    for (; done + 4 <= n; done += 4) lanes.add(PointLanes::load(grid, first + done));
-    lanes.addTo(sums);
-    first += done;
-    n -= done;
-  }
-#endif
-  sums.addRun(grid.point(first), grid.stride, n);
-}
 
 }  // namespace floodplane

@@ -49,7 +49,7 @@ struct CoarseToFine {
     params.min_inliers = 50;
     const NoiseModel exact;
     const std::size_t pixels = frame.grid().size();
-    const Tolerances pixel_tolerances(params, exact, kPitch, pixels);
+    const Tolerances measured_tolerances(params, exact, kPitch, pixels);
     blocks.read(frame.grid(), s);
     blocks.separateSurfaces(frame.grid(), exact, kPitch);
     coarse_grid.pitch = kPitch * static_cast<float>(s);
@@ -62,13 +62,13 @@ struct CoarseToFine {
     coarse.seedAndFlood(false, stats, phases);
     coarse.relabel();
     const MergedSegments clusters = coarse.merge(MergeCriterion(params, coarse_grid.tolerances));
-    planes.find(blocks, coarse_grid, coarse, clusters, params, pixel_tolerances);
-    fine_grid.points = pixel_holes.fill(frame.grid(), pixel_tolerances);
-    fine_grid.tolerances = pixel_tolerances;
+    planes.find(blocks, coarse_grid, coarse, clusters, params, measured_tolerances);
+    fine_grid.points = pixel_holes.fill(frame.grid(), measured_tolerances);
+    fine_grid.tolerances = measured_tolerances;
     fine_grid.pitch = kPitch;
     fine_grid.noise_free = true;
     fine.begin(fine_grid, params);
-    claimed = planes.claim(blocks, fine_grid.points, pixel_holes, pixel_tolerances, kPitch, fine, stats);
+    claimed = planes.claim(blocks, fine_grid.points, pixel_holes, measured_tolerances, kPitch, fine, stats);
   }
 
   std::int32_t label(int u, int v) const { return fine.labels()[frame.index(u, v)]; }

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "models/facet_pairs.h"
+#include "stages/facet_pairs.h"
 #include "stages/plane_candidates.h"
 #include "support/pinhole_grid.h"
 

@@ -4,12 +4,14 @@
 // fits a plane seeds a flood with that plane; a curved or a small region does not.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+
 #include <cmath>
 #include <functional>
 #include <vector>
 
+#include "models/tolerances.h"
 #include "stages/leftover_seeds.h"
-#include "stages/tolerances.h"
 #include "support/pinhole_grid.h"
 #include "util/distance_buffer.h"
 

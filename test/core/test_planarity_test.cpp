@@ -15,7 +15,7 @@
 
 #include "models/planarity_test.h"
 #include "models/plane_sums.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 
 namespace floodplane {
 namespace {

@@ -56,7 +56,7 @@ struct Flood {
     const std::int32_t label = static_cast<std::int32_t>(segments.size());
     segments.emplace_back();
     const Tolerances tolerances(params, noise, 1.0 / kFocal, static_cast<std::size_t>(g.width * g.height));
-    return flood.grow(g.grid(), seed, label, params, tolerances, buffer, segments, edges);
+    return flood.grow(g.grid(), seed, label, params, tolerances, {buffer, segments, edges});
   }
   std::size_t count(std::int32_t label) const {
     std::size_t n = 0;

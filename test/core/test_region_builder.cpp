@@ -74,7 +74,7 @@ struct Merged {
     frame.grid = segmented;
     frame.pitch = kPinholePitch;
     frame.tolerances = Tolerances(params, {}, frame.pitch, full.data.size() / full.stride);
-    frame.pixel_tolerances = frame.tolerances;
+    frame.measured_tolerances = frame.tolerances;
     frame.holes = &holes;
     builder.assemble(frame, merged, params, refine, out);
     builder.write(frame, out);

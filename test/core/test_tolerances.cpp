@@ -8,7 +8,7 @@
 #include <cstddef>
 
 #include "floodplane/params.h"
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 
 namespace floodplane {
 namespace {

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "stages/tolerances.h"
+#include "models/tolerances.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "models/facet_pairs.h"
+#include "stages/facet_pairs.h"
 
 #include <algorithm>
 #include <cmath>

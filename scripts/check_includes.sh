@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The floodplane authors
+# SPDX-License-Identifier: BSD-3-Clause
+# Every include of the library points down its layers:
+#   the API's plain types (floodplane/point_grid.h, plane_fit.h, params.h, noise_model.h)
+#   <- util/ (SIMD, small containers, label-image scans)
+#   <- models/ (noise model, tolerances, flood criterion, plane sums, planarity test)
+#   <- stages/ (the pipeline) and the segmenter (floodplane/segmenter.h)
+#   <- tracking/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
+# params/ sits beside util/ (it needs the API's params.h alone). A public header includes
+# nothing of src/. Lists every include that runs back up and fails.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+
+types='floodplane/(point_grid|plane_fit|params|noise_model)\.h'
+# Allowed targets of #include "..." per folder, as one extended regex each.
+declare -A allowed=(
+  [util]="^(util/|${types})"
+  [params]="^(params/|${types})"
+  [models]="^(util/|models/|${types})"
+  [stages]="^(util/|models/|stages/|${types}|floodplane/segmenter\.h)"
+  [tracking]="^(util/|models/|tracking/|floodplane/)"
+  [io]="^(util/|models/|params/|io/|floodplane/)"
+  [pcl_interface]="^(floodplane/)"
+)
+problems=()
+for folder in "${!allowed[@]}"; do
+  [ -d "src/$folder" ] || continue
+  while IFS= read -r line; do
+    file=${line%%:*}
+    rest=${line#*:}
+    number=${rest%%:*}
+    target=$(sed -n 's/^[[:space:]]*#include "\([^"]*\)".*/\1/p' <<< "${rest#*:}")
+    [ -n "$target" ] || continue
+    # A file's own header, next to it, and generated headers (no folder) are its own.
+    [[ "$target" == */* ]] || continue
+    grep -Eq "${allowed[$folder]}" <<< "$target" || problems+=("src/$folder/$file:$number includes \"$target\"")
+  done < <(cd "src/$folder" && grep -n '#include "' -- *.h *.cpp 2> /dev/null || true)
+done
+while IFS= read -r line; do
+  problems+=("include/$line (a public header includes an internal one)")
+done < <(cd include && grep -rnE '#include "(util|models|stages|params|tracking|io|pcl_interface)/' . | sed 's|^\./||' || true)
+if [ ${#problems[@]} -gt 0 ]; then
+  echo "check_includes: these includes run back up the library's layers (see the top of $0):" >&2
+  printf '  %s\n' "${problems[@]}" >&2
+  exit 1
+fi
+echo "check_includes: every include of src/ and include/ points down"
