@@ -16,6 +16,7 @@ Example:
 
 import argparse
 import json
+import re
 import statistics
 import subprocess
 import sys
@@ -31,7 +32,14 @@ def run_one(binary, name, min_time):
         out = subprocess.run(command, capture_output=True, text=True, check=True).stdout
     except (OSError, subprocess.CalledProcessError) as error:
         sys.exit(f"resolution_sweep.py: {' '.join(command)} failed: {error}")
-    runs = [b for b in json.loads(out)["benchmarks"] if b.get("run_type", "iteration") == "iteration"]
+    # bench_segmentation prints its configuration before the JSON: the run starts at the first
+    # line that opens an object.
+    start = re.search(r"^\{", out, re.MULTILINE)
+    try:
+        run = json.loads(out[start.start():] if start else out)
+    except ValueError as error:
+        sys.exit(f"resolution_sweep.py: {' '.join(command)} printed no JSON: {error}")
+    runs = [b for b in run.get("benchmarks", []) if b.get("run_type", "iteration") == "iteration"]
     if not runs:
         sys.exit(f"resolution_sweep.py: {binary} has no benchmark {name}")
     return runs[0]

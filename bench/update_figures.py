@@ -15,6 +15,9 @@ Inputs:
                    fraction per factor and sensor model).
   --quirks JSON    the same on the report split rendered with the sensor quirks; fills
                    "accuracy-quirks".
+  --resolution JSON  bench/resolution_sweep.py --json (boxes_on_floor at 320x240 to 2560x1920,
+                   s = 1 and the default s = 4, each benchmark in a process of its own); fills
+                   "resolution" (time, time per pixel, memory added against the cloud's size).
   --chart PNG      draws the speed-against-accuracy chart (bench/speed_accuracy_chart.py,
                    matplotlib) into PNG: a panel per pcd_compare run, those of --report and
                    --quirks and each --chart-run TITLE=JSON (pcd_compare --json on another data
@@ -42,6 +45,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import compare_tables  # noqa: E402  (the report reader is shared)
+import resolution_sweep  # noqa: E402  (its table is shared)
 import speed_accuracy_chart  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -156,6 +160,20 @@ def accuracy_table(path, what):
     return out
 
 
+# The resolution sweep ----------------------------------------------------------------------------
+
+def resolution_part(path):
+    """The sweep's table (resolution_sweep.table) from its --json rows, with the run's stamp."""
+    try:
+        rows = {(row["s"], row["size"]): row for row in json.loads(pathlib.Path(path).read_text(encoding="utf-8"))}
+        table = resolution_sweep.table(rows)
+    except (OSError, ValueError, TypeError, KeyError) as error:
+        raise Unusable(f"{path}: not the JSON of bench/resolution_sweep.py --json ({error!r})") from error
+    date = datetime.date.fromtimestamp(pathlib.Path(path).stat().st_mtime).isoformat()
+    return (f"Run {stamp(date)}; medians over the rounds, each benchmark in a process of its own; added: the "
+            "peak memory the call adds to the process (VmHWM after it, over that before it):\n\n" + table + "\n")
+
+
 # The chart ------------------------------------------------------------------------------------
 
 def run_description(title, path):
@@ -201,6 +219,7 @@ def main():
     parser.add_argument("--speed", help="Google Benchmark JSON of interleaved/real")
     parser.add_argument("--report", help="pcd_compare JSON of the report split")
     parser.add_argument("--quirks", help="pcd_compare JSON of the report split with the sensor quirks")
+    parser.add_argument("--resolution", help="bench/resolution_sweep.py --json of the resolution sweep")
     parser.add_argument("--chart", help="draw the speed-against-accuracy chart into this PNG "
                                         "(bench/figures/speed_accuracy.png)")
     parser.add_argument("--chart-run", action="append", type=speed_accuracy_chart.titled_run, metavar="TITLE=JSON",
@@ -211,8 +230,8 @@ def main():
     args = parser.parse_args()
     if args.chart_run and not args.chart:
         parser.error("--chart-run gives a panel of the chart: give --chart PNG too")
-    if not (args.speed or args.report or args.quirks or args.chart):
-        parser.error("give at least one of --speed, --report, --quirks, --chart")
+    if not (args.speed or args.report or args.quirks or args.resolution or args.chart):
+        parser.error("give at least one of --speed, --report, --quirks, --resolution, --chart")
     if args.chart and not chart_runs(args):
         parser.error("--chart needs a pcd_compare run: --chart-run TITLE=JSON, --report or --quirks")
     try:
@@ -226,6 +245,8 @@ def main():
         if args.quirks:
             bench_parts["accuracy-quirks"] = accuracy_table(
                 args.quirks, "Report split with the quirks (--quantize-bits 9 --warp 3 --speckle --bend 0.02)")
+        if args.resolution:
+            bench_parts["resolution"] = resolution_part(args.resolution)
         panels = []
         if args.chart:
             runs = chart_runs(args)
