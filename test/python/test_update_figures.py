@@ -26,6 +26,8 @@ middle
 <!-- figures:accuracy end -->
 <!-- figures:accuracy-quirks begin -->
 <!-- figures:accuracy-quirks end -->
+<!-- figures:resolution begin -->
+<!-- figures:resolution end -->
 after
 """
 README_PAGE = "A frame <!-- figures:speed begin -->old<!-- figures:speed end -->; more.\n"
@@ -92,8 +94,9 @@ def test_writes_the_medians_of_the_frames_and_keeps_the_text_around(pages):
     assert rows["**median**"] == ["36.0", "20.0", "10.0", "5.0", "**3.0**", "**6.0**", "**0.50**", "**0.20**"]
     assert "2026-12-05 07:00" in page
     readme = (pages / "README.md").read_text()
-    assert readme.startswith("A frame <!-- figures:speed begin -->takes a median 20.0 ms (1.5x faster than OMPS")
-    assert "10.0 ms at sub-sampling 2 and 5.0 ms at sub-sampling 4 (6.0x OMPS" in readme
+    assert readme.startswith("A frame <!-- figures:speed begin -->takes a median 5.0 ms at the default, "
+                             "sub-sampling 4 (6.0x faster than OMPS")
+    assert "10.0 ms at sub-sampling 2 and 20.0 ms at sub-sampling 1 (1.5x OMPS" in readme
     assert readme.endswith("<!-- figures:speed end -->; more.\n")
 
 
@@ -146,3 +149,37 @@ def test_the_real_pages_carry_every_marker_the_script_fills():
         assert bench.count(f"<!-- figures:{name} end -->") == 1, name
     readme = (SOURCE / "README.md").read_text()
     assert readme.count("<!-- figures:speed begin -->") == 1 and readme.count("<!-- figures:speed end -->") == 1
+
+
+def resolution_rows():
+    """The rows of bench/resolution_sweep.py --json: time per pixel falling with size at s = 1,
+    rising at s = 4."""
+    rows = []
+    for s, per_pixel in ((1, [50.0, 40.0, 36.0, 32.0]), (4, [20.0, 10.0, 11.0, 13.0])):
+        for (size, pixels), ns in zip((("320x240", 76800), ("640x480", 307200), ("1280x960", 1228800),
+                                        ("2560x1920", 4915200)), per_pixel):
+            cloud = pixels * 16 / 2**20
+            rows.append({"s": s, "size": size, "ms": ns * pixels * 1e-6, "ns_per_px": ns, "added_MiB": 2.5 * cloud,
+                         "cloud_MiB": cloud, "added_per_cloud": 2.5})
+    return rows
+
+
+def test_writes_the_resolution_sweep_with_time_per_pixel_against_640x480(pages):
+    (pages / "resolution.json").write_text(json.dumps(resolution_rows()))
+    done = run(pages, "--resolution", pages / "resolution.json")
+    assert done.returncode == 0, done.stderr
+    page = (pages / "bench.md").read_text()
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")] for line in page.splitlines()
+            if line.startswith("| 2560x1920")]
+    assert rows == [["2560x1920", "1", "157.3", "32.0", "0.80", "188", "75", "2.50"],
+                    ["2560x1920", "4", "63.9", "13.0", "1.30", "188", "75", "2.50"]]
+    assert page.endswith("<!-- figures:resolution end -->\nafter\n")
+
+
+def test_a_resolution_run_without_every_size_is_refused_and_nothing_is_written(pages):
+    (pages / "resolution.json").write_text(json.dumps(resolution_rows()[:-1]))
+    before = (pages / "bench.md").read_text()
+    done = run(pages, "--resolution", pages / "resolution.json")
+    assert done.returncode != 0
+    assert "resolution.json" in done.stderr and "resolution_sweep.py" in done.stderr
+    assert (pages / "bench.md").read_text() == before
