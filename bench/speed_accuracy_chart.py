@@ -30,6 +30,7 @@ import compare_tables  # noqa: E402  (the report reader and its means)
 # every run. floodplane's sub-sampling factors share its colour.
 STYLES = {
     "floodplane": ("#1f77b4", "o"),
+    "floodplane/1": ("#1f77b4", "h"),
     "floodplane/2": ("#1f77b4", "s"),
     "floodplane/4": ("#1f77b4", "D"),
     "floodplane/8": ("#1f77b4", "v"),
