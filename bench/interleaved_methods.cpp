@@ -19,7 +19,7 @@
 
 #include "bench_frames.h"
 #include "common/omps_run.h"
-#include "floodplane/flood_fill_plane_segmentation.h"
+#include "floodplane_run.h"
 #include "methods.h"
 
 namespace floodplane::bench {
@@ -31,24 +31,6 @@ double median(std::vector<double> values) {
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
 }
-
-// floodplane's calls, with their outputs kept between calls as a camera loop keeps them.
-struct FloodplaneRun {
-  explicit FloodplaneRun(int subsampling) {
-    segmentation.setSubsampling(subsampling);
-    labels.reset(new pcl::PointCloud<pcl::Label>);
-  }
-  void operator()(const Frame& frame) {
-    segmentation.setInputCloud(frame.cloud);
-    segmentation.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
-    benchmark::DoNotOptimize(regions.data());
-  }
-  FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;
-  FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-  pcl::PointCloud<pcl::Label>::Ptr labels;
-};
 
 struct OmpsRun {
   OmpsRun() { apps::configureOmps(normal_estimation, omps); }

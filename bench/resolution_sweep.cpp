@@ -13,14 +13,12 @@
 #include <string>
 
 #include "bench_frames.h"
-#include "floodplane/flood_fill_plane_segmentation.h"
+#include "floodplane_run.h"
 #include "methods.h"
 
 namespace floodplane::bench {
 
 namespace {
-
-using Segmentation = FloodFillPlaneSegmentation<pcl::PointXYZ>;
 
 // A field of /proc/self/status in MiB (VmRSS, VmHWM); 0 where there is none.
 double statusMiB(const std::string& field) {
@@ -40,22 +38,13 @@ void runSize(benchmark::State& state, const Frame& frame, int subsampling) {
   malloc_trim(0);  // the renderer's freed memory goes back: it would hide what the call allocates
   const double before = statusMiB("VmRSS");
   resetPeak();
-  Segmentation seg;
-  seg.setSubsampling(subsampling);
-  seg.setInputCloud(frame.cloud);
-  Segmentation::Regions regions;
-  std::vector<pcl::ModelCoefficients> coefficients;
-  std::vector<pcl::PointIndices> inliers, label_indices, boundaries;
-  pcl::PointCloud<pcl::Label>::Ptr labels(new pcl::PointCloud<pcl::Label>);
-  seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);  // allocates
-  for (auto _ : state) {
-    seg.segmentAndRefine(regions, coefficients, inliers, labels, label_indices, boundaries);
-    benchmark::DoNotOptimize(regions.data());
-  }
+  FloodplaneRun run(subsampling);
+  run(frame);  // allocates
+  for (auto _ : state) run(frame);
   const double pixels = static_cast<double>(frame.cloud->size());
   const double cloud = pixels * sizeof(pcl::PointXYZ) / (1024.0 * 1024.0);
   const double added = statusMiB("VmHWM") - before;
-  state.counters["planes"] = static_cast<double>(regions.size());
+  state.counters["planes"] = static_cast<double>(run.regions.size());
   state.counters["ns_per_px"] =
       benchmark::Counter(pixels * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["cloud_MiB"] = cloud;
