@@ -3,28 +3,51 @@
 #include "io/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
+#include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <mutex>
 #include <stdexcept>
+#include <unordered_set>
+#include <utility>
 
 namespace floodplane::io {
 namespace {
 
-std::string systemError() { return std::strerror(errno); }
+std::string systemError(int error) { return std::strerror(error); }
 
-// Creates an empty, uniquely named file next to `path` and returns its name. The name starts
-// with a dot and ends in ".tmp.<pid>.<n>" so a leftover (after a crash) is easy to recognise,
-// and O_EXCL makes sure two writers never share one temporary.
-std::string createTemporaryNextTo(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
+std::runtime_error writeError(const std::string& path, const std::string& reason) {
+  return std::runtime_error("cannot write '" + path + "': " + reason);
+}
+
+// The temporaries that exist right now, so that abandonAtomicWrites can remove them. Creating
+// a temporary, removing one and renaming one all happen under the lock, which
+// abandonAtomicWrites takes and never gives back: after it, no temporary appears or moves.
+struct LiveTemporaries {
+  std::mutex mutex;
+  std::unordered_set<std::string> paths;
+};
+
+LiveTemporaries& liveTemporaries() {
+  // Never destroyed: a signal may arrive while static objects are being destroyed at exit.
+  static LiveTemporaries* const live = new LiveTemporaries;
+  return *live;
+}
+
+// Creates an empty, uniquely named file next to `path`, registered as live, and returns its
+// name and an open descriptor. The name starts with a dot and ends in ".tmp.<pid>.<n>" so a
+// leftover (after a crash) is easy to recognise, and O_EXCL makes sure two writers never share
+// one temporary.
+std::pair<std::string, int> createTemporaryNextTo(const std::string& path) {
+  static unsigned counter = 0;  // guarded by the lock
   const std::filesystem::path target(path);
   const std::filesystem::path directory = target.parent_path();
+  LiveTemporaries& live = liveTemporaries();
+  const std::lock_guard<std::mutex> lock(live.mutex);
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string name =
         "." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
@@ -32,43 +55,157 @@ std::string createTemporaryNextTo(const std::string& path) {
     // 0666 and the process umask give the final file the permissions an ordinary write would.
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
-      ::close(fd);
-      return temporary;
+      live.paths.insert(temporary);
+      return {temporary, fd};
     }
-    if (errno != EEXIST) {
-      throw std::runtime_error("cannot write '" + path + "': " + systemError());
-    }
+    if (errno != EEXIST) throw writeError(path, systemError(errno));
   }
-  throw std::runtime_error("cannot write '" + path + "': no free temporary file name");
+  throw writeError(path, "no free temporary file name");
+}
+
+void removeTemporaries(const std::vector<std::string>& temporaries) noexcept {
+  LiveTemporaries& live = liveTemporaries();
+  const std::lock_guard<std::mutex> lock(live.mutex);
+  for (const std::string& temporary : temporaries) {
+    ::unlink(temporary.c_str());
+    live.paths.erase(temporary);
+  }
+}
+
+// Writes all of `bytes` to `fd` and closes it; throws naming `path` and the system's reason
+// (ENOSPC: "No space left on device"), with `fd` closed.
+void writeAndClose(int fd, std::string_view bytes, const std::string& path) {
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t count = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (count < 0) {
+      if (errno == EINTR) continue;
+      const int error = errno;
+      ::close(fd);
+      throw writeError(path, systemError(error));
+    }
+    written += static_cast<std::size_t>(count);
+  }
+  // Some file systems (NFS) report a failed write only here. EINTR: the descriptor is closed
+  // all the same on Linux, and the data was written.
+  if (::close(fd) != 0 && errno != EINTR) throw writeError(path, systemError(errno));
 }
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::function<void(const std::string& temporary_path)>& write) {
-  if (path.empty()) {
-    throw std::invalid_argument("writeFileAtomically: empty path");
+AtomicFileGroup::AtomicFileGroup(AtomicFileGroup&& other) noexcept : pending_(std::move(other.pending_)) {
+  other.pending_.clear();
+}
+
+AtomicFileGroup& AtomicFileGroup::operator=(AtomicFileGroup&& other) noexcept {
+  if (this != &other) {
+    discard();
+    pending_ = std::move(other.pending_);
+    other.pending_.clear();
   }
-  const std::string temporary = createTemporaryNextTo(path);
-  try {
-    write(temporary);
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-      throw std::runtime_error("cannot write '" + path + "': rename failed: " + systemError());
-    }
-  } catch (...) {
-    std::remove(temporary.c_str());
-    throw;
+  return *this;
+}
+
+AtomicFileGroup::~AtomicFileGroup() { discard(); }
+
+void AtomicFileGroup::discard() noexcept {
+  std::vector<std::string> temporaries;
+  for (const Pending& pending : pending_) temporaries.push_back(pending.temporary);
+  if (!temporaries.empty()) removeTemporaries(temporaries);
+  pending_.clear();
+}
+
+std::vector<std::string> AtomicFileGroup::paths() const {
+  std::vector<std::string> paths;
+  for (const Pending& pending : pending_) paths.push_back(pending.path);
+  return paths;
+}
+
+void AtomicFileGroup::checkNewPath(const std::string& path) const {
+  if (path.empty()) throw std::invalid_argument("AtomicFileGroup: empty path");
+  if (std::any_of(pending_.begin(), pending_.end(), [&](const Pending& pending) { return pending.path == path; })) {
+    throw std::invalid_argument("AtomicFileGroup: '" + path + "' added twice");
   }
 }
 
-void writeBytesAtomically(const std::string& path, std::string_view bytes) {
-  writeFileAtomically(path, [&](const std::string& temporary) {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      throw std::runtime_error("cannot write '" + path + "': write failed");
+void AtomicFileGroup::add(const std::string& path, std::string_view bytes) {
+  checkNewPath(path);
+  pending_.reserve(pending_.size() + 1);  // so that the push_back below cannot throw
+  // Written through the descriptor that created it: no one opens the temporary again by path,
+  // so once abandonAtomicWrites removed it, it stays removed.
+  const auto [temporary, fd] = createTemporaryNextTo(path);
+  try {
+    writeAndClose(fd, bytes, path);
+  } catch (...) {
+    removeTemporaries({temporary});
+    throw;
+  }
+  pending_.push_back({path, temporary});
+}
+
+void AtomicFileGroup::addWrittenBy(const std::string& path,
+                                   const std::function<void(const std::string& temporary_path)>& write) {
+  checkNewPath(path);
+  pending_.reserve(pending_.size() + 1);
+  const auto [temporary, fd] = createTemporaryNextTo(path);
+  ::close(fd);
+  try {
+    write(temporary);
+  } catch (...) {
+    removeTemporaries({temporary});
+    throw;
+  }
+  pending_.push_back({path, temporary});
+}
+
+void AtomicFileGroup::commit() {
+  std::vector<Pending> pending = std::move(pending_);
+  pending_.clear();
+  LiveTemporaries& live = liveTemporaries();
+  const std::lock_guard<std::mutex> lock(live.mutex);
+  const auto remove_all = [&](std::size_t renamed) {
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+      ::unlink((k < renamed ? pending[k].path : pending[k].temporary).c_str());
+      live.paths.erase(pending[k].temporary);
     }
-  });
+  };
+  // rename() cannot put a file over a directory: found before anything is renamed, so that
+  // the usual failure leaves the previous files as they were.
+  for (const Pending& file : pending) {
+    struct stat status {};
+    if (::lstat(file.path.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) {
+      remove_all(0);
+      throw writeError(file.path, systemError(EISDIR));
+    }
+  }
+  for (std::size_t k = 0; k < pending.size(); ++k) {
+    if (::rename(pending[k].temporary.c_str(), pending[k].path.c_str()) != 0) {
+      const int error = errno;
+      remove_all(k);
+      throw writeError(pending[k].path, "rename failed: " + systemError(error));
+    }
+  }
+  for (const Pending& file : pending) live.paths.erase(file.temporary);
+}
+
+void writeBytesAtomically(const std::string& path, std::string_view bytes) {
+  AtomicFileGroup file;
+  file.add(path, bytes);
+  file.commit();
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(const std::string& temporary_path)>& write) {
+  if (path.empty()) throw std::invalid_argument("writeFileAtomically: empty path");
+  AtomicFileGroup file;
+  file.addWrittenBy(path, write);
+  file.commit();
+}
+
+std::size_t abandonAtomicWrites() {
+  LiveTemporaries& live = liveTemporaries();
+  live.mutex.lock();  // never unlocked: the process is ending
+  for (const std::string& temporary : live.paths) ::unlink(temporary.c_str());
+  return live.paths.size();
 }
 
 }  // namespace floodplane::io

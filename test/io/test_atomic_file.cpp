@@ -3,8 +3,13 @@
 #include "io/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -91,6 +96,107 @@ TEST_F(AtomicFile, NamesThePathWhenTheDirectoryDoesNotExist) {
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find(target), std::string::npos) << error.what();
   }
+}
+
+// ---- a group of files: all or none -------------------------------------------------------
+
+TEST_F(AtomicFile, AGroupPutsNothingInPlaceBeforeItsCommitAndEverythingAfter) {
+  floodplane::io::AtomicFileGroup group;
+  group.add((directory_ / "a.pcd").string(), "cloud");
+  group.add((directory_ / "a.png").string(), "image");
+  EXPECT_EQ(group.paths(),
+            (std::vector<std::string>{(directory_ / "a.pcd").string(), (directory_ / "a.png").string()}));
+  EXPECT_FALSE(fs::exists(directory_ / "a.pcd"));
+  EXPECT_EQ(entries().size(), 2U) << "the two temporaries";
+  group.commit();
+  EXPECT_EQ(contents(directory_ / "a.pcd"), "cloud");
+  EXPECT_EQ(contents(directory_ / "a.png"), "image");
+  EXPECT_EQ(entries().size(), 2U);
+  EXPECT_TRUE(group.paths().empty());
+}
+
+TEST_F(AtomicFile, AGroupDroppedBeforeItsCommitLeavesThePreviousFilesAndNoTemporary) {
+  floodplane::io::writeBytesAtomically((directory_ / "a.pcd").string(), "previous");
+  {
+    floodplane::io::AtomicFileGroup group;
+    group.add((directory_ / "a.pcd").string(), "new cloud");
+    group.add((directory_ / "a.png").string(), "new image");
+    // An error before the commit: the group goes out of scope.
+  }
+  EXPECT_EQ(entries(), std::vector<std::string>{"a.pcd"});
+  EXPECT_EQ(contents(directory_ / "a.pcd"), "previous");
+}
+
+// A directory in the way of the second file: found before anything is renamed, so the first
+// file's previous version is kept and neither new file appears.
+TEST_F(AtomicFile, AGroupWithADirectoryInTheWayCommitsNothing) {
+  floodplane::io::writeBytesAtomically((directory_ / "a.pcd").string(), "previous");
+  fs::create_directory(directory_ / "a.png");
+  floodplane::io::AtomicFileGroup group;
+  group.add((directory_ / "a.pcd").string(), "new cloud");
+  group.add((directory_ / "a.png").string(), "new image");
+  try {
+    group.commit();
+    FAIL() << "expected an exception";
+  } catch (const std::runtime_error& error) {
+    EXPECT_EQ(std::string(error.what()), "cannot write '" + (directory_ / "a.png").string() + "': Is a directory");
+  }
+  EXPECT_EQ(contents(directory_ / "a.pcd"), "previous");
+  EXPECT_TRUE(fs::is_directory(directory_ / "a.png"));
+  EXPECT_EQ(entries().size(), 2U) << "no temporary left";
+}
+
+TEST_F(AtomicFile, AGroupRefusesAPathTwice) {
+  floodplane::io::AtomicFileGroup group;
+  group.add((directory_ / "a.pcd").string(), "one");
+  EXPECT_THROW(group.add((directory_ / "a.pcd").string(), "two"), std::invalid_argument);
+  EXPECT_THROW(group.add("", "x"), std::invalid_argument);
+}
+
+// abandonAtomicWrites never gives its lock back, so it runs in a child process: the
+// temporaries of the writes under way there are removed, and it counts them.
+TEST_F(AtomicFile, AbandoningRemovesTheTemporariesOfTheWritesUnderWay) {
+  floodplane::io::writeBytesAtomically((directory_ / "done.txt").string(), "done");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    floodplane::io::AtomicFileGroup group;
+    group.add((directory_ / "a.pcd").string(), "cloud");
+    group.add((directory_ / "a.png").string(), "image");
+    const bool temporaries_exist = std::distance(fs::directory_iterator(directory_), fs::directory_iterator()) == 3;
+    const std::size_t removed = floodplane::io::abandonAtomicWrites();
+    ::_exit(temporaries_exist ? static_cast<int>(removed) : 100);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_EQ(entries(), std::vector<std::string>{"done.txt"});
+}
+
+// A write that fails part-way says the system's reason. A file size limit (with SIGXFSZ
+// ignored, writes past it fail with EFBIG) stands in for a full disk; set in a child process,
+// so that it does not limit the test.
+TEST_F(AtomicFile, NamesTheSystemsReasonWhenAWriteFailsAndLeavesNoTemporary) {
+  const std::string target = (directory_ / "big.bin").string();
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(10);
+    try {
+      floodplane::io::writeBytesAtomically(target, std::string(100000, 'x'));
+    } catch (const std::runtime_error& error) {
+      ::_exit(std::string(error.what()) == "cannot write '" + target + "': " + std::strerror(EFBIG) ? 0 : 11);
+    }
+    ::_exit(12);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "10: no limit, 11: another message, 12: no error";
+  EXPECT_TRUE(entries().empty());
 }
 
 }  // namespace
