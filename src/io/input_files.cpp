@@ -37,29 +37,50 @@ InputFile withoutInputs(const std::string& directory, const std::vector<std::str
   return {directory, none};
 }
 
-// The directory's input files, sorted; an error message instead when there are none.
+// Why an entry named like an input file cannot be read as one (`status` follows symbolic links).
+std::string notAFile(const fs::file_status& status) {
+  switch (status.type()) {
+    case fs::file_type::directory:
+      return "is a directory, not a file";
+    case fs::file_type::not_found:
+      return "is a symbolic link to nothing";
+    case fs::file_type::fifo:
+      return "is a named pipe, not a file";
+    case fs::file_type::socket:
+      return "is a socket, not a file";
+    default:
+      return "is not a regular file";
+  }
+}
+
+// The directory's input files, sorted; an error message instead when there are none. An entry
+// named like an input file that is not a regular file (a directory "x.pcd", a dangling link, a
+// named pipe, which would block the reader) is kept, in its place, with an error: a batch says
+// what it skipped.
 std::vector<InputFile> listDirectory(const std::string& directory, const std::vector<std::string>& extensions,
                                      const std::vector<SkippedExtension>& skipped) {
-  std::vector<std::string> found;
+  std::vector<InputFile> found;
+  bool any_file = false;
   std::vector<std::size_t> skipped_counts(skipped.size(), 0);
   std::error_code error;
   for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-    // is_directory follows symlinks, so a link to an input file counts as a file.
-    if (fs::is_directory(it->path())) continue;
+    // status follows symbolic links, so a link to an input file counts as a file.
+    std::error_code status_error;
+    const fs::file_status status = fs::status(it->path(), status_error);
+    const bool regular = fs::is_regular_file(status);
     if (hasExtension(it->path(), extensions)) {
-      found.push_back(it->path().string());
+      found.push_back({it->path().string(), regular ? "" : notAFile(status)});
+      any_file = any_file || regular;
       continue;
     }
     for (std::size_t k = 0; k < skipped.size(); ++k) {
-      if (it->path().extension() == skipped[k].extension) ++skipped_counts[k];
+      if (regular && it->path().extension() == skipped[k].extension) ++skipped_counts[k];
     }
   }
   if (error) return {{directory, "cannot list directory: " + error.message()}};
-  if (found.empty()) return {withoutInputs(directory, extensions, skipped, skipped_counts)};
-  std::sort(found.begin(), found.end());
-  std::vector<InputFile> files;
-  for (std::string& path : found) files.push_back({std::move(path), ""});
-  return files;
+  std::sort(found.begin(), found.end(), [](const InputFile& a, const InputFile& b) { return a.path < b.path; });
+  if (!any_file) found.insert(found.begin(), withoutInputs(directory, extensions, skipped, skipped_counts));
+  return found;
 }
 
 }  // namespace

@@ -32,7 +32,9 @@ struct SkippedExtension {
 /// `extensions` (not recursive), sorted by path so that batches run in a reproducible order.
 /// A missing input, a directory that cannot be listed and a directory without such files each
 /// become one entry with an error; a directory whose only candidates have an extension of
-/// `skipped` gets an error that names the files and what they need, and lacks_option.
+/// `skipped` gets an error that names the files and what they need, and lacks_option. An entry
+/// of a directory with one of `extensions` that is not a regular file (a directory "x.pcd", a
+/// symbolic link to nothing, a named pipe) is an entry with an error, in its sorted place.
 std::vector<InputFile> expandInputs(const std::vector<std::string>& arguments,
                                     const std::vector<std::string>& extensions = {".pcd"},
                                     const std::vector<SkippedExtension>& skipped = {});

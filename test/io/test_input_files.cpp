@@ -39,13 +39,44 @@ TEST(ExpandInputs, ListsADirectorysPcdFilesSortedAndSkipsOthers) {
   TempDir dir;
   ASSERT_FALSE(dir.path().empty());
   for (const char* name : {"c.pcd", "a.pcd", "b.pcd", "notes.txt", "d.pcd.bak"}) touch(dir.path() / name);
-  fs::create_directory(dir.path() / "sub.pcd");  // a directory is not a PCD file
+  fs::create_directory(dir.path() / "sub");
   const auto files = expandInputs({dir.path().string()});
   ASSERT_EQ(files.size(), 3u);
   EXPECT_EQ(fs::path(files[0].path).filename(), "a.pcd");
   EXPECT_EQ(fs::path(files[1].path).filename(), "b.pcd");
   EXPECT_EQ(fs::path(files[2].path).filename(), "c.pcd");
   for (const auto& file : files) EXPECT_TRUE(file.error.empty());
+}
+
+// An entry named like an input that is not a file is not skipped without a word: it is an
+// input with an error, in its sorted place. A link to a file is a file.
+TEST(ExpandInputs, ReportsAnEntryNamedLikeAnInputThatIsNotAFile) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  touch(dir.path() / "a.pcd");
+  fs::create_directory(dir.path() / "b.pcd");
+  fs::create_symlink(dir.path() / "a.pcd", dir.path() / "c.pcd");
+  fs::create_symlink(dir.path() / "missing.pcd", dir.path() / "d.pcd");
+  const auto files = expandInputs({dir.path().string()});
+  ASSERT_EQ(files.size(), 4u);
+  EXPECT_TRUE(files[0].error.empty());
+  EXPECT_EQ(fs::path(files[1].path).filename(), "b.pcd");
+  EXPECT_EQ(files[1].error, "is a directory, not a file");
+  EXPECT_TRUE(files[2].error.empty());
+  EXPECT_EQ(fs::path(files[3].path).filename(), "d.pcd");
+  EXPECT_EQ(files[3].error, "is a symbolic link to nothing");
+}
+
+// With no file to read at all, the directory says so too.
+TEST(ExpandInputs, ADirectoryWhoseOnlyCandidateIsADirectorySaysBoth) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path().empty());
+  fs::create_directory(dir.path() / "x.pcd");
+  const auto files = expandInputs({dir.path().string()});
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(files[0].path, dir.path().string());
+  EXPECT_EQ(files[0].error, "directory contains no .pcd files");
+  EXPECT_EQ(files[1].error, "is a directory, not a file");
 }
 
 TEST(ExpandInputs, KeepsTheCommandLineOrderAndReportsBadInputsInPlace) {
