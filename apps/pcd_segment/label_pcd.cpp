@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <type_traits>
 
-#include "io/atomic_file.h"
 #include "io/pcd_file.h"
 
 namespace pcd_segment {
@@ -34,18 +33,13 @@ std::string asciiPcd(const pcl::PointCloud<PointT>& cloud) {
 }
 
 template <typename PointT>
-void writeLabelPcd(const std::string& path, const pcl::PointCloud<PointT>& cloud, bool ascii) {
-  if (ascii) {
-    floodplane::io::writeBytesAtomically(path, asciiPcd(cloud));
-  } else {
-    // PCL's compressed writer reserves the file's size first and reports failure (checked).
-    floodplane::io::savePcd(path, cloud, floodplane::io::PcdEncoding::binary_compressed);
-  }
+std::string labelPcdBytes(const pcl::PointCloud<PointT>& cloud, bool ascii) {
+  return ascii ? asciiPcd(cloud) : floodplane::io::encodePcd(cloud, floodplane::io::PcdEncoding::binary_compressed);
 }
 
 template std::string asciiPcd(const pcl::PointCloud<pcl::PointXYZL>&);
 template std::string asciiPcd(const pcl::PointCloud<pcl::PointXYZRGBL>&);
-template void writeLabelPcd(const std::string&, const pcl::PointCloud<pcl::PointXYZL>&, bool);
-template void writeLabelPcd(const std::string&, const pcl::PointCloud<pcl::PointXYZRGBL>&, bool);
+template std::string labelPcdBytes(const pcl::PointCloud<pcl::PointXYZL>&, bool);
+template std::string labelPcdBytes(const pcl::PointCloud<pcl::PointXYZRGBL>&, bool);
 
 }  // namespace pcd_segment

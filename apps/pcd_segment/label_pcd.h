@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// Writing the labelled cloud, atomically, in either encoding.
+// The labelled cloud's file, in either encoding.
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -10,14 +10,13 @@
 
 namespace pcd_segment {
 
-/// Saves `cloud` (pcl::PointXYZL or pcl::PointXYZRGBL) to `path` through
-/// floodplane::io::writeFileAtomically: binary compressed, or text with `ascii`.
-///
-/// The text form is built in memory and written with writeBytesAtomically, which checks the
-/// stream: PCL's writeASCII does not, so a failed write (disk full, file size limit) left a
-/// truncated file that savePcd then renamed over the previous output.
+/// The bytes of the PCD file of `cloud` (pcl::PointXYZL or pcl::PointXYZRGBL): binary
+/// compressed, or text with `ascii`, for floodplane::io::AtomicFileGroup to write with the
+/// input's other outputs. Built in memory rather than by PCL's writers, which open the file
+/// themselves and do not check every write (PCL's writeASCII left a truncated file on a full
+/// disk) nor say the system's reason.
 template <typename PointT>
-void writeLabelPcd(const std::string& path, const pcl::PointCloud<PointT>& cloud, bool ascii);
+std::string labelPcdBytes(const pcl::PointCloud<PointT>& cloud, bool ascii);
 
 /// The ASCII PCD text of `cloud` (9 significant digits, which round-trip every float).
 template <typename PointT>

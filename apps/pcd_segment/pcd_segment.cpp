@@ -26,6 +26,7 @@
 #include "common/cli.h"
 #include "common/depth_input.h"
 #include "common/display_check.h"
+#include "common/interrupt_cleanup.h"
 #include "common/output_target.h"
 #include "common/param_options.h"
 #include "common/plane_view.h"
@@ -56,7 +57,9 @@ constexpr const char* kDescription =
     "--intrinsics), or a directory of them. Writes per input a labelled cloud (x y z [rgb] "
     "label: 0 no plane, 1..K planes by size, largest first; a depth image's back-projected "
     "points). With --track the inputs are one sequence of frames and the labels are track ids. A frame with no "
-    "finite point (all NaN, a depth image of zeros) is valid: written with no planes, with a note.";
+    "finite point (all NaN, a depth image of zeros) is valid: written with no planes, with a note. An input's outputs "
+    "appear together once all are written, or not at all: an input that fails leaves none, and on Ctrl-C or "
+    "SIGTERM the unfinished ones are removed (exit status 130 or 143).";
 
 // What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
 constexpr const char* kOutputMeaning =
@@ -84,7 +87,8 @@ struct Options {
 
 void addInputOutputOptions(CLI::App& app, Options& options) {
   app.add_option("INPUT", options.inputs,
-                 "PCD files, depth PNG files or directories of them (PNG only with --intrinsics)")
+                 "PCD files, depth PNG files or directories of them (PNG only with --intrinsics); a directory's "
+                 "entry named so that is not a file (a directory x.pcd) is reported as a failed input")
       ->required();
   app.add_option("-o,--output", options.output,
                  "A .pcd file, a .png file or a directory, by one rule in every mode. OUT ending in .pcd: the "
@@ -207,10 +211,9 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   return out;
 }
 
-// `track_ids`: each plane's track id with --track, empty without.
-void writeReport(const std::string& path, const std::string& input, const Cloud& points,
-                 const floodplane::Params& params, const Segmented& segmented,
-                 const std::vector<std::uint32_t>& track_ids) {
+// The JSON report's text. `track_ids`: each plane's track id with --track, empty without.
+std::string reportText(const std::string& input, const Cloud& points, const floodplane::Params& params,
+                       const Segmented& segmented, const std::vector<std::uint32_t>& track_ids) {
   pcd_segment::Report report;
   report.input = input;
   report.width = points.width;
@@ -222,7 +225,7 @@ void writeReport(const std::string& path, const std::string& input, const Cloud&
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);
   for (std::size_t k = 0; k < track_ids.size() && k < report.planes.size(); ++k) report.planes[k].track = track_ids[k];
-  floodplane::io::writeBytesAtomically(path, pcd_segment::reportJson(report).dump(2) + "\n");
+  return pcd_segment::reportJson(report).dump(2) + "\n";
 }
 
 struct FileResult {
@@ -232,12 +235,15 @@ struct FileResult {
   std::size_t height = 0;
   std::optional<floodplane::view::PlaneScene> scene;  ///< for --view
   std::vector<std::string> notes;  ///< said on stderr unless --quiet: an empty frame, an output not written
+  /// The input's outputs, written to temporaries; renamed into place together once the
+  /// snapshot, drawn on the main thread, has joined them: all of an input's outputs or none.
+  floodplane::io::AtomicFileGroup outputs;
 };
 
-// Reads, segments and writes one input, the index-th; throws std::runtime_error saying what
-// went wrong. With --track, `summary` takes the frame once it is segmented (the tracker has then
-// seen it, whatever happens to the outputs), and with --poses the tracker takes the camera's
-// motion from `motions`.
+// Reads, segments and writes one input, the index-th, to temporaries (FileResult::outputs);
+// throws std::runtime_error saying what went wrong, having removed them. With --track,
+// `summary` takes the frame once it is segmented (the tracker has then seen it, whatever
+// happens to the outputs), and with --poses the tracker takes the camera's motion from `motions`.
 FileResult segmentFile(const std::string& input, std::size_t index, const pcd_segment::OutputPaths& paths,
                        Segmentation& segmentation, const Options& options, pcd_segment::TrackSummary* summary,
                        pcd_segment::CameraMotions* motions) {
@@ -257,32 +263,36 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
   // The label cloud in the input's grid and pose (x y z [rgb] label), as the Python module writes it.
   const std::vector<std::uint32_t>& labels =
       segmentation.getTracking() ? track_labels : segmentation.getLastSegmentation().labels;
+  FileResult result{
+      segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}, {}, {}};
+  floodplane::io::AtomicFileGroup& outputs = result.outputs;
   if (paths.pcd.empty()) {
     // -o NAME.png: the label image instead of the cloud.
   } else if (frame.xyzrgb) {
-    pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, labels),
-                               options.ascii);
+    outputs.add(paths.pcd, pcd_segment::labelPcdBytes(
+                               floodplane::io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, labels), options.ascii));
   } else {
-    pcd_segment::writeLabelPcd(paths.pcd, floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
-                               options.ascii);
+    outputs.add(paths.pcd, pcd_segment::labelPcdBytes(floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
+                                                      options.ascii));
   }
   const std::vector<std::uint8_t> has_point = floodplane::io::finitePoints(*points);
   if (options.png || paths.pcd.empty()) {
-    floodplane::io::writePng(paths.png, floodplane::io::labelImage(labels, has_point, points->width, points->height));
+    outputs.add(paths.png, floodplane::io::encodePng(
+                               floodplane::io::labelImage(labels, has_point, points->width, points->height)));
   }
-  FileResult result{segmented.coefficients.size(), segmented.segmentation_ms, points->width, points->height, {}, {}};
   if (std::find(has_point.begin(), has_point.end(), 1) == has_point.end()) {
     result.notes.push_back(floodplane::apps::kEmptyFrameNote);
   }
   if (options.overlay) {
     if (const std::optional<floodplane::io::RgbImage> colours = floodplane::io::frameColours(frame)) {
-      floodplane::io::writePng(paths.overlay, floodplane::io::overlayImage(labels, has_point, *colours));
+      outputs.add(paths.overlay, floodplane::io::encodePng(floodplane::io::overlayImage(labels, has_point, *colours)));
     } else {
       result.notes.push_back("no colour (rgb field) to lay the labels over: " + paths.overlay + " not written");
     }
   }
   if (options.json) {
-    writeReport(paths.json, input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds());
+    outputs.add(paths.json,
+                reportText(input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds()));
   }
   if (options.snapshot || options.view) {
     result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients,
@@ -291,12 +301,12 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
   return result;
 }
 
-// The snapshot of one input, when asked for; drawn on the main thread (VTK renders from one
-// thread).
-void writeSnapshotOf(const pcd_segment::OutputPaths& paths, const FileResult& result, const Options& options) {
+// The snapshot of one input, when asked for, added to its outputs; drawn on the main thread
+// (VTK renders from one thread).
+void addSnapshotOf(const pcd_segment::OutputPaths& paths, FileResult& result, const Options& options) {
   if (!options.snapshot || !result.scene) return;
   const std::string& path = options.snapshot->empty() ? paths.snapshot : *options.snapshot;
-  pcd_segment::writeSnapshot(path, *result.scene, options.snapshot_settings);
+  result.outputs.add(path, pcd_segment::snapshotPng(*result.scene, options.snapshot_settings));
 }
 
 // Whether two paths name one existing file (a symbolic or hard link to it too).
@@ -396,7 +406,8 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
     progress.clear();
     if (outcome.result) {
       try {
-        writeSnapshotOf(item.paths, *outcome.result, options);
+        addSnapshotOf(item.paths, *outcome.result, options);
+        outcome.result->outputs.commit();
         if (!options.quiet) {
           printResult(item.file->path, *outcome.result, item.paths.pcd.empty() ? item.paths.png : item.paths.pcd);
         }
@@ -411,6 +422,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
       }
     }
     if (!outcome.error.empty()) {
+      if (outcome.result) outcome.result->outputs = {};  // none of the input's outputs
       std::cerr << "pcd_segment: error: " << item.file->path << ": " << outcome.error << "\n";
       ++failed;
     }
@@ -476,6 +488,8 @@ pcd_segment::CameraMotions readPoses(const std::string& path, std::size_t inputs
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before any thread starts (see there): Ctrl-C leaves no temporary file behind.
+  floodplane::apps::removeTemporariesOnInterrupt("pcd_segment");
   // Only pcd_segment's own messages: PCL's reader logs its failures, which are reported here.
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
 

@@ -61,10 +61,9 @@ floodplane::view::PlaneScene planeScene(const pcl::PointCloud<pcl::PointXYZ>::Co
   return scene;
 }
 
-void writeSnapshot(const std::string& path, const floodplane::view::PlaneScene& scene,
-                   const SnapshotSettings& settings) {
-  floodplane::io::writePng(path,
-                           floodplane::view::renderImage(scene, settings.camera, settings.width, settings.height));
+std::string snapshotPng(const floodplane::view::PlaneScene& scene, const SnapshotSettings& settings) {
+  return floodplane::io::encodePng(
+      floodplane::view::renderImage(scene, settings.camera, settings.width, settings.height));
 }
 
 }  // namespace pcd_segment

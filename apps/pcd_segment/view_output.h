@@ -41,9 +41,9 @@ floodplane::view::PlaneScene planeScene(const pcl::PointCloud<pcl::PointXYZ>::Co
                                         const std::vector<pcl::ModelCoefficients>& coefficients,
                                         const std::vector<std::uint32_t>& plane_labels = {});
 
-/// Renders `scene` and writes it to `path` as a PNG, atomically. Throws std::runtime_error
-/// with one line when it cannot (no display, VTK error, file not writable).
-void writeSnapshot(const std::string& path, const floodplane::view::PlaneScene& scene,
-                   const SnapshotSettings& settings);
+/// Renders `scene` as the bytes of a PNG file, for floodplane::io::AtomicFileGroup to write
+/// with the input's other outputs. Throws std::runtime_error with one line when it cannot (no
+/// display, VTK error).
+std::string snapshotPng(const floodplane::view::PlaneScene& scene, const SnapshotSettings& settings);
 
 }  // namespace pcd_segment
