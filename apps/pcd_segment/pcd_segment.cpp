@@ -59,7 +59,7 @@ constexpr const char* kDescription =
     "points). With --track the inputs are one sequence of frames and the labels are track ids. A frame with no "
     "finite point (all NaN, a depth image of zeros) is valid: written with no planes, with a note. An input's outputs "
     "appear together once all are written, or not at all: an input that fails leaves none, and on Ctrl-C or "
-    "SIGTERM the unfinished ones are removed (exit status 130 or 143).";
+    "SIGTERM the unfinished ones are removed and pcd_segment ends by that signal (a shell's status 130 or 143).";
 
 // What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
 constexpr const char* kOutputMeaning =
