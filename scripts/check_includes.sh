@@ -6,7 +6,7 @@
 #   <- util/ (SIMD, small containers, label-image scans)
 #   <- models/ (noise model, tolerances, flood criterion, plane sums, planarity test)
 #   <- stages/ (the pipeline) and the segmenter (floodplane/segmenter.h)
-#   <- tracking/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
+#   <- tracking/, semantics/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
 # params/ sits beside util/ (it needs the API's params.h alone). A public header includes
 # nothing of src/. Lists every include that runs back up and fails.
 set -euo pipefail
@@ -21,6 +21,7 @@ declare -A allowed=(
   [models]="^(util/|models/|${types})"
   [stages]="^(util/|models/|stages/|${types}|floodplane/segmenter\.h)"
   [tracking]="^(util/|models/|tracking/|floodplane/)"
+  [semantics]="^(util/|models/|semantics/|floodplane/)"
   [io]="^(util/|models/|params/|io/|floodplane/)"
   [pcl_interface]="^(floodplane/)"
 )
@@ -40,7 +41,7 @@ for folder in "${!allowed[@]}"; do
 done
 while IFS= read -r line; do
   problems+=("include/$line (a public header includes an internal one)")
-done < <(cd include && grep -rnE '#include "(util|models|stages|params|tracking|io|pcl_interface)/' . | sed 's|^\./||' || true)
+done < <(cd include && grep -rnE '#include "(util|models|stages|params|tracking|semantics|io|pcl_interface)/' . | sed 's|^\./||' || true)
 if [ ${#problems[@]} -gt 0 ]; then
   echo "check_includes: these includes run back up the library's layers (see the top of $0):" >&2
   printf '  %s\n' "${problems[@]}" >&2

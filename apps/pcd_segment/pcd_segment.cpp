@@ -31,6 +31,7 @@
 #include "common/param_options.h"
 #include "common/plane_view.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
+#include "floodplane/plane_classes.h"
 #include "io/atomic_file.h"
 #include "io/input_files.h"
 #include "io/input_frame.h"
@@ -75,6 +76,9 @@ struct Options {
   bool png = false;
   bool overlay = false;
   bool json = false;
+  std::vector<double> up;                       ///< --up X,Y,Z, or empty
+  std::vector<double> gravity;                  ///< --gravity X,Y,Z, or empty
+  std::optional<Eigen::Vector3d> up_direction;  ///< from `up` or `gravity`, checked
   bool quiet = false;
   bool track = false;                          ///< the inputs are one sequence; labels are track ids
   bool cold_starts = false;                    ///< --cold-starts: with --track, no head start
@@ -137,6 +141,43 @@ void addOutputFlags(CLI::App& app, Options& options) {
                  "outputs and messages are those of -j 1, in input order")
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
+}
+
+// The up direction the planes of --json are classed by (floodplane/plane_classes.h).
+void addUpOptions(CLI::App& app, Options& options, CLI::Option* json) {
+  CLI::Option* up =
+      app.add_option("--up", options.up,
+                     "With --json: the up direction (against gravity) in the cloud's frame, e.g. 0,-1,0 for a level "
+                     "camera with y down (PCL's and ROS's optical frames), any length; each plane in "
+                     "<name>.planes.json then has a \"class\" (floor, ceiling, wall, horizontal_surface or other) "
+                     "and its \"height_above_floor\" in metres (null when no floor is in view). An IMU at rest "
+                     "measures this direction")
+          ->delimiter(',')
+          ->expected(3)
+          ->type_name("X,Y,Z")
+          ->needs(json);
+  app.add_option("--gravity", options.gravity,
+                 "The same as --up given the other way round: the direction gravity pulls (down) in the cloud's "
+                 "frame, e.g. 0,1,0 for a level camera with y down")
+      ->delimiter(',')
+      ->expected(3)
+      ->type_name("X,Y,Z")
+      ->needs(json)
+      ->excludes(up);
+}
+
+// The up direction of --up or --gravity, or nothing; throws std::invalid_argument naming the
+// flag of a vector that is no direction.
+std::optional<Eigen::Vector3d> upDirection(const Options& options) {
+  const bool from_gravity = !options.gravity.empty();
+  const std::vector<double>& values = from_gravity ? options.gravity : options.up;
+  if (values.empty()) return std::nullopt;
+  const Eigen::Vector3d vector(values.at(0), values.at(1), values.at(2));
+  if (!vector.allFinite() || vector.isZero(0.0)) {
+    throw std::invalid_argument(std::string(from_gravity ? "--gravity" : "--up") +
+                                " X,Y,Z must be a direction: three finite numbers, not all zero");
+  }
+  return from_gravity ? Eigen::Vector3d(-vector) : vector;
 }
 
 // The 3-D outputs. The checks run while parsing, so a bad value fails before any work.
@@ -211,9 +252,12 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   return out;
 }
 
-// The JSON report's text. `track_ids`: each plane's track id with --track, empty without.
+// The JSON report's text. `track_ids`: each plane's track id with --track, empty without. With
+// `up`, the planes are classed by it; `planes` are the core's planes (in the order of segmented's).
 std::string reportText(const std::string& input, const Cloud& points, const floodplane::Params& params,
-                       const Segmented& segmented, const std::vector<std::uint32_t>& track_ids) {
+                       const Segmented& segmented, const std::vector<std::uint32_t>& track_ids,
+                       const std::optional<Eigen::Vector3d>& up,
+                       const std::vector<floodplane::SegmentedPlane>& planes) {
   pcd_segment::Report report;
   report.input = input;
   report.width = points.width;
@@ -225,6 +269,10 @@ std::string reportText(const std::string& input, const Cloud& points, const floo
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);
   for (std::size_t k = 0; k < track_ids.size() && k < report.planes.size(); ++k) report.planes[k].track = track_ids[k];
+  if (up) {
+    report.up = up->normalized();
+    pcd_segment::describeRecords(report.planes, floodplane::describePlanes(planes, *up));
+  }
   return pcd_segment::reportJson(report).dump(2) + "\n";
 }
 
@@ -291,8 +339,8 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
     }
   }
   if (options.json) {
-    outputs.add(paths.json,
-                reportText(input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds()));
+    outputs.add(paths.json, reportText(input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds(),
+                                       options.up_direction, segmentation.getLastSegmentation().planes));
   }
   if (options.snapshot || options.view) {
     result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients,
@@ -500,6 +548,7 @@ int main(int argc, char** argv) {
   floodplane::apps::addParameterOptions(app, options.params);
   floodplane::apps::addDepthInputOptions(app, options.depth);
   addOutputFlags(app, options);
+  addUpOptions(app, options, app.get_option("--json"));
   addViewOptions(app, options);
   if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
 
@@ -511,6 +560,7 @@ int main(int argc, char** argv) {
   }
   try {
     options.camera = floodplane::apps::depthCamera(options.depth);
+    options.up_direction = upDirection(options);
   } catch (const std::invalid_argument& e) {
     return floodplane::apps::usageError(app, e.what());
   }

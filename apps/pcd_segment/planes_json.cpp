@@ -5,6 +5,7 @@
 #include "io/params_json.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -54,11 +55,24 @@ std::vector<PlaneRecord> planeRecords(
   return records;
 }
 
+void describeRecords(std::vector<PlaneRecord>& records, const std::vector<floodplane::PlaneDescription>& descriptions) {
+  if (descriptions.size() != records.size()) {
+    throw std::logic_error("describeRecords: " + std::to_string(descriptions.size()) + " descriptions for " +
+                           std::to_string(records.size()) + " planes");
+  }
+  for (std::size_t k = 0; k < records.size(); ++k) records[k].description = descriptions[k];
+}
+
 nlohmann::ordered_json reportJson(const Report& report) {
   nlohmann::ordered_json planes = nlohmann::ordered_json::array();
   for (const PlaneRecord& plane : report.planes) {
     nlohmann::ordered_json record = {{"id", plane.id}};
     if (plane.track != 0) record["track"] = plane.track;  // only with --track
+    if (plane.description) {                              // only with --up or --gravity
+      record["class"] = floodplane::planeClassName(plane.description->plane_class);
+      const double height = plane.description->height_above_floor;
+      record["height_above_floor"] = std::isnan(height) ? nlohmann::ordered_json() : nlohmann::ordered_json(height);
+    }
     record["normal"] = {plane.normal[0], plane.normal[1], plane.normal[2]};
     record["d"] = plane.d;
     record["centroid"] = {plane.centroid[0], plane.centroid[1], plane.centroid[2]};
@@ -70,7 +84,7 @@ nlohmann::ordered_json reportJson(const Report& report) {
     planes.push_back(std::move(record));
   }
   const floodplane::Params& p = report.params;
-  return {
+  nlohmann::ordered_json json = {
       {"input", report.input},
       {"width", report.width},
       {"height", report.height},
@@ -79,9 +93,11 @@ nlohmann::ordered_json reportJson(const Report& report) {
       {"noise", floodplane::io::noiseJson(report.noise)},
       {"head_start", report.head_start},
       {"segmentation_ms", report.segmentation_ms},
-      {"plane_count", report.planes.size()},
-      {"planes", planes},
   };
+  if (report.up) json["up"] = {report.up->x(), report.up->y(), report.up->z()};
+  json["plane_count"] = report.planes.size();
+  json["planes"] = std::move(planes);
+  return json;
 }
 
 }  // namespace pcd_segment

@@ -11,10 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "floodplane/params.h"
+#include "floodplane/plane_classes.h"
 #include "floodplane/segmenter.h"
 
 namespace pcd_segment {
@@ -40,6 +42,8 @@ struct PlaneRecord {
   float centroid[3] = {0, 0, 0};
   std::size_t inliers = 0;
   PixelBox boundary_box;  ///< of the plane's outer boundary, which encloses all its inliers
+  /// Its class and height above the floor, with --up or --gravity.
+  std::optional<floodplane::PlaneDescription> description;
 };
 
 /// One record per plane from the outputs of FloodFillPlaneSegmentation::segmentAndRefine
@@ -50,6 +54,10 @@ std::vector<PlaneRecord> planeRecords(
         regions,
     const std::vector<pcl::PointIndices>& inliers, const std::vector<pcl::PointIndices>& boundaries, std::size_t width);
 
+/// Gives each record its description (floodplane::describePlanes over the same planes, in the
+/// same order). Throws std::logic_error when the counts differ.
+void describeRecords(std::vector<PlaneRecord>& records, const std::vector<floodplane::PlaneDescription>& descriptions);
+
 /// Everything a report holds about one segmented file.
 struct Report {
   std::string input;  ///< the input file as given
@@ -59,10 +67,14 @@ struct Report {
   floodplane::NoiseModel noise;  ///< the depth noise the segmentation assumed
   bool head_start = false;       ///< continued from the previous frame (--track without --cold-starts)
   double segmentation_ms = 0.0;  ///< segmentAndRefine alone, not reading or writing
+  /// The up direction the planes were classed by, unit (--up, --gravity).
+  std::optional<Eigen::Vector3d> up;
   std::vector<PlaneRecord> planes;
 };
 
-/// The report, keys in reading order (input, size, parameters, noise, time, planes).
+/// The report, keys in reading order (input, size, parameters, noise, time, [up,] planes);
+/// with an up direction, each plane's "class" (floodplane::planeClassName) and
+/// "height_above_floor" [m] (null when no floor was found).
 nlohmann::ordered_json reportJson(const Report& report);
 
 }  // namespace pcd_segment

@@ -18,8 +18,9 @@ intrinsics as fx, fy, cx, cy, a 3 x 3 K or Open3D's PinholeCameraIntrinsic. A fr
 no finite point (all NaN, all zero, a depth image of zeros) gives a result with no planes,
 not an error. Results pickle.
 Many files on a cluster: floodplane.distributed.segment_files(). A stream of frames:
-Tracker().update(result) gives each plane an id that persists from frame to frame. Open3D in
-and out: floodplane.open3d (imported on its own; it needs Open3D).
+Tracker().update(result) gives each plane an id that persists from frame to frame. What the
+planes are (floor, walls, tables), given the up direction: describe_planes(result, up).
+Open3D in and out: floodplane.open3d (imported on its own; it needs Open3D).
 """
 
 import numpy as _numpy
@@ -29,6 +30,7 @@ from ._floodplane import (
     NoiseModel,
     PhaseTimes,
     Plane,
+    PlaneDescription,
     Segmentation,
     SegmentationStats,
     Segmenter,
@@ -37,6 +39,7 @@ from ._floodplane import (
     __version__,
     _label_color_table,
     depth_to_points,
+    describe_planes,
     read_depth_png,
     read_labels_pcd,
     read_pcd,
@@ -49,6 +52,7 @@ __all__ = [
     "NoiseModel",
     "PhaseTimes",
     "Plane",
+    "PlaneDescription",
     "Segmentation",
     "SegmentationStats",
     "Segmenter",
@@ -56,6 +60,7 @@ __all__ = [
     "Tracker",
     "__version__",
     "depth_to_points",
+    "describe_planes",
     "label_colors",
     "read_depth_png",
     "read_labels_pcd",

@@ -106,6 +106,14 @@ class Plane:
     @property
     def first_pixel(self) -> int: ...
 
+class PlaneDescription:
+    """What describe_planes says of one plane; pickles."""
+
+    @property
+    def plane_class(self) -> Literal["floor", "ceiling", "wall", "horizontal_surface", "other"]: ...
+    @property
+    def height_above_floor(self) -> float: ...
+
 class Segmentation:
     """The planes found in one frame; pickles. A frame with no finite point (all NaN; all
     (0, 0, 0) with zero_is_hole; a depth image of zeros) or fewer than three has planes == []
@@ -225,6 +233,17 @@ class Tracker:
     def frame_count(self) -> int: ...
     def reset(self) -> None: ...
 
+def describe_planes(
+    planes: Union[Segmentation, Sequence[Plane]],
+    up: npt.ArrayLike,
+    *,
+    horizontal_tolerance_rad: float = ...,
+    vertical_tolerance_rad: float = ...,
+    min_floor_area_m2: float = ...,
+    floor_height_tolerance_m: float = ...,
+    min_ceiling_area_m2: float = ...,
+    min_ceiling_height_m: float = ...,
+) -> List[PlaneDescription]: ...
 def segment(
     points: _Points,
     *,

@@ -10,6 +10,7 @@
 #include "floodplane/version.h"
 #include "label_colors.h"
 #include "params_kwargs.h"
+#include "plane_classes_binding.h"
 #include "segmentation_result.h"
 #include "segmenter_binding.h"
 #include "tracker_binding.h"
@@ -21,6 +22,7 @@ PYBIND11_MODULE(_floodplane, m) {
   floodplane::python::bindSegmentationResult(m);
   floodplane::python::bindSegmenter(m);
   floodplane::python::bindTracker(m);
+  floodplane::python::bindPlaneClasses(m);
   floodplane::python::bindFileFunctions(m);
   floodplane::python::bindLabelColors(m);
 }
