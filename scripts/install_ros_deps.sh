@@ -6,7 +6,8 @@
 # and node, dynamic reconfigure, diagnostics and rostest with a master to run its test, and
 # what a ROS user works with next to the node (README, "Use it in ROS"): catkin_make for a
 # workspace, rosrun, the Python messages that `rostopic echo` of the node's topics imports,
-# pcd_to_pointcloud to play a PCD file and rviz to look at the planes. The rest of floodplane
+# pcd_to_pointcloud to play a PCD file, pcl_ros's filter nodelets to chain onto its inliers
+# (its rostest chains ExtractIndices) and rviz to look at the planes. The rest of floodplane
 # needs none of them (scripts/install_deps.sh). As root it installs them; otherwise it prints
 # the command to run and fails, so nothing half-happens.
 set -euo pipefail
@@ -18,6 +19,10 @@ packages=(
   libimage-transport-dev                     # depth image + CameraInfo subscription (depth_image_proc's way)
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure  # dynamic_reconfigure (C++ and its cfg generator)
   libdiagnostic-updater-dev                  # the node's status on /diagnostics (diagnostic_updater)
+  libpcl-msgs-dev python3-pcl-msgs           # pcl_msgs: the inliers and model topics (C++; Python for rostopic echo)
+  libnodelet-topic-tools-dev                 # NodeletLazy: the input subscribed only while an output is
+  libtf2-ros-dev                             # tf2_ros: ~target_frame, and static_transform_publisher
+  libpcl-ros-dev                             # pcl_ros's nodelets (ExtractIndices, ProjectInliers) chained onto inliers and model
   python3-rostest                            # rostest (roslaunch with a master on a port of its own)
   # The Python messages of the node's topics and of the ones floodplane_ros/Planes contains:
   # `rostopic echo` imports them.

@@ -30,7 +30,7 @@ void StreamStatus::messageSkipped(const std::string& problem) {
   last_problem_ = problem;
 }
 
-StreamReport StreamStatus::report(double now_seconds) {
+StreamReport StreamStatus::report(double now_seconds, bool idle) {
   StreamReport report;
   report.window_seconds = std::max(0.0, now_seconds - window_start_);
   report.frames = frames_;
@@ -52,6 +52,9 @@ StreamReport StreamStatus::report(double now_seconds) {
     report.level = StatusLevel::warn;
     report.summary = std::to_string(skipped_) + " of " + std::to_string(skipped_ + frames_) + " messages of the last " +
                      window + " skipped: " + last_problem_;
+  } else if (frames_ == 0 && idle) {
+    report.level = StatusLevel::ok;
+    report.summary = "idle: no subscriber to its outputs";
   } else if (frames_ == 0) {
     report.level = StatusLevel::warn;
     report.summary = "no frame in the last " + window;

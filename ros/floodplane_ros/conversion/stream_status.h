@@ -35,7 +35,9 @@ struct StreamReport {
 ///
 /// The level of a window: error when every message in it was skipped (the node segments
 /// nothing: a wrong topic type or encoding), warn when some were, or when no frame came at all
-/// (no camera publishing, a wrong topic name), ok otherwise.
+/// (no camera publishing, a wrong topic name) while the node listened, ok otherwise. A node
+/// that no one listens to listens to no input (it is lazy): a window without frames is then ok
+/// (idle), not a warning.
 class StreamStatus {
  public:
   explicit StreamStatus(double start_seconds) : window_start_(start_seconds) {}
@@ -45,8 +47,9 @@ class StreamStatus {
   /// A message skipped because of `problem` (the reason logged for it).
   void messageSkipped(const std::string& problem);
 
-  /// The report of the window that ends at `now`; the next window starts there.
-  StreamReport report(double now_seconds);
+  /// The report of the window that ends at `now`; the next window starts there. `idle`: no
+  /// output has a subscriber now (so a lazy node subscribes no input).
+  StreamReport report(double now_seconds, bool idle = false);
 
  private:
   double window_start_;

@@ -2,6 +2,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ros1_messages.h"
 
+#include <stdexcept>
+#include <string>
+
+#include "label_image.h"
+
 namespace floodplane_ros {
 namespace conv = floodplane::conversion;
 
@@ -52,6 +57,46 @@ Plane planeMessage(const conv::PlaneDescription& plane) {
   message.inlier_count = plane.inlier_count;
   message.mean_squared_error = plane.mean_squared_error;
   return message;
+}
+
+conv::RigidTransform rigidTransform(const geometry_msgs::Transform& transform) {
+  conv::RigidTransform rigid;
+  rigid.translation = {transform.translation.x, transform.translation.y, transform.translation.z};
+  rigid.rotation = {transform.rotation.x, transform.rotation.y, transform.rotation.z, transform.rotation.w};
+  return rigid;
+}
+
+pcl_msgs::PointIndices pointIndices(const std_msgs::Header& header, const conv::ChainedPlane& plane) {
+  pcl_msgs::PointIndices message;
+  message.header = header;
+  message.indices = plane.indices;
+  return message;
+}
+
+pcl_msgs::ModelCoefficients modelCoefficients(const std_msgs::Header& header, const conv::ChainedPlane& plane) {
+  pcl_msgs::ModelCoefficients message;
+  message.header = header;
+  message.values = plane.coefficients;
+  return message;
+}
+
+sensor_msgs::Image labelImage(const std_msgs::Header& header, int width, int height,
+                              const std::vector<std::uint32_t>& labels,
+                              const std::vector<std::uint32_t>& plane_labels) {
+  if (labels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw std::invalid_argument("labelImage: " + std::to_string(labels.size()) + " labels for a " +
+                                std::to_string(width) + "x" + std::to_string(height) + " image");
+  }
+  sensor_msgs::Image image;
+  image.header = header;
+  image.width = static_cast<std::uint32_t>(width);
+  image.height = static_cast<std::uint32_t>(height);
+  image.encoding = conv::kLabelImageEncoding;
+  image.is_bigendian = conv::labelImageIsBigEndian();
+  image.step = image.width * conv::kLabelImageBytesPerPixel;
+  image.data.resize(static_cast<std::size_t>(image.step) * image.height);
+  conv::writeLabelImage(labels, plane_labels, image.data.data());
+  return image;
 }
 
 sensor_msgs::PointCloud2 organizedCloud(const std_msgs::Header& header, int width, int height,

@@ -5,6 +5,9 @@
 // the data left in place.
 
 #include <floodplane_ros/Plane.h>
+#include <geometry_msgs/Transform.h>
+#include <pcl_msgs/ModelCoefficients.h>
+#include <pcl_msgs/PointIndices.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -13,9 +16,11 @@
 
 #include <vector>
 
+#include "chained_plane.h"
 #include "cloud_points.h"
 #include "depth_image.h"
 #include "plane_descriptions.h"
+#include "plane_transform.h"
 
 namespace floodplane_ros {
 
@@ -24,6 +29,19 @@ floodplane::conversion::ImageView imageView(const sensor_msgs::Image& image);
 floodplane::conversion::CameraInfoView cameraInfoView(const sensor_msgs::CameraInfo& info);
 
 Plane planeMessage(const floodplane::conversion::PlaneDescription& plane);
+
+floodplane::conversion::RigidTransform rigidTransform(const geometry_msgs::Transform& transform);
+
+/// The chained plane as pcl_ros's SACSegmentation publishes its model: its indices and its
+/// coefficients, each with `header`.
+pcl_msgs::PointIndices pointIndices(const std_msgs::Header& header, const floodplane::conversion::ChainedPlane& plane);
+pcl_msgs::ModelCoefficients modelCoefficients(const std_msgs::Header& header,
+                                              const floodplane::conversion::ChainedPlane& plane);
+
+/// The label image (32SC1, conversion/label_image.h) of a segmentation's `labels` on a width x
+/// height grid, each plane k's pixels plane_labels[k - 1].
+sensor_msgs::Image labelImage(const std_msgs::Header& header, int width, int height,
+                              const std::vector<std::uint32_t>& labels, const std::vector<std::uint32_t>& plane_labels);
 
 /// An organized cloud of `fields` and point_step whose data is sized for width x height
 /// points, to be filled in place.

@@ -6,18 +6,19 @@
 # the loopback interface (ROS_MASTER_URI=http://127.0.0.1:<port>); ROS_HOME (logs) is a
 # temporary folder. Everything runs in a process group of its own, stopped at the end, on
 # failure and on the time limit alike (the master, the nodes, the test).
-# Usage: run_rostest.sh <devel-space> <seconds> <file.test>
+# Usage: run_rostest.sh <devel-space> <seconds> <file.test> [name:=value ...]   (the test's args)
 set -euo pipefail
 devel=$1
 seconds=$2
 test_file=$3
+shift 3
 
 export ROS_IP=127.0.0.1
 unset ROS_HOSTNAME ROS_MASTER_URI
 ROS_HOME=$(mktemp -d)
 export ROS_HOME ROS_LOG_DIR="$ROS_HOME/log" ROS_TEST_RESULTS_DIR="$ROS_HOME/test_results"
 
-setsid "$devel/env.sh" rostest "$test_file" &
+setsid "$devel/env.sh" rostest "$test_file" "$@" &
 group=$!
 sleep "$seconds" < /dev/null > /dev/null 2>&1 &
 sleeper=$!

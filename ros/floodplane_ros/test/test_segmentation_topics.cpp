@@ -4,8 +4,9 @@
 // them (~cameras names the cameras; the first one's instance gets the SegmentationNode tests,
 // two get TwoCameras'): frames in on their topics (the real frames of
 // ../shared/data/real when they are there, rendered ones otherwise; rendered depth images in
-// millimetres and in metres), the published planes, label cloud and markers compared with the
-// library's own output for the same frames, parameters changed by dynamic_reconfigure, track
+// millimetres and in metres), the published planes, label cloud, label image, the largest
+// plane's inliers and model, and markers compared with the library's own output for the same
+// frames, parameters changed by dynamic_reconfigure, track
 // ids, frames without a finite point (a cloud of NaN, a depth image of zeros) answered with no
 // planes, and bad messages (an unorganized cloud, a wrong encoding) answered by an error in
 // the log and nothing else: the node goes on with the next frame. Each frame's time comes in
@@ -21,6 +22,8 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <floodplane_ros/Planes.h>
+#include <pcl_msgs/ModelCoefficients.h>
+#include <pcl_msgs/PointIndices.h>
 #include <ros/ros.h>
 #include <roscpp/SetLoggerLevel.h>
 #include <rosgraph_msgs/Log.h>
@@ -199,6 +202,9 @@ using Clock = std::chrono::steady_clock;
 struct Published {
   floodplane_ros::PlanesConstPtr planes;
   sensor_msgs::PointCloud2ConstPtr labels;
+  sensor_msgs::ImageConstPtr label_image;
+  pcl_msgs::PointIndicesConstPtr inliers;
+  pcl_msgs::ModelCoefficientsConstPtr model;
   visualization_msgs::MarkerArrayConstPtr markers;
   // From just before the frame was sent to the planes' arrival: the node's time for the frame
   // lies within it.
@@ -207,7 +213,8 @@ struct Published {
   double roundTripMilliseconds() const {
     return std::chrono::duration<double, std::milli>(planes_arrived - sent).count();
   }
-  bool complete() const { return planes && labels && markers; }
+  bool complete() const { return planes && labels && label_image && inliers && model && markers; }
+  bool any() const { return planes || labels || label_image || inliers || model || markers; }
 };
 
 // The node's report on /diagnostics: its level and its values by key.
@@ -231,6 +238,9 @@ class NodeUnderTest {
     planes_sub_ = nh_.subscribe("planes", 10, &NodeUnderTest::onPlanes, this);
     labels_sub_ = nh_.subscribe("plane_labels", 10, &NodeUnderTest::onLabels, this);
     markers_sub_ = nh_.subscribe("plane_markers", 10, &NodeUnderTest::onMarkers, this);
+    label_image_sub_ = nh_.subscribe("plane_label_image", 10, &NodeUnderTest::onLabelImage, this);
+    inliers_sub_ = nh_.subscribe("inliers", 10, &NodeUnderTest::onInliers, this);
+    model_sub_ = nh_.subscribe("model", 10, &NodeUnderTest::onModel, this);
     rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
     diagnostics_sub_ = nh_.subscribe("/diagnostics", 10, &NodeUnderTest::onDiagnostics, this);
     options_.head_start = true;  // the node's default
@@ -243,7 +253,9 @@ class NodeUnderTest {
       const bool depth_connected = image_.getNumSubscribers() > 0 && camera_info_.getNumSubscribers() > 0;
       if (points_.getNumSubscribers() > 0 && (depth_connected || !depth_images_) &&
           planes_sub_.getNumPublishers() > 0 && labels_sub_.getNumPublishers() > 0 &&
-          markers_sub_.getNumPublishers() > 0 && ros::service::exists(nodeName() + "/set_parameters", false)) {
+          markers_sub_.getNumPublishers() > 0 && label_image_sub_.getNumPublishers() > 0 &&
+          inliers_sub_.getNumPublishers() > 0 && model_sub_.getNumPublishers() > 0 &&
+          ros::service::exists(nodeName() + "/set_parameters", false)) {
         return true;
       }
       ros::WallDuration(0.05).sleep();
@@ -387,7 +399,7 @@ class NodeUnderTest {
     const bool logged = arrived_.wait_for(lock, std::chrono::duration<double>(kWaitSeconds),
                                           [&] { return errors_.size() > before || !ros::ok(); });
     const Published& published = published_[stamp];
-    EXPECT_FALSE(published.planes || published.labels || published.markers) << "published for a bad frame";
+    EXPECT_FALSE(published.any()) << "published for a bad frame";
     return logged ? errors_[before] : std::string();
   }
 
@@ -400,6 +412,15 @@ class NodeUnderTest {
   }
   void onLabels(const sensor_msgs::PointCloud2ConstPtr& labels) {
     store(labels->header.stamp, [&](Published& p) { p.labels = labels; });
+  }
+  void onLabelImage(const sensor_msgs::ImageConstPtr& image) {
+    store(image->header.stamp, [&](Published& p) { p.label_image = image; });
+  }
+  void onInliers(const pcl_msgs::PointIndicesConstPtr& inliers) {
+    store(inliers->header.stamp, [&](Published& p) { p.inliers = inliers; });
+  }
+  void onModel(const pcl_msgs::ModelCoefficientsConstPtr& model) {
+    store(model->header.stamp, [&](Published& p) { p.model = model; });
   }
   void onMarkers(const visualization_msgs::MarkerArrayConstPtr& markers) {
     if (markers->markers.empty()) return;  // never: a DELETEALL leads every array
@@ -439,7 +460,8 @@ class NodeUnderTest {
   bool depth_images_;
   ros::NodeHandle nh_;
   ros::Publisher points_, image_, camera_info_;
-  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, rosout_sub_, diagnostics_sub_;
+  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, label_image_sub_, inliers_sub_, model_sub_, rosout_sub_,
+      diagnostics_sub_;
   std::mutex mutex_;
   std::condition_variable arrived_;
   std::map<ros::Time, Published> published_;
@@ -514,6 +536,44 @@ void expectLibrarysResult(NodeUnderTest& under_test, const Published& published,
   }
   EXPECT_EQ(wrong_labels, 0u) << frame.name;
   EXPECT_EQ(wrong_points, 0u) << frame.name;
+
+  // The label image: the same labels on the same grid, 32SC1, with the input's header.
+  const sensor_msgs::Image& image = *published.label_image;
+  EXPECT_EQ(image.header.frame_id, cloud.header.frame_id);
+  EXPECT_EQ(image.header.stamp, cloud.header.stamp);
+  EXPECT_EQ(image.encoding, "32SC1");
+  ASSERT_EQ(image.width, static_cast<std::uint32_t>(frame.width));
+  ASSERT_EQ(image.height, static_cast<std::uint32_t>(frame.height));
+  ASSERT_EQ(image.step, 4 * image.width);
+  ASSERT_EQ(image.data.size(), expected.labels.size() * 4);
+  std::size_t wrong_pixels = 0;
+  for (std::size_t i = 0; i < expected.labels.size(); ++i) {
+    std::int32_t pixel;
+    std::memcpy(&pixel, image.data.data() + 4 * i, 4);
+    const std::uint32_t k = expected.labels[i];
+    if (pixel != static_cast<std::int32_t>(k == 0 ? 0u : labels[k - 1])) ++wrong_pixels;
+  }
+  EXPECT_EQ(wrong_pixels, 0u) << frame.name;
+
+  // The largest plane as pcl_ros's SACSegmentation publishes its model: its pixels' indices in
+  // the input cloud, ascending, and its a b c d; both empty without a plane.
+  EXPECT_EQ(published.inliers->header, published.planes->header);
+  EXPECT_EQ(published.model->header, published.planes->header);
+  std::vector<std::int32_t> largest;
+  for (std::size_t i = 0; i < expected.labels.size(); ++i) {
+    if (expected.labels[i] == 1) largest.push_back(static_cast<std::int32_t>(i));
+  }
+  EXPECT_EQ(published.inliers->indices, largest) << frame.name;
+  if (expected.planes.empty()) {
+    EXPECT_TRUE(published.model->values.empty()) << frame.name;
+  } else {
+    EXPECT_EQ(largest.size(), expected.planes[0].inlier_count) << frame.name;
+    const auto& fit = expected.planes[0].fit;
+    EXPECT_EQ(published.model->values,
+              (std::vector<float>{static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
+                                  static_cast<float>(fit.normal.z()), static_cast<float>(fit.offset)}))
+        << frame.name;
+  }
 
   const auto& markers = published.markers->markers;
   ASSERT_EQ(markers.size(), 1 + 2 * expected.planes.size()) << frame.name;
@@ -693,7 +753,8 @@ TEST(SegmentationNode, ReportsItsStreamOnDiagnostics) {
   ASSERT_FALSE(status.values.empty()) << "no report named '" << name << "' on /diagnostics with " << frames
                                       << " frames and 2 skipped messages since the start within " << kWaitSeconds
                                       << " s";
-  EXPECT_EQ(status.hardware_id, "none");
+  // The input topics: the launch file's, both segmented here.
+  EXPECT_EQ(status.hardware_id, "/" + node->camera() + "/depth/points, /" + node->camera() + "/depth/image_rect");
   for (const char* key :
        {"Window (s)", "Frames segmented", "Messages skipped", "Frequency (Hz)", "Time per frame, mean (ms)",
         "Time per frame, max (ms)", "Planes in the last frame", "Messages skipped since start"}) {

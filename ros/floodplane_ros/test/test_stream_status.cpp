@@ -68,6 +68,23 @@ TEST(StreamStatus, WarnsWhenNoFrameCame) {
   EXPECT_EQ(report.last_planes, 4u);  // the last frame's, from the window before
 }
 
+TEST(StreamStatus, IsIdleNotWarningWhenNoOneListensAndNoFrameCame) {
+  StreamStatus status(5.0);
+  const StreamReport idle = status.report(6.0, true);
+  EXPECT_EQ(idle.level, StatusLevel::ok);
+  EXPECT_EQ(idle.summary, "idle: no subscriber to its outputs");
+  EXPECT_EQ(idle.frames, 0u);
+  // Frames that came before the last subscriber left are reported as frames.
+  status.frameSegmented(12.0, 4);
+  const StreamReport busy = status.report(7.0, true);
+  EXPECT_EQ(busy.level, StatusLevel::ok);
+  EXPECT_EQ(busy.frames, 1u);
+  EXPECT_EQ(busy.summary.rfind("segmenting ", 0), 0u) << busy.summary;
+  // Skipped messages are reported whatever the subscribers.
+  status.messageSkipped("points: the cloud is not organized");
+  EXPECT_EQ(status.report(8.0, true).level, StatusLevel::error);
+}
+
 TEST(StreamStatus, WarnsWhenSomeMessagesWereSkipped) {
   StreamStatus status(0.0);
   status.frameSegmented(12.0, 4);
