@@ -70,8 +70,8 @@ UpDirection targetUpInSource(const RigidTransform& source_in_target) {
   for (const double value : source_in_target.rotation) {
     if (!std::isfinite(value)) throw std::invalid_argument("targetUpInSource: the rotation is not finite");
   }
-  Eigen::Quaterniond rotation(source_in_target.rotation[3], source_in_target.rotation[0],
-                              source_in_target.rotation[1], source_in_target.rotation[2]);
+  Eigen::Quaterniond rotation(source_in_target.rotation[3], source_in_target.rotation[0], source_in_target.rotation[1],
+                              source_in_target.rotation[2]);
   if (rotation.norm() < 1e-9) throw std::invalid_argument("targetUpInSource: the rotation quaternion is zero");
   rotation.normalize();
   const Eigen::Vector3d up = rotation.conjugate() * Eigen::Vector3d::UnitZ();

@@ -6,11 +6,11 @@
 // ~target_frame when it is set), the largest plane's inliers and model (inliers, model, as
 // pcl_ros's SACSegmentation publishes them) and rviz markers (plane_markers) out, and a status
 // of the stream on /diagnostics. Each plane is classed (floor, wall, ...) by the up direction:
-// ~target_frame's +z axis, or ~up in the sensor's frame. Lazy, as depth_image_proc is: the input is subscribed only
-// while an output is (nodelet_topic_tools::NodeletLazy; ~lazy false subscribes it always), and
-// a frame is segmented only when an output has a subscriber. The work is the ROS-free
-// FrameSegmenter's and the conversions' (conversion/); this file holds the topics, the
-// parameters, the transforms, the clock and the logging.
+// ~target_frame's +z axis, or ~up in the sensor's frame. Lazy, as depth_image_proc is: the
+// input is subscribed only while an output is (nodelet_topic_tools::NodeletLazy; ~lazy false
+// subscribes it always), and a frame is segmented only when an output has a subscriber. The
+// work is the ROS-free FrameSegmenter's and the conversions' (conversion/); this file holds the
+// topics, the parameters, the transforms, the clock and the logging.
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
@@ -102,8 +102,9 @@ struct Outputs {
   bool any() const { return planes || labels || label_image || markers || inliers || model; }
 };
 
-// ~up as the parameter server holds it: text (what a launch file's <param value=...> gives:
-// "[0, -1, 0]") or a list of numbers (rosparam, `_up:=[0,-1,0]`). Nothing when it is empty.
+// ~up as the parameter server holds it: text (what a launch file's <param value=...> and a
+// command line's _up:= give: "[0, -1, 0]") or a list of numbers (rosparam set, a YAML file).
+// Nothing when it is empty.
 std::optional<conv::UpDirection> upDirectionOf(XmlRpc::XmlRpcValue& value) {
   if (value.getType() == XmlRpc::XmlRpcValue::TypeString) {
     return conv::parseUpDirection(static_cast<std::string&>(value));

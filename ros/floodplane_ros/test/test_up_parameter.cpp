@@ -32,15 +32,17 @@ using floodplane_ros::test::kWaitSeconds;
 using floodplane_ros::test::roomCloud;
 namespace conv = floodplane::conversion;
 
+// A marker array's stamp: its first marker's (the DELETEALL that leads every array).
+ros::Time markersStamp(const visualization_msgs::MarkerArray& array) {
+  return array.markers.empty() ? ros::Time() : array.markers.front().header.stamp;
+}
+
 struct Camera {
   explicit Camera(const std::string& name) : nh("/" + name) {}
   ros::NodeHandle nh;
   ros::Publisher points = nh.advertise<sensor_msgs::PointCloud2>("depth/points", 2);
   Inbox<floodplane_ros::Planes> planes{nh, "planes"};
-  Inbox<visualization_msgs::MarkerArray> markers{
-      nh, "plane_markers", [](const visualization_msgs::MarkerArray& array) {
-        return array.markers.empty() ? ros::Time() : array.markers.front().header.stamp;
-      }};
+  Inbox<visualization_msgs::MarkerArray> markers{nh, "plane_markers", markersStamp};
   std::uint32_t seconds = 5000;
   ros::Time send(sensor_msgs::PointCloud2 cloud) {
     cloud.header.stamp = ros::Time(++seconds, 0);
