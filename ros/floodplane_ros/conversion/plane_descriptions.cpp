@@ -25,8 +25,12 @@ std::vector<std::uint32_t> publishedLabels(std::size_t plane_count, const std::v
 }
 
 std::vector<PlaneDescription> describePlanes(const Segmentation& segmentation,
-                                             const std::vector<std::uint32_t>& track_ids) {
+                                             const std::vector<std::uint32_t>& track_ids,
+                                             const std::optional<std::array<double, 3>>& up) {
   const std::vector<std::uint32_t> labels = publishedLabels(segmentation.planes.size(), track_ids);
+  // The library's descriptions (floodplane::, not this namespace's of the same name).
+  std::vector<floodplane::PlaneDescription> classes;
+  if (up) classes = floodplane::describePlanes(segmentation.planes, Eigen::Vector3d((*up)[0], (*up)[1], (*up)[2]));
   std::vector<PlaneDescription> planes(segmentation.planes.size());
   for (std::size_t k = 0; k < planes.size(); ++k) {
     const SegmentedPlane& plane = segmentation.planes[k];
@@ -37,12 +41,38 @@ std::vector<PlaneDescription> describePlanes(const Segmentation& segmentation,
     description.centroid = {plane.fit.centroid.x(), plane.fit.centroid.y(), plane.fit.centroid.z()};
     description.inlier_count = plane.inlier_count;
     description.mean_squared_error = plane.fit.mean_squared_error;
+    if (up) {
+      description.plane_class = classes[k].plane_class;
+      description.height_above_floor = classes[k].height_above_floor;
+    }
   }
   return planes;
 }
 
+std::array<float, 3> planeClassColor(PlaneClass plane_class) {
+  switch (plane_class) {
+    case PlaneClass::kFloor:
+      return {0.2f, 0.8f, 0.2f};
+    case PlaneClass::kCeiling:
+      return {0.7f, 0.4f, 1.0f};
+    case PlaneClass::kWall:
+      return {0.2f, 0.5f, 1.0f};
+    case PlaneClass::kHorizontalSurface:
+      return {1.0f, 0.6f, 0.0f};
+    case PlaneClass::kOther:
+      break;
+  }
+  return {0.6f, 0.6f, 0.6f};
+}
+
+std::array<float, 3> markerColor(const PlaneDescription& plane, bool classed) {
+  if (classed) return planeClassColor(plane.plane_class);
+  const auto rgb = io::labelColor(plane.label);
+  return {rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f};
+}
+
 PlaneOutline outlinePlane(const Segmentation& segmentation, const PointGrid& grid, std::size_t plane,
-                          std::uint32_t label, std::size_t max_points, double normal_length) {
+                          const std::array<float, 3>& color, std::size_t max_points, double normal_length) {
   if (plane >= segmentation.planes.size()) {
     throw std::invalid_argument("outlinePlane: plane " + std::to_string(plane) + " of " +
                                 std::to_string(segmentation.planes.size()));
@@ -75,8 +105,7 @@ PlaneOutline outlinePlane(const Segmentation& segmentation, const PointGrid& gri
   outline.normal_start = {static_cast<float>(fit.centroid.x()), static_cast<float>(fit.centroid.y()),
                           static_cast<float>(fit.centroid.z())};
   outline.normal_end = {static_cast<float>(end.x()), static_cast<float>(end.y()), static_cast<float>(end.z())};
-  const auto rgb = io::labelColor(label);
-  outline.color = {rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f};
+  outline.color = color;
   return outline;
 }
 

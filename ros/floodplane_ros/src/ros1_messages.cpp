@@ -10,6 +10,13 @@
 namespace floodplane_ros {
 namespace conv = floodplane::conversion;
 
+// Plane.msg's class constants are the library's values: planeMessage casts one to the other.
+static_assert(Plane::OTHER == static_cast<std::uint8_t>(floodplane::PlaneClass::kOther));
+static_assert(Plane::FLOOR == static_cast<std::uint8_t>(floodplane::PlaneClass::kFloor));
+static_assert(Plane::CEILING == static_cast<std::uint8_t>(floodplane::PlaneClass::kCeiling));
+static_assert(Plane::WALL == static_cast<std::uint8_t>(floodplane::PlaneClass::kWall));
+static_assert(Plane::HORIZONTAL_SURFACE == static_cast<std::uint8_t>(floodplane::PlaneClass::kHorizontalSurface));
+
 conv::CloudView cloudView(const sensor_msgs::PointCloud2& cloud) {
   conv::CloudView view;
   view.width = cloud.width;
@@ -56,6 +63,8 @@ Plane planeMessage(const conv::PlaneDescription& plane) {
   message.centroid.z = plane.centroid[2];
   message.inlier_count = plane.inlier_count;
   message.mean_squared_error = plane.mean_squared_error;
+  message.plane_class = static_cast<std::uint8_t>(plane.plane_class);
+  message.height_above_floor = plane.height_above_floor;
   return message;
 }
 

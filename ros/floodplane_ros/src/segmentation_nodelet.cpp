@@ -5,11 +5,12 @@
 // label cloud (plane_labels), the label image (plane_label_image), the planes (planes, in
 // ~target_frame when it is set), the largest plane's inliers and model (inliers, model, as
 // pcl_ros's SACSegmentation publishes them) and rviz markers (plane_markers) out, and a status
-// of the stream on /diagnostics. Lazy, as depth_image_proc is: the input is subscribed only
-// while an output is (nodelet_topic_tools::NodeletLazy; ~lazy false subscribes it always), and
-// a frame is segmented only when an output has a subscriber. The work is the ROS-free
-// FrameSegmenter's and the conversions' (conversion/); this file holds the topics, the
-// parameters, the transforms, the clock and the logging.
+// of the stream on /diagnostics. Each plane is classed (floor, wall, ...) by the up direction:
+// ~target_frame's +z axis, or ~up in the sensor's frame. Lazy, as depth_image_proc is: the
+// input is subscribed only while an output is (nodelet_topic_tools::NodeletLazy; ~lazy false
+// subscribes it always), and a frame is segmented only when an output has a subscriber. The
+// work is the ROS-free FrameSegmenter's and the conversions' (conversion/); this file holds the
+// topics, the parameters, the transforms, the clock and the logging.
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
@@ -27,6 +28,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <xmlrpcpp/XmlRpcValue.h>
 #include <pluginlib/class_list_macros.hpp>
 
 #include <algorithm>
@@ -50,6 +52,7 @@
 #include "problem_throttle.h"
 #include "ros1_messages.h"
 #include "stream_status.h"
+#include "up_direction.h"
 
 namespace floodplane_ros {
 namespace conv = floodplane::conversion;
@@ -99,6 +102,30 @@ struct Outputs {
   bool any() const { return planes || labels || label_image || markers || inliers || model; }
 };
 
+// ~up as the parameter server holds it: text (what a launch file's <param value=...> and a
+// command line's _up:= give: "[0, -1, 0]") or a list of numbers (rosparam set, a YAML file).
+// Nothing when it is empty.
+std::optional<conv::UpDirection> upDirectionOf(XmlRpc::XmlRpcValue& value) {
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeString) {
+    return conv::parseUpDirection(static_cast<std::string&>(value));
+  }
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw std::invalid_argument("~up must be 3 numbers x y z (\"[0, -1, 0]\"), or empty");
+  }
+  std::vector<double> numbers;
+  for (int i = 0; i < value.size(); ++i) {
+    XmlRpc::XmlRpcValue& number = value[i];
+    if (number.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+      numbers.push_back(static_cast<double>(number));
+    } else if (number.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+      numbers.push_back(static_cast<int>(number));
+    } else {
+      throw std::invalid_argument("~up must be 3 numbers x y z, its item " + std::to_string(i) + " is not a number");
+    }
+  }
+  return conv::upDirection(numbers);
+}
+
 using Clock = std::chrono::steady_clock;
 double secondsOf(Clock::time_point time) { return std::chrono::duration<double>(time.time_since_epoch()).count(); }
 double millisecondsSince(Clock::time_point start) {
@@ -140,6 +167,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
       throw std::invalid_argument("~transform_timeout must be 0 or more seconds, got " +
                                   std::to_string(transform_timeout_));
     }
+    readUpDirection(private_nh);
     if (!target_frame_.empty()) {
       tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
       tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
@@ -181,7 +209,32 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
     if (inputs_.depth_image) {
       NODELET_INFO("segments the depth images on %s with their camera_info", depth_topic_.c_str());
     }
-    if (!target_frame_.empty()) NODELET_INFO("publishes its planes in %s", target_frame_.c_str());
+    if (!target_frame_.empty()) {
+      NODELET_INFO("publishes its planes in %s, classed by its z axis as up", target_frame_.c_str());
+    } else if (up_) {
+      NODELET_INFO("classes its planes by ~up (%g, %g, %g) in the input's frame", (*up_)[0], (*up_)[1], (*up_)[2]);
+    } else {
+      NODELET_INFO("no up direction (~up, ~target_frame): its planes are not classed");
+    }
+  }
+
+  // ~up, the up direction in the sensor's frame, when there is no ~target_frame (whose z axis
+  // is up). A bad one is logged and leaves the planes unclassed: they are still worth
+  // publishing, and the node stays up for the rest of its outputs.
+  void readUpDirection(ros::NodeHandle& private_nh) {
+    XmlRpc::XmlRpcValue value;
+    if (!private_nh.getParam("up", value)) return;
+    if (!target_frame_.empty()) {
+      const bool empty = value.getType() == XmlRpc::XmlRpcValue::TypeString &&
+                         static_cast<std::string&>(value).find_first_not_of(" \t") == std::string::npos;
+      if (!empty) NODELET_WARN("~up is not used: with ~target_frame, up is that frame's z axis");
+      return;
+    }
+    try {
+      up_ = upDirectionOf(value);
+    } catch (const std::exception& error) {
+      NODELET_ERROR("~up not taken, the planes are not classed: %s", error.what());
+    }
   }
 
   // NodeletLazy calls these, under its lock, when the first output gets a subscriber and when
@@ -213,13 +266,13 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   }
 
   // The pose of the frame's sensor in ~target_frame at the frame's time, when the planes go
-  // there: nothing when ~target_frame is empty or no one listens to the planes. False (the
-  // frame skipped, the reason logged) when tf2 has no such transform within
-  // ~transform_timeout.
+  // there or are coloured by class (its z axis is up): nothing when ~target_frame is empty or
+  // no one listens to the planes or the markers. False (the frame skipped, the reason logged)
+  // when tf2 has no such transform within ~transform_timeout.
   bool lookUpTarget(const std_msgs::Header& header, const std::string& topic, const Outputs& outputs,
                     std::optional<conv::RigidTransform>& transform) {
     transform.reset();
-    if (target_frame_.empty() || !outputs.planes) return true;
+    if (target_frame_.empty() || !(outputs.planes || outputs.markers)) return true;
     try {
       transform = rigidTransform(
           tf_buffer_->lookupTransform(target_frame_, header.frame_id, header.stamp, ros::Duration(transform_timeout_))
@@ -337,12 +390,16 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
                     segmentation.planes.size());
     const std::vector<std::uint32_t>& track_ids = segmenter_.trackIds();
     const std::vector<std::uint32_t> labels = conv::publishedLabels(segmentation.planes.size(), track_ids);
+    // Up in the input's frame, where the planes are classed: the target frame's z axis, or ~up.
+    const std::optional<conv::UpDirection> up = to_target ? conv::targetUpInSource(*to_target) : up_;
+    std::vector<conv::PlaneDescription> descriptions;
+    if (outputs.planes || outputs.markers) descriptions = conv::describePlanes(segmentation, track_ids, up);
     if (outputs.planes) {
       auto planes = boost::make_shared<Planes>();
       planes->header = header;
       if (to_target) planes->header.frame_id = target_frame_;
       planes->segmentation_time_ms = time_ms;
-      for (const conv::PlaneDescription& plane : conv::describePlanes(segmentation, track_ids)) {
+      for (const conv::PlaneDescription& plane : descriptions) {
         planes->planes.push_back(planeMessage(to_target ? conv::transformPlane(plane, *to_target) : plane));
       }
       planes_publisher_.publish(planes);
@@ -370,7 +427,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
       std::vector<conv::PlaneOutline> outlines;
       outlines.reserve(segmentation.planes.size());
       for (std::size_t k = 0; k < segmentation.planes.size(); ++k) {
-        outlines.push_back(conv::outlinePlane(segmentation, grid, k, labels[k],
+        outlines.push_back(conv::outlinePlane(segmentation, grid, k, conv::markerColor(descriptions[k], up.has_value()),
                                               static_cast<std::size_t>(outline_points_), normal_length_));
       }
       markers_publisher_.publish(
@@ -394,6 +451,7 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   double line_width_ = 0.01;
   std::string target_frame_;
   double transform_timeout_ = 0.1;
+  std::optional<conv::UpDirection> up_;  // ~up; unused with a target frame
   std::string cloud_topic_;
   std::string depth_topic_;
   std::atomic<bool> publishers_ready_{false};

@@ -46,6 +46,8 @@ TEST(PlaneTransform, PutsACamerasFloorAtTheBasesFloor) {
   floor.centroid = {centroid.x(), centroid.y(), centroid.z()};
   floor.label = 3;
   floor.inlier_count = 1234;
+  floor.plane_class = floodplane::PlaneClass::kFloor;
+  floor.height_above_floor = 0.002;
   // The camera is 1.2 m above the floor, on the side its normal points to.
   EXPECT_NEAR(floor.coefficients[3], 1.2, 1e-12);
 
@@ -59,6 +61,9 @@ TEST(PlaneTransform, PutsACamerasFloorAtTheBasesFloor) {
   EXPECT_NEAR(moved.centroid[2], 0.0, 1e-12);
   EXPECT_EQ(moved.label, 3u);
   EXPECT_EQ(moved.inlier_count, 1234u);
+  // What it is and its height do not depend on the frame.
+  EXPECT_EQ(moved.plane_class, floodplane::PlaneClass::kFloor);
+  EXPECT_EQ(moved.height_above_floor, 0.002);
 }
 
 TEST(PlaneTransform, KeepsEveryPointsDistanceAndTheSensorsSide) {

@@ -53,6 +53,7 @@
 #include "floodplane/plane_tracker.h"
 #include "floodplane/segmenter.h"
 #include "io/depth_camera.h"
+#include "io/label_palette.h"
 #include "io/pcd_input.h"
 #include "synth/room_walk.h"
 
@@ -518,6 +519,9 @@ void expectLibrarysResult(NodeUnderTest& under_test, const Published& published,
     EXPECT_EQ(planes[k].plane.coef[3], fit.offset) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].centroid.x, fit.centroid.x()) << frame.name << " plane " << k;
     EXPECT_EQ(planes[k].centroid.z, fit.centroid.z()) << frame.name << " plane " << k;
+    // No up direction (floodplane.launch's default): not classed.
+    EXPECT_EQ(planes[k].plane_class, floodplane_ros::Plane::OTHER) << frame.name << " plane " << k;
+    EXPECT_TRUE(std::isnan(planes[k].height_above_floor)) << frame.name << " plane " << k;
   }
 
   const sensor_msgs::PointCloud2& cloud = *published.labels;
@@ -587,6 +591,11 @@ void expectLibrarysResult(NodeUnderTest& under_test, const Published& published,
     ASSERT_EQ(arrow.points.size(), 2u);
     EXPECT_NEAR(arrow.points[0].x, expected.planes[k].fit.centroid.x(), 1e-6);
     EXPECT_EQ(outline.header.frame_id, "camera_depth_optical_frame");
+    // Not classed: in its label's colour, as in the label cloud.
+    const auto rgb = floodplane::io::labelColor(labels[k]);
+    EXPECT_EQ(outline.color.r, rgb[0] / 255.0f) << frame.name << " plane " << k;
+    EXPECT_EQ(outline.color.g, rgb[1] / 255.0f) << frame.name << " plane " << k;
+    EXPECT_EQ(outline.color.b, rgb[2] / 255.0f) << frame.name << " plane " << k;
   }
 }
 

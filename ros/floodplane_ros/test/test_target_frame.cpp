@@ -4,8 +4,10 @@
 // forward and 30 degrees down, its pose on tf as static transforms (base_link, 0.3 m above the
 // floor, -> camera_link -> camera_depth_optical_frame, as a robot and its camera driver
 // publish them), and the node publishing its planes in base_link. The floor it sees must be
-// the floor of base_link: normal (0 0 1), d = 0.3, centroid 0.3 m below base_link. A frame
-// whose frame tf does not know is skipped with an error in the log, and the node goes on.
+// the floor of base_link: normal (0 0 1), d = 0.3, centroid 0.3 m below base_link, classed
+// FLOOR (base_link's z is up) at height 0; in a room, the wall ahead must be a WALL and the
+// table top a HORIZONTAL_SURFACE at the table's height. A frame whose frame tf does not know
+// is skipped with an error in the log, and the node goes on.
 
 #include <floodplane_ros/Planes.h>
 #include <ros/ros.h>
@@ -14,60 +16,27 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
-
 #include <cmath>
 #include <condition_variable>
-#include <limits>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "ros_test_support.h"
+#include "tilted_camera.h"
 
 namespace {
 
+using floodplane_ros::Plane;
 using floodplane_ros::test::becomes;
+using floodplane_ros::test::floorCloud;
 using floodplane_ros::test::Inbox;
+using floodplane_ros::test::kCameraInBase;
+using floodplane_ros::test::kFloorBelowBase;
+using floodplane_ros::test::kTableHeight;
 using floodplane_ros::test::kWaitSeconds;
-
-// target_frame.test's transforms: camera_link at (0.1, 0, 0.9) in base_link, pitched down
-// 30 degrees; the optical frame turned from it as drivers turn theirs (x right, y down, z
-// forward). base_link is 0.3 m above the floor.
-constexpr double kPitch = 30.0 * M_PI / 180.0;
-constexpr double kFloorBelowBase = 0.3;
-const Eigen::Vector3d kCameraInBase(0.1, 0.0, 0.9);
-
-Eigen::Quaterniond opticalInBase() {
-  const Eigen::Quaterniond camera_link(Eigen::AngleAxisd(kPitch, Eigen::Vector3d::UnitY()));
-  const Eigen::Quaterniond optical =
-      Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX());
-  return camera_link * optical;
-}
-
-// What the camera sees of the floor: a 320 x 240 pinhole grid, each ray's hit on z = -0.3 of
-// base_link in the optical frame, NaN where it sees no floor within 6 m.
-sensor_msgs::PointCloud2 floorCloud(const std::string& frame_id) {
-  const int width = 320, height = 240;
-  const double f = 285.0, cx = 159.5, cy = 119.5;
-  const Eigen::Quaterniond rotation = opticalInBase();
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  std::vector<float> xyz;
-  for (int v = 0; v < height; ++v) {
-    for (int u = 0; u < width; ++u) {
-      const Eigen::Vector3d ray((u - cx) / f, (v - cy) / f, 1.0);
-      const Eigen::Vector3d ray_in_base = rotation * ray;
-      const double t = (-kFloorBelowBase - kCameraInBase.z()) / ray_in_base.z();
-      const Eigen::Vector3d p = t * ray;
-      if (ray_in_base.z() < 0.0 && p.norm() < 6.0) {
-        xyz.insert(xyz.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
-      } else {
-        xyz.insert(xyz.end(), {nan, nan, nan});
-      }
-    }
-  }
-  return floodplane_ros::test::organizedCloud(width, height, xyz, frame_id);
-}
+using floodplane_ros::test::kWallX;
+using floodplane_ros::test::roomCloud;
 
 // The node's errors on /rosout.
 class Errors {
@@ -122,6 +91,22 @@ void expectTheFloorOfBaseLink(const floodplane_ros::PlanesConstPtr& planes, cons
   EXPECT_NEAR(floor.plane.coef[3], kFloorBelowBase, 1e-3);
   EXPECT_NEAR(floor.centroid.z, -kFloorBelowBase, 1e-3);
   EXPECT_GT(floor.centroid.x, kCameraInBase.x());  // in front of the camera
+  EXPECT_EQ(floor.plane_class, Plane::FLOOR);
+  EXPECT_NEAR(floor.height_above_floor, 0.0, 1e-3);
+}
+
+// The one plane of `planes` of class `plane_class`; fails the test when there is not one.
+const Plane* onlyPlaneOfClass(const floodplane_ros::Planes& planes, std::uint8_t plane_class) {
+  const Plane* found = nullptr;
+  int count = 0;
+  for (const Plane& plane : planes.planes) {
+    if (plane.plane_class == plane_class) {
+      found = &plane;
+      ++count;
+    }
+  }
+  EXPECT_EQ(count, 1) << "planes of class " << int{plane_class};
+  return count == 1 ? found : nullptr;
 }
 
 TEST(TargetFrame, PublishesTheFloorInTheTargetFrame) {
@@ -130,6 +115,33 @@ TEST(TargetFrame, PublishesTheFloorInTheTargetFrame) {
       << "the node did not subscribe its input within " << kWaitSeconds << " s";
   const ros::Time stamp = camera.send(floorCloud("camera_depth_optical_frame"));
   expectTheFloorOfBaseLink(camera.planes.waitFor(stamp), stamp);
+}
+
+TEST(TargetFrame, ClassesTheRoomsPlanesByTheTargetFramesZAxis) {
+  Camera camera;
+  ASSERT_TRUE(becomes([&] { return camera.points.getNumSubscribers() > 0; }))
+      << "the node did not subscribe its input within " << kWaitSeconds << " s";
+  const ros::Time stamp = camera.send(roomCloud("camera_depth_optical_frame"));
+  const floodplane_ros::PlanesConstPtr planes = camera.planes.waitFor(stamp);
+  ASSERT_TRUE(planes) << "no planes within " << kWaitSeconds << " s";
+  EXPECT_EQ(planes->header.frame_id, "base_link");
+  ASSERT_EQ(planes->planes.size(), 3u);  // floor, wall, table top
+  const Plane* floor = onlyPlaneOfClass(*planes, Plane::FLOOR);
+  const Plane* wall = onlyPlaneOfClass(*planes, Plane::WALL);
+  const Plane* table = onlyPlaneOfClass(*planes, Plane::HORIZONTAL_SURFACE);
+  ASSERT_TRUE(floor && wall && table);
+  EXPECT_NEAR(floor->plane.coef[2], 1.0, 1e-4);
+  EXPECT_NEAR(floor->height_above_floor, 0.0, 1e-3);
+  // The wall x = 3 faces the camera (-x); the camera, 1.2 m up and 30 degrees down, sees its
+  // lower 0.83 m.
+  EXPECT_NEAR(wall->plane.coef[0], -1.0, 1e-4);
+  EXPECT_NEAR(wall->plane.coef[3], kWallX, 1e-3);
+  EXPECT_GT(wall->height_above_floor, 0.1);
+  EXPECT_LT(wall->height_above_floor, 0.83);
+  EXPECT_NEAR(wall->height_above_floor, wall->centroid.z + kFloorBelowBase, 1e-3);
+  EXPECT_NEAR(table->plane.coef[2], 1.0, 1e-4);
+  EXPECT_NEAR(table->height_above_floor, kTableHeight, 1e-3);
+  EXPECT_NEAR(table->centroid.z, kTableHeight - kFloorBelowBase, 1e-3);
 }
 
 TEST(TargetFrame, SkipsAFrameItCannotTransformAndGoesOn) {
