@@ -4,7 +4,7 @@
 // Every field of floodplane::Params in one list, in the struct's order. Everything that
 // handles the parameters one by one follows from it: their validation (Params::problem), their
 // JSON (io/params_json.cpp), the Python keywords (python/src/params_kwargs.cpp), the
-// command-line flags and the flag names in the apps' error messages (apps/common/
+// command-line flags and the flag names in the apps' error messages (toolkit/cli/
 // param_options.cpp), and, at build time, the Python stubs' keywords and the ROS node's
 // dynamic_reconfigure entries (codegen/param_lists.cpp). The PCL class's setters are written by
 // hand, for their documentation; test_param_options calls the setter named here for every
