@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "baselines/omps_run.h"
 #include "bench_frames.h"
-#include "common/omps_run.h"
 #include "floodplane_run.h"
 #include "methods.h"
 

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // PCL OrganizedMultiPlaneSegmentation with IntegralImageNormalEstimation, the settings of the
-// paper's Sec. IV, shared with pcd_compare (apps/common/omps_run.h). Normal estimation is part
+// paper's Sec. IV, shared with pcd_compare (toolkit/baselines/omps_run.h). Normal estimation is part
 // of the timed call, since OMPS cannot run without it.
 #include <benchmark/benchmark.h>
 
@@ -10,8 +10,8 @@
 
 #include <sstream>
 
+#include "baselines/omps_run.h"
 #include "bench_frames.h"
-#include "common/omps_run.h"
 #include "methods.h"
 
 namespace floodplane::bench {

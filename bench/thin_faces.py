@@ -16,7 +16,7 @@ and the segments of a frame are matched one to one, best IoU first (each pair's 
 --min-iou (default 0.8, the issue's target: found in >= 90 % of cases). From IoU 0.5 on a
 match is one to one anyway, so at 0.8 this is "IoU(g) = the best over all segments >= 0.8".
 A face is a board's when its primitive is named "<kind> board <n>", thin when it is not the
-board's face +y or -y (apps/synth/scene_generator.h, isBoardEdgeFace).
+board's face +y or -y (toolkit/synth/scene_generator.h, isBoardEdgeFace).
 
 Example:
   bench/thin_faces.py --seeds 1-100                # the tuning split

@@ -6,7 +6,7 @@ with `pcd_synth --sequence`, segments each with `pcd_segment --track` (the label
 outputs holds track ids) and prints, per seed and over all, the id switches, lost planes and
 re-entries.
 
-The figures follow apps/eval/tracking_metrics.h, which is the reference for their definitions;
+The figures follow toolkit/eval/tracking_metrics.h, which is the reference for their definitions;
 this script counts the same in Python from the text PCDs (`--ascii`) of both tools:
 - a ground-truth plane is present in a frame with at least --min-fraction of its pixels (valid
   ones: a finite ground-truth point); each present plane in a frame is a plane-frame;
@@ -50,7 +50,7 @@ from bench_common import ROOT, machine, run_or_exit  # noqa: E402
 
 
 class TrackingEvaluator:
-    """Mirrors floodplane::eval::TrackingEvaluator (apps/eval/tracking_metrics.h)."""
+    """Mirrors floodplane::eval::TrackingEvaluator (toolkit/eval/tracking_metrics.h)."""
 
     def __init__(self, min_fraction=0.01, min_iou=0.5, max_gap=29):
         self.min_fraction, self.min_iou, self.max_gap = min_fraction, min_iou, max_gap

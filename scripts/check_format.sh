@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-mapfile -t files < <(git ls-files -- include src apps python bench test examples ros | grep -E '\.(h|hpp|cpp|cc)$')
+mapfile -t files < <(git ls-files -- include src codegen toolkit apps python bench test examples ros | grep -E '\.(h|hpp|cpp|cc)$')
 if [ "${1:-}" = "--fix" ]; then
   clang-format -i "${files[@]}"
   exit 0

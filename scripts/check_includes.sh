@@ -8,7 +8,9 @@
 #   <- stages/ (the pipeline) and the segmenter (floodplane/segmenter.h)
 #   <- tracking/, semantics/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
 # params/ sits beside util/ (it needs the API's params.h alone). A public header includes
-# nothing of src/. Lists every include that runs back up and fails.
+# nothing of src/ or toolkit/. toolkit/ (what the programs, tests and benchmarks share) sits on
+# top: it includes the API, io/ and params/ and its own folders, never the pipeline's internals.
+# Lists every include that runs back up and fails.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -25,6 +27,7 @@ declare -A allowed=(
   [io]="^(util/|models/|params/|io/|floodplane/)"
   [pcl_interface]="^(floodplane/)"
 )
+toolkit='^(floodplane/|io/|params/|cli/|view/|baselines/|synth/|eval/)'
 problems=()
 for folder in "${!allowed[@]}"; do
   [ -d "src/$folder" ] || continue
@@ -40,11 +43,18 @@ for folder in "${!allowed[@]}"; do
   done < <(cd "src/$folder" && grep -n '#include "' -- *.h *.cpp 2> /dev/null || true)
 done
 while IFS= read -r line; do
+  file=${line%%:*}
+  rest=${line#*:}
+  target=$(sed -n 's/^[[:space:]]*#include "\([^"]*\)".*/\1/p' <<< "${rest#*:}")
+  [[ "$target" == */* ]] || continue
+  grep -Eq "$toolkit" <<< "$target" || problems+=("toolkit/$file:${rest%%:*} includes \"$target\"")
+done < <(cd toolkit && grep -rn '#include "' --include='*.h' --include='*.cpp' . | sed 's|^\./||' || true)
+while IFS= read -r line; do
   problems+=("include/$line (a public header includes an internal one)")
-done < <(cd include && grep -rnE '#include "(util|models|stages|params|tracking|semantics|io|pcl_interface)/' . | sed 's|^\./||' || true)
+done < <(cd include && grep -rnE '#include "(util|models|stages|params|tracking|semantics|io|pcl_interface|cli|view|baselines|synth|eval)/' . | sed 's|^\./||' || true)
 if [ ${#problems[@]} -gt 0 ]; then
   echo "check_includes: these includes run back up the library's layers (see the top of $0):" >&2
   printf '  %s\n' "${problems[@]}" >&2
   exit 1
 fi
-echo "check_includes: every include of src/ and include/ points down"
+echo "check_includes: every include of src/, include/ and toolkit/ points down"

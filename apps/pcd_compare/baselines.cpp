@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/omps_run.h"
+#include "baselines/omps_run.h"
 #include "method.h"
 
 namespace pcd_compare {
@@ -32,7 +32,7 @@ const std::vector<std::pair<std::string, double>> kSequentialRansac = {
     {"distance_threshold", 0.01},  // inlier distance from the plane [m]
     {"min_inliers", 100}};
 
-// OMPS's defaults are the paper's Sec. IV settings (common/omps_run.h) and PCL's default maximum
+// OMPS's defaults are the paper's Sec. IV settings (baselines/omps_run.h) and PCL's default maximum
 // curvature.
 const std::map<std::string, Baseline> kBaselines = {
     {"omps",

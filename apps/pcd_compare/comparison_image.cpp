@@ -11,8 +11,8 @@
 #include <string>
 #include <utility>
 
-#include "common/plane_view.h"
 #include "io/label_palette.h"
+#include "view/plane_view.h"
 
 namespace pcd_compare {
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The side-by-side picture of one scene, ground truth | ransac | omps | floodplane: as label
-// images (--png) or rendered in 3-D from the oblique camera of common/plane_view.h (--png3d).
+// images (--png) or rendered in 3-D from the oblique camera of view/plane_view.h (--png3d).
 
 #include <cstddef>
 #include <cstdint>

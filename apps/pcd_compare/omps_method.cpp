@@ -1,14 +1,14 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // PCL's OrganizedMultiPlaneSegmentation with integral-image normals, as in PCL's own
-// organized segmentation demo (its settings and the one safe call in common/omps_run.h).
+// organized segmentation demo (its settings and the one safe call in baselines/omps_run.h).
 
 #include <pcl/features/integral_image_normal.h>
 #include <pcl/segmentation/organized_multi_plane_segmentation.h>
 
 #include <sstream>
 
-#include "common/omps_run.h"
+#include "baselines/omps_run.h"
 #include "method.h"
 
 namespace pcd_compare {

@@ -25,10 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "common/cli.h"
-#include "common/depth_input.h"
-#include "common/display_check.h"
-#include "common/output_target.h"
+#include "cli/cli.h"
+#include "cli/depth_input.h"
+#include "cli/output_target.h"
 #include "comparison_image.h"
 #include "eval/segmentation_metrics.h"
 #include "floodplane/version.h"
@@ -39,6 +38,7 @@
 #include "label_files.h"
 #include "method.h"
 #include "report.h"
+#include "view/display_check.h"
 
 namespace {
 

@@ -23,13 +23,11 @@
 #include <vector>
 
 #include "camera_poses.h"
-#include "common/cli.h"
-#include "common/depth_input.h"
-#include "common/display_check.h"
-#include "common/interrupt_cleanup.h"
-#include "common/output_target.h"
-#include "common/param_options.h"
-#include "common/plane_view.h"
+#include "cli/cli.h"
+#include "cli/depth_input.h"
+#include "cli/interrupt_cleanup.h"
+#include "cli/output_target.h"
+#include "cli/param_options.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "floodplane/plane_classes.h"
 #include "io/atomic_file.h"
@@ -44,6 +42,8 @@
 #include "planes_json.h"
 #include "progress.h"
 #include "track_summary.h"
+#include "view/display_check.h"
+#include "view/plane_view.h"
 #include "view_output.h"
 
 namespace {
@@ -62,7 +62,7 @@ constexpr const char* kDescription =
     "appear together once all are written, or not at all: an input that fails leaves none, and on Ctrl-C or "
     "SIGTERM the unfinished ones are removed and pcd_segment ends by that signal (a shell's status 130 or 143).";
 
-// What -o names, for its help and for the error of an -o that is neither (common/output_target.h).
+// What -o names, for its help and for the error of an -o that is neither (cli/output_target.h).
 constexpr const char* kOutputMeaning =
     "-o names the labelled cloud (a .pcd file) or the label image (a .png file), for one input, or a directory";
 

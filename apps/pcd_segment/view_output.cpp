@@ -6,8 +6,8 @@
 #include <regex>
 #include <stdexcept>
 
-#include "common/plane_view.h"
 #include "io/png_file.h"
+#include "view/plane_view.h"
 
 namespace pcd_segment {
 namespace {

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // pcd_segment's 3-D outputs: the snapshot (an image rendered off screen) and the window of
-// --view, both drawn by common/plane_view.h from the segmentation's planar regions.
+// --view, both drawn by view/plane_view.h from the segmentation's planar regions.
 
 #include <pcl/ModelCoefficients.h>
 #include <pcl/point_cloud.h>
@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "common/plane_scene.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
+#include "view/plane_scene.h"
 
 namespace pcd_segment {
 

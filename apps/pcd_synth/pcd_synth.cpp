@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "common/cli.h"
-#include "common/output_target.h"
+#include "cli/cli.h"
+#include "cli/output_target.h"
 #include "io/atomic_file.h"
 #include "io/label_palette.h"
 #include "io/pcd_file.h"

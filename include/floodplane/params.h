@@ -20,7 +20,7 @@ namespace floodplane {
 /// standard deviations are more). `problem()` names values the method cannot use.
 ///
 /// A new field goes into the list of src/params/params_table.h too, from which its validation, JSON,
-/// Python keyword and command-line flag follow (CONTRIBUTING.md).
+/// Python keyword and stub, ROS entry and command-line flag follow (CONTRIBUTING.md).
 struct Params {
   // --- Sec. III-B, the distance function of the flood (Eqs. 1-4) ---
   /// sigma_plane [m]: largest point-to-plane distance of a pixel joining a flood (Eq. 2).

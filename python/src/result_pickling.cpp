@@ -83,61 +83,113 @@ py::tuple matrixState(const Eigen::Matrix3d& m) {
   return out;
 }
 
-py::tuple fitState(const PlaneFit& f) {
-  return py::make_tuple(vectorState(f.centroid), vectorState(f.normal), f.offset, matrixState(f.covariance),
-                        vectorState(f.eigenvalues), f.mean_squared_error, f.curvature, f.valid);
+// How one field goes into a state and comes back: numbers, flags and Python objects as they
+// are, vectors and matrices as tuples of their coefficients, the structs a state holds as their
+// own states (a plane's fit without its format number, as a Segmentation holds it).
+template <typename T>
+py::object fieldState(const T& value) {
+  if constexpr (std::is_base_of_v<py::handle, T>) {
+    return py::reinterpret_borrow<py::object>(value);
+  } else {
+    return py::cast(value);
+  }
 }
+py::object fieldState(const Eigen::Vector3d& v) { return vectorState(v); }
+py::object fieldState(const Eigen::Matrix3d& m) { return matrixState(m); }
+py::object fieldState(const PlaneFit& fit);
+py::object fieldState(const NoiseModel& noise) { return noiseState(noise); }
+py::object fieldState(const PhaseTimes& phases) { return phasesState(phases); }
+py::object fieldState(const SegmentationStats& stats) { return statsState(stats); }
 
-// The fields of a SegmentedPlane, without the format number, so that a Segmentation's state
-// holds its planes' as they are.
-py::tuple segmentedPlaneFields(const SegmentedPlane& plane) {
-  return py::make_tuple(fitState(plane.fit), plane.inlier_count, plane.first_pixel);
+template <typename T>
+void readField(StateReader& reader, T& field) {
+  field = reader.next<T>();
 }
+void readField(StateReader& reader, Eigen::Vector3d& v) { v = reader.vector(); }
+void readField(StateReader& reader, Eigen::Matrix3d& m) { m = reader.matrix(); }
+void readField(StateReader& reader, PlaneFit& fit);
+void readField(StateReader& reader, NoiseModel& noise) { noise = noiseFromState(reader.next<py::tuple>()); }
+void readField(StateReader& reader, PhaseTimes& phases) { phases = phasesFromState(reader.next<py::tuple>()); }
+void readField(StateReader& reader, SegmentationStats& stats) { stats = statsFromState(reader.next<py::tuple>()); }
 
-SegmentedPlane segmentedPlaneFrom(StateReader& reader) {
-  SegmentedPlane plane;
-  const auto fit = reader.next<py::tuple>();
-  StateReader fields(withFormat(fit), "Plane", 8);
-  plane.fit.centroid = fields.vector();
-  plane.fit.normal = fields.vector();
-  plane.fit.offset = fields.next<double>();
-  plane.fit.covariance = fields.matrix();
-  plane.fit.eigenvalues = fields.vector();
-  plane.fit.mean_squared_error = fields.next<double>();
-  plane.fit.curvature = fields.next<double>();
-  plane.fit.valid = fields.next<bool>();
-  plane.inlier_count = reader.next<std::uint32_t>();
-  plane.first_pixel = reader.next<std::size_t>();
-  return plane;
-}
-
-// The plain structs' states: each struct's fields are listed once (its `fields` function
-// hands them to a visitor in their order), for both ways.
+// Each type's fields are listed once, by a function that hands them to a visitor in their
+// order (const when they are written, not when they are read); these turn that one list into
+// both directions.
 template <typename T, typename Fields>
-py::tuple plainState(T value, Fields fields) {
-  return fields(value, [](auto&... field) { return py::make_tuple(kStateFormat, field...); });
+py::tuple fieldsState(const T& value, Fields fields) {
+  return fields(value, [](const auto&... field) { return py::make_tuple(fieldState(field)...); });
+}
+
+template <typename T, typename Fields>
+std::size_t fieldCount(T& value, Fields fields) {
+  return fields(value, [](auto&... field) { return sizeof...(field); });
+}
+
+template <typename T, typename Fields>
+void readFields(StateReader& reader, T& value, Fields fields) {
+  fields(value, [&reader](auto&... field) {
+    (readField(reader, field), ...);  // left to right: the fields' order
+    return 0;
+  });
+}
+
+template <typename T, typename Fields>
+py::tuple plainState(const T& value, Fields fields) {
+  return withFormat(fieldsState(value, fields));
 }
 
 template <typename T, typename Fields>
 T plainFromState(const py::tuple& state, const char* type, Fields fields) {
   T value;
-  StateReader reader(state, type, fields(value, [](auto&... field) { return sizeof...(field); }));
-  fields(value, [&reader](auto&... field) {
-    ((field = reader.next<std::decay_t<decltype(field)>>()), ...);  // left to right: the fields' order
-    return 0;
-  });
+  StateReader reader(state, type, fieldCount(value, fields));
+  readFields(reader, value, fields);
   return value;
 }
 
-const auto noiseFields = [](NoiseModel& n, auto&& visit) {
+const auto fitFields = [](auto& f, auto&& visit) {
+  return visit(f.centroid, f.normal, f.offset, f.covariance, f.eigenvalues, f.mean_squared_error, f.curvature, f.valid);
+};
+const auto noiseFields = [](auto& n, auto&& visit) {
   return visit(n.sigma_constant, n.sigma_quadratic, n.step_constant, n.step_quadratic, n.patches, n.estimated);
 };
-const auto phasesFields = [](PhaseTimes& t, auto&& visit) {
+const auto phasesFields = [](auto& t, auto&& visit) {
   return visit(t.preparation, t.seed_selection, t.flood_fill, t.relabelling, t.merging, t.region_output,
                t.pcl_conversion);
 };
-const auto statsFields = [](SegmentationStats& s, auto&& visit) {
+const auto statsFields = [](auto& s, auto&& visit) {
   return visit(s.seed_candidates, s.seeds, s.pixels_taken_over, s.segments, s.merges, s.head_start);
+};
+// A Segmentation holds its planes' states without the format number.
+const auto segmentedPlaneFields = [](auto& p, auto&& visit) { return visit(p.fit, p.inlier_count, p.first_pixel); };
+// Python's Plane: a SegmentedPlane and its label.
+const auto planeFields = [](auto& p, auto&& visit) {
+  return visit(p.plane.fit, p.plane.inlier_count, p.plane.first_pixel, p.label);
+};
+const auto trackFields = [](auto& t, auto&& visit) {
+  return visit(t.id, t.first_frame, t.last_frame, t.frames_seen, t.plane, t.inlier_count, t.normal, t.offset,
+               t.centroid, t.smoothed_normal, t.smoothed_offset, t.best_inlier_count, t.best_normal, t.best_offset,
+               t.best_centroid);
+};
+
+py::object fieldState(const PlaneFit& fit) { return fieldsState(fit, fitFields); }
+void readField(StateReader& reader, PlaneFit& fit) {
+  fit = plainFromState<PlaneFit>(withFormat(reader.next<py::tuple>()), "Plane", fitFields);
+}
+
+// A Segmentation's fields: its label image and planes stand in the state as `labels` (an
+// array) and `planes` (a list of their states), which are checked against each other once read.
+struct SegmentationFields {
+  int width = 0;
+  int height = 0;
+  py::object labels;
+  py::list planes;
+  NoiseModel noise;
+  PhaseTimes phases;
+  SegmentationStats stats;
+  double ms = 0.0;
+};
+const auto segmentationFields = [](auto& s, auto&& visit) {
+  return visit(s.width, s.height, s.labels, s.planes, s.noise, s.phases, s.stats, s.ms);
 };
 
 }  // namespace
@@ -157,86 +209,48 @@ SegmentationStats statsFromState(const py::tuple& state) {
   return plainFromState<SegmentationStats>(state, "SegmentationStats", statsFields);
 }
 
-py::tuple planeState(const PlaneResult& plane) {
-  const py::tuple fields = segmentedPlaneFields(plane.plane);
-  return py::make_tuple(kStateFormat, fields[0], fields[1], fields[2], plane.label);
-}
-
-PlaneResult planeFromState(const py::tuple& state) {
-  StateReader reader(state, "Plane", 4);
-  PlaneResult plane;
-  plane.plane = segmentedPlaneFrom(reader);
-  plane.label = reader.next<std::uint32_t>();
-  return plane;
-}
+py::tuple planeState(const PlaneResult& plane) { return plainState(plane, planeFields); }
+PlaneResult planeFromState(const py::tuple& state) { return plainFromState<PlaneResult>(state, "Plane", planeFields); }
 
 py::tuple segmentationState(const SegmentationResult& result) {
   const Segmentation& s = *result.segmentation;
-  py::list planes;
-  for (const SegmentedPlane& plane : s.planes) planes.append(segmentedPlaneFields(plane));
-  return py::make_tuple(kStateFormat, s.width, s.height, arrayCopy(s.labels, {s.height, s.width}), planes,
-                        noiseState(s.noise), phasesState(s.phases), statsState(s.stats), result.ms);
+  SegmentationFields fields{s.width, s.height, arrayCopy(s.labels, {s.height, s.width}), py::list(), s.noise, s.phases,
+                            s.stats, result.ms};
+  for (const SegmentedPlane& plane : s.planes) fields.planes.append(fieldsState(plane, segmentedPlaneFields));
+  return plainState(fields, segmentationFields);
 }
 
 SegmentationResult segmentationFromState(const py::tuple& state) {
-  StateReader reader(state, "Segmentation", 8);
+  const auto fields = plainFromState<SegmentationFields>(state, "Segmentation", segmentationFields);
+  const std::string where = "cannot unpickle floodplane.Segmentation: ";
+  if (fields.width < 0 || fields.height < 0) raiseValueError(where + "fields 1 and 2 must be a width and height >= 0");
   auto s = std::make_shared<Segmentation>();
-  s->width = reader.next<int>();
-  s->height = reader.next<int>();
-  if (s->width < 0 || s->height < 0) reader.fail("a width and height >= 0");
-  const py::handle labels = reader.raw();
-  const auto planes = reader.next<py::list>();
-  s->labels =
-      unsignedGrid(labels, s->height, s->width, planes.size(), "cannot unpickle floodplane.Segmentation: labels");
+  s->width = fields.width;
+  s->height = fields.height;
+  s->labels = unsignedGrid(fields.labels, s->height, s->width, fields.planes.size(), where + "labels");
   const std::size_t pixels = s->labels.size();
-  for (const py::handle plane : planes) {
-    if (!py::isinstance<py::tuple>(plane)) {
-      raiseValueError("cannot unpickle floodplane.Segmentation: a plane's state must be a tuple");
-    }
-    StateReader fields(withFormat(py::reinterpret_borrow<py::tuple>(plane)), "Segmentation.planes", 3);
-    s->planes.push_back(segmentedPlaneFrom(fields));
+  for (const py::handle plane : fields.planes) {
+    if (!py::isinstance<py::tuple>(plane)) raiseValueError(where + "a plane's state must be a tuple");
+    const py::tuple plane_state = withFormat(py::reinterpret_borrow<py::tuple>(plane));
+    SegmentedPlane& added = s->planes.emplace_back();
+    StateReader reader(plane_state, "Segmentation.planes", fieldCount(added, segmentedPlaneFields));
+    readFields(reader, added, segmentedPlaneFields);
     const std::size_t label = s->planes.size();
     // boundary() starts its walk at the first pixel, which must carry the plane's label.
-    if (s->planes.back().first_pixel >= pixels || s->labels[s->planes.back().first_pixel] != label) {
-      raiseValueError("cannot unpickle floodplane.Segmentation: plane " + std::to_string(label) +
-                      "'s first pixel does not carry its label");
+    if (added.first_pixel >= pixels || s->labels[added.first_pixel] != label) {
+      raiseValueError(where + "plane " + std::to_string(label) + "'s first pixel does not carry its label");
     }
   }
-  s->noise = noiseFromState(reader.next<py::tuple>());
-  s->phases = phasesFromState(reader.next<py::tuple>());
-  s->stats = statsFromState(reader.next<py::tuple>());
+  s->noise = fields.noise;
+  s->phases = fields.phases;
+  s->stats = fields.stats;
   SegmentationResult result;
   result.segmentation = std::move(s);
-  result.ms = reader.next<double>();
+  result.ms = fields.ms;
   return result;
 }
 
-py::tuple trackState(const PlaneTrack& t) {
-  return py::make_tuple(kStateFormat, t.id, t.first_frame, t.last_frame, t.frames_seen, t.plane, t.inlier_count,
-                        vectorState(t.normal), t.offset, vectorState(t.centroid), vectorState(t.smoothed_normal),
-                        t.smoothed_offset, t.best_inlier_count, vectorState(t.best_normal), t.best_offset,
-                        vectorState(t.best_centroid));
-}
-
-PlaneTrack trackFromState(const py::tuple& state) {
-  StateReader reader(state, "Track", 15);
-  PlaneTrack t;
-  t.id = reader.next<std::uint32_t>();
-  t.first_frame = reader.next<std::size_t>();
-  t.last_frame = reader.next<std::size_t>();
-  t.frames_seen = reader.next<std::size_t>();
-  t.plane = reader.next<int>();
-  t.inlier_count = reader.next<std::uint32_t>();
-  t.normal = reader.vector();
-  t.offset = reader.next<double>();
-  t.centroid = reader.vector();
-  t.smoothed_normal = reader.vector();
-  t.smoothed_offset = reader.next<double>();
-  t.best_inlier_count = reader.next<std::uint32_t>();
-  t.best_normal = reader.vector();
-  t.best_offset = reader.next<double>();
-  t.best_centroid = reader.vector();
-  return t;
-}
+py::tuple trackState(const PlaneTrack& track) { return plainState(track, trackFields); }
+PlaneTrack trackFromState(const py::tuple& state) { return plainFromState<PlaneTrack>(state, "Track", trackFields); }
 
 }  // namespace floodplane::python

@@ -4,12 +4,14 @@
 // Every field of floodplane::Params in one list, in the struct's order. Everything that
 // handles the parameters one by one follows from it: their validation (Params::problem), their
 // JSON (io/params_json.cpp), the Python keywords (python/src/params_kwargs.cpp), the
-// command-line flags and the flag names in the apps' error messages (apps/common/
-// param_options.cpp). The PCL class's setters are written by hand, for their documentation;
-// test_param_options calls the setter named here for every entry, so a missing one does not
-// compile. So are the Python stubs' keywords and the ROS node's config and its reading:
-// test_param_lists (test/params) holds them to this list. A new parameter: a field in Params, a
-// line here, a setter in FloodFillPlaneSegmentation.
+// command-line flags and the flag names in the apps' error messages (toolkit/cli/
+// param_options.cpp), and, at build time, the Python stubs' keywords and the ROS node's
+// dynamic_reconfigure entries (codegen/param_lists.cpp). The PCL class's setters are written by
+// hand, for their documentation; test_param_options calls the setter named here for every
+// entry, so a missing one does not compile. So is the ROS nodelet's reading of its config:
+// test_param_lists (test/params) holds it and the generated lists to this list. A new
+// parameter: a field in Params, a line here, a setter in FloodFillPlaneSegmentation, its row in
+// the README (CONTRIBUTING.md).
 //
 // X(field, Kind, flag, setter, help):
 //   field   the Params member;

@@ -1,8 +1,8 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
 """bench/track_sequences.py, the plane tracking figures of issue 28: its Python counting gives
-what apps/eval/tracking_metrics.h defines on the hand-made sequences of
-test/apps/eval/test_tracking_metrics.cpp, it reads text PCDs, a rendered sequence scored against
+what toolkit/eval/tracking_metrics.h defines on the hand-made sequences of
+test/toolkit/eval/test_tracking_metrics.cpp, it reads text PCDs, a rendered sequence scored against
 itself has no switch and nothing lost, --look-away renders with pcd_synth --look-away, and
 pcd_segment gets the sequence's camera poses unless --no-poses."""
 

@@ -252,7 +252,7 @@ TEST_F(PcdCompare, HelpAndVersionExitWithCodeZero) {
   for (const std::string option : {"--resolutions", "--sensor", "--tuned-file", "--png3d"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
   }
-  // --png's pictures as every app's label images (common/cli.h).
+  // --png's pictures as every app's label images (cli/cli.h).
   EXPECT_NE(help.out.find("near-black where a point is on no plane, white where there is no point (no depth)"),
             std::string::npos);
   const Result version = run("--version");

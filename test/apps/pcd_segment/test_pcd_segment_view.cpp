@@ -21,10 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "common/plane_scene.h"
 #include "io/rgb_image.h"
 #include "support/app_run.h"
 #include "support/png_images.h"
+#include "view/plane_scene.h"
 
 namespace floodplane::test {
 namespace {

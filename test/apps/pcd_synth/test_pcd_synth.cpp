@@ -404,7 +404,7 @@ TEST_F(PcdSynth, HelpListsEveryOptionAndDrawsLabelsAsEveryApp) {
                                    "--quantize-bits", "--warp", "--speckle", "--bend", "--version"}) {
     EXPECT_TRUE(contains(help.out, option)) << option;
   }
-  // The words of every app (common/cli.h).
+  // The words of every app (cli/cli.h).
   EXPECT_TRUE(contains(help.out, "Write the PCDs as text (default: binary compressed)")) << help.out;
   EXPECT_TRUE(contains(help.out, "near-black where a point is on no plane, white where there is no point (no depth)"))
       << help.out;

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/output_target.h"
+#include "cli/output_target.h"
 
 #include <algorithm>
 #include <cctype>

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The one rule by which every app's output options name a file or a directory.
 
-#include "common/output_target.h"
+#include "cli/output_target.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/interrupt_cleanup.h"
+#include "cli/interrupt_cleanup.h"
 
 #include <pthread.h>
 #include <unistd.h>

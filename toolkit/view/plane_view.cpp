@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/plane_view.h"
+#include "view/plane_view.h"
 
 #include <pcl/visualization/pcl_visualizer.h>
 #include <vtkActor.h>
@@ -34,7 +34,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "common/display_check.h"
+#include "view/display_check.h"
 
 namespace floodplane::view {
 namespace {

@@ -11,7 +11,7 @@
 // evaluated, so two draws in one expression give other scenes under another compiler. Where
 // the draws stand in an order that reads backwards (y before x), it is the order in which GCC
 // evaluated the expression they replace: the seeds keep the scenes every recorded figure was
-// measured on (test/apps/synth/test_scene_checksums.cpp holds them to it under GCC and Clang).
+// measured on (test/toolkit/synth/test_scene_checksums.cpp holds them to it under GCC and Clang).
 
 #include <cstddef>
 #include <cstdint>

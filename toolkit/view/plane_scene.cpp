@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/plane_scene.h"
+#include "view/plane_scene.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The help texts every app shares (common/cli.h): --ascii, and how label images are drawn, said
+// The help texts every app shares (cli/cli.h): --ascii, and how label images are drawn, said
 // once for the three apps that write PCD files or label images.
 
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "common/cli.h"
+#include "cli/cli.h"
 
 namespace floodplane::apps {
 namespace {

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/param_options.h"
+#include "cli/param_options.h"
 
 #include <CLI/CLI.hpp>
 

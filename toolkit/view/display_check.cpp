@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/display_check.h"
+#include "view/display_check.h"
 
 // Xlib's macros (None, Bool, Status, ...) clash with VTK's and PCL's names: Xlib stays in
 // this file.

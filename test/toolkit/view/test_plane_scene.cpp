@@ -10,8 +10,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "common/plane_scene.h"
 #include "io/label_palette.h"
+#include "view/plane_scene.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "common/depth_input.h"
+#include "cli/depth_input.h"
 
 #include <CLI/CLI.hpp>
 

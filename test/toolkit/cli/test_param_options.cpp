@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The library's messages about parameters in the apps' terms: the flag of every field.
 
-#include "common/param_options.h"
+#include "cli/param_options.h"
 
 #include <gtest/gtest.h>
 

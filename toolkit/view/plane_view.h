@@ -9,8 +9,8 @@
 
 #include <string>
 
-#include "common/plane_scene.h"
 #include "io/rgb_image.h"
+#include "view/plane_scene.h"
 
 namespace floodplane::view {
 
