@@ -98,6 +98,11 @@ void CoarsePlanes::find(const BlockGrid& blocks, const FloodGrid& block_grid, co
     joint.merge(cluster_sums_[static_cast<std::size_t>(candidate_root_[l - 1])]);
     if (planarity_.curvedPair(k, l, joint.fit(), block_tolerances)) curved_[k] = curved_[l] = true;
   }
+  // Chains of small facets meeting at shallow angles, far from one plane together: a body.
+  chain_sums_.clear();
+  for (std::size_t k = 0; k < candidates; ++k)
+    chain_sums_.push_back(&cluster_sums_[static_cast<std::size_t>(candidate_root_[k])]);
+  facet_chains_.judge(means, candidate_of_block_, fits_, chain_sums_, block_tolerances, curved_);
   std::vector<std::int32_t> plane_of_candidate(candidates + 1, 0);
   for (std::uint32_t k = 1; k <= candidates; ++k) {
     if (curved_[k]) continue;

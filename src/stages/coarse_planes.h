@@ -11,6 +11,7 @@
 #include "models/plane_sums.h"
 #include "models/tolerances.h"
 #include "stages/block_grid.h"
+#include "stages/facet_chains.h"
 #include "stages/facet_pairs.h"
 #include "stages/flood_pass.h"
 #include "stages/hole_filling.h"
@@ -29,7 +30,9 @@ namespace floodplane {
 ///   noise a block mean has. The facets of a curved body (a person, a ball, a pipe) bend
 ///   together across the blocks of each facet, which one block alone cannot show; and two
 ///   touching clusters are judged as one surface too (as FacetPairs does for the planes at the
-///   end), so that the facets of one curved surface fail together.
+///   end), so that the facets of one curved surface fail together; and so are chains of small
+///   facets meeting at shallow angles (FacetChains: a body's facets, each too small to show
+///   its bend).
 /// A block of a coarse plane is inside it when its eight neighbours are of the same cluster
 /// (or have no measured pixel), it straddles no depth step (BlockGrid::split), and its pixels
 /// lie within the noise band of its segment's plane on average (their mean squared distance,
@@ -89,6 +92,8 @@ class CoarsePlanes {
   std::vector<std::uint32_t> candidate_of_block_, identity_;
   std::vector<PlaneCandidate> facets_;  // FacetPairs' view of the candidates
   FacetPairs facet_pairs_;
+  std::vector<const PlaneSums*> chain_sums_;  // FacetChains' view of the candidates' sums
+  FacetChains facet_chains_;
 };
 
 }  // namespace floodplane
