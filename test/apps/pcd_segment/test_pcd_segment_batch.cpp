@@ -23,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "pcd_segment_test.h"
 #include "support/app_process.h"
 #include "support/app_run.h"
 
@@ -63,17 +64,8 @@ std::vector<std::string> temporariesIn(const fs::path& directory) {
   return found;
 }
 
-class PcdSegmentBatch : public AppTest {
+class PcdSegmentBatch : public PcdSegmentTest {
  protected:
-  void SetUp() override {
-    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    AppTest::SetUp();
-  }
-
-  Result run(const std::vector<std::string>& arguments) const {
-    return runShell("exec " + commandLine(PCD_SEGMENT_BINARY, arguments));
-  }
-
   std::string writeScene(const std::string& name, const Cloud& cloud = wallAndFloor(160, 120)) const {
     const std::string file = path(name).string();
     EXPECT_EQ(pcl::io::savePCDFileBinary(file, cloud), 0);

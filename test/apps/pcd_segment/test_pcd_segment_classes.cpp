@@ -21,6 +21,7 @@
 
 #include "floodplane/flood_fill_plane_segmentation.h"
 #include "floodplane/plane_classes.h"
+#include "pcd_segment_test.h"
 #include "support/app_run.h"
 #include "synth/scene_file.h"
 
@@ -56,15 +57,8 @@ std::vector<PlaneDescription> libraryDescriptions(const Eigen::Vector3d& up) {
   return describePlanes(segmentation.getLastSegmentation().planes, up);
 }
 
-class PcdSegmentClasses : public AppTest {
+class PcdSegmentClasses : public PcdSegmentTest {
  protected:
-  void SetUp() override {
-    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    AppTest::SetUp();
-  }
-  Result run(const std::vector<std::string>& arguments) const {
-    return runShell("exec " + commandLine(PCD_SEGMENT_BINARY, arguments));
-  }
   Json report(const std::string& folder) const {
     return Json::parse(readFile(path(folder) / (kScene + ".kinect.planes.json")));
   }

@@ -18,6 +18,7 @@
 
 #include "io/depth_camera.h"
 #include "io/depth_png.h"
+#include "pcd_segment_test.h"
 #include "support/app_run.h"
 #include "support/library_labels.h"
 #include "support/png_images.h"
@@ -62,17 +63,8 @@ pcl::PointCloud<pcl::PointXYZ> backProjected(const floodplane::io::DepthImage& i
   return cloud;
 }
 
-class PcdSegmentDepth : public AppTest {
+class PcdSegmentDepth : public PcdSegmentTest {
  protected:
-  void SetUp() override {
-    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    AppTest::SetUp();
-  }
-
-  Result run(const std::vector<std::string>& arguments) const {
-    return runShell("exec " + commandLine(PCD_SEGMENT_BINARY, arguments));
-  }
-
   std::string writeDepth(const std::string& name) const {
     floodplane::io::writeDepthPng(path(name).string(), twoPlaneDepth());
     return path(name).string();

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "pcd_segment_test.h"
 #include "support/app_run.h"
 
 namespace floodplane::test {
@@ -61,17 +62,8 @@ std::set<std::uint32_t> trackIdsOf(const fs::path& planes_json) {
   return ids;
 }
 
-class PcdSegmentTrack : public AppTest {
+class PcdSegmentTrack : public PcdSegmentTest {
  protected:
-  void SetUp() override {
-    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
-    AppTest::SetUp();
-  }
-
-  Result run(const std::vector<std::string>& arguments) const {
-    return runShell("exec " + commandLine(PCD_SEGMENT_BINARY, arguments));
-  }
-
   // The rendered scene copied to in/<name> for each name.
   void copyScene(const std::vector<std::string>& names) const {
     fs::create_directories(path("in"));
