@@ -15,19 +15,6 @@
 namespace floodplane::param_lists {
 namespace {
 
-template <typename T>
-struct IsOptional : std::false_type {};
-template <typename T>
-struct IsOptional<std::optional<T>> : std::true_type {};
-template <typename T>
-struct Unwrapped {
-  using type = T;
-};
-template <typename T>
-struct Unwrapped<std::optional<T>> {
-  using type = T;
-};
-
 // How dynamic_reconfigure shows each kind of value: the range of its slider (every value in it
 // one that Params::problem accepts, 0 standing for unset where the kind has one) and what the
 // description adds to the flag's help. A new kind does not compile until it is given here.

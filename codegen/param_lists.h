@@ -7,7 +7,9 @@
 // template names where a list goes by a line holding its marker alone; floodplane_param_lists
 // fills the templates at build time.
 
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace floodplane::param_lists {
@@ -16,6 +18,20 @@ namespace floodplane::param_lists {
 inline constexpr const char* kStubKeywordsMarker = "@PARAMETER_KEYWORDS@";
 /// The marker of the dynamic_reconfigure entries.
 inline constexpr const char* kReconfigureEntriesMarker = "@PARAMETER_ENTRIES@";
+
+/// Whether a field of Params is optional (unset is a value of its own), and its value type.
+template <typename T>
+struct IsOptional : std::false_type {};
+template <typename T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+template <typename T>
+struct Unwrapped {
+  using type = T;
+};
+template <typename T>
+struct Unwrapped<std::optional<T>> {
+  using type = T;
+};
 
 /// One choice of a parameter that takes a few values (an enum in dynamic_reconfigure).
 struct Choice {

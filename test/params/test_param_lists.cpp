@@ -32,22 +32,11 @@
 namespace floodplane {
 namespace {
 
+using param_lists::IsOptional;
 using param_lists::ReconfigureEntry;
+using param_lists::Unwrapped;
 
 // ---- the table ----------------------------------------------------------------------------
-
-template <typename T>
-struct IsOptional : std::false_type {};
-template <typename T>
-struct IsOptional<std::optional<T>> : std::true_type {};
-template <typename T>
-struct Unwrapped {
-  using type = T;
-};
-template <typename T>
-struct Unwrapped<std::optional<T>> {
-  using type = T;
-};
 
 // A parameter as the table and Params give it.
 struct Parameter {
