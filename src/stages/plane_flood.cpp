@@ -16,8 +16,8 @@ namespace {
 // Eq. 4's hysteresis, as a fraction of the plane tolerance (see DistanceBuffer::fitsBetter).
 constexpr float kTakeoverMargin = 0.25f;
 
-// Pixels a flood tests at once along a row (one SSE register of floats).
-constexpr int kBlock = 4;
+// Pixels a flood tests at once along a row (one SSE register of floats): a group of four.
+constexpr int kGroup = 4;
 
 // When a flood refits its plane: first at `first` pixels, then at each doubling, and only
 // where the refit's normal is more certain than the current one's (`uncertainty` [rad]).
@@ -39,7 +39,7 @@ class FloodVisitor {
   FloodVisitor(const PointGrid& grid, std::int32_t label, const FloodCriterion& criterion, FloodTarget target,
                FloodScratch scratch, RefitSchedule refits, double angular_threshold)
       : grid_(grid),
-        blocks_(fourPixelsAtATime(grid)),
+        in_groups_(fourPixelsAtATime(grid)),
         label_(label),
         buffer_(target.buffer),
         labels_(target.buffer.labels().data()),
@@ -91,27 +91,27 @@ class FloodVisitor {
   }
 
   // The fill's run along a row (see spanFloodFill): inside a plane, where most pixels are,
-  // blocks of kBlock pixels at once while all pixels of a block join the same way (see
-  // joinBlock); pixel by pixel through join() elsewhere. Where a block's test fails at one
+  // groups of kGroup pixels at once while all pixels of a group join the same way (see
+  // joinGroup); pixel by pixel through join() elsewhere. Where a group's test fails at one
   // of its pixels, the pixels before it join as join() would take them, one by one, and
-  // join() decides the failing pixel and the rest of the block: a span's end costs the block
+  // join() decides the failing pixel and the rest of the group: a span's end costs the group
   // and one join(). Labels, distances and refits come out as with join() alone; only the
-  // order in which points are added to sums differs (a whole block is summed at once).
+  // order in which points are added to sums differs (a whole group is summed at once).
   FLOODPLANE_ALWAYS_INLINE int joinRun(std::size_t from, int step, int max) {
     int joined = 0;
     [[maybe_unused]] int pixel_by_pixel_until = 0;
     std::size_t pixel = from;
     while (joined < max) {
 #if FLOODPLANE_SIMD
-      // A block must not carry the count past the next refit, which join() makes at the
+      // A group must not carry the count past the next refit, which join() makes at the
       // exact pixel.
-      if (blocks_ && joined >= pixel_by_pixel_until && max - joined >= kBlock &&
-          self_.sums.count + kBlock < next_refit_) {
-        const int taken = joinBlock(pixel, step);
+      if (in_groups_ && joined >= pixel_by_pixel_until && max - joined >= kGroup &&
+          self_.sums.count + kGroup < next_refit_) {
+        const int taken = joinGroup(pixel, step);
         pixel = step > 0 ? pixel + static_cast<std::size_t>(taken) : pixel - static_cast<std::size_t>(taken);
         joined += taken;
-        if (taken == kBlock) continue;
-        pixel_by_pixel_until = joined + kBlock - taken;
+        if (taken == kGroup) continue;
+        pixel_by_pixel_until = joined + kGroup - taken;
       }
 #endif
       const std::size_t next = step > 0 ? pixel + 1 : pixel - 1;
@@ -163,18 +163,18 @@ class FloodVisitor {
 
  private:
 #if FLOODPLANE_SIMD
-  // join() for the kBlock pixels after `pixel` in direction `step`, each from its
+  // join() for the kGroup pixels after `pixel` in direction `step`, each from its
   // predecessor, where every pixel is in the same state: all unclaimed, or all owned by one
   // other segment (a takeover under Eq. 4). Returns how many of them, in the order of the
   // walk, pass Eqs. 2, 3 (and 4) before the first that does not, and has claimed those as
   // join() would have; 0 where the pixels are not in the same state. Every float operation is
   // the one join() does, in the same order, so a lane passes exactly when join() would pass
   // its pixel.
-  int joinBlock(std::size_t pixel, int step) {
+  int joinGroup(std::size_t pixel, int step) {
     // Lane j tests pixel first + j from its neighbour first + j - step: the five points from
     // `low` on, as x, y, z across lanes (the fourth float of a point is readable: stride >= 4).
-    const std::size_t first = step > 0 ? pixel + 1 : pixel - kBlock;
-    const std::size_t low = step > 0 ? pixel : pixel - kBlock;
+    const std::size_t first = step > 0 ? pixel + 1 : pixel - kGroup;
+    const std::size_t low = step > 0 ? pixel : pixel - kGroup;
     // One owner for all four, not this flood: none (0), or a segment to take them from.
     const std::int32_t owner = labels_[first];
     if (owner == label_ || !allLabelsEqual(labels_ + first, owner)) return 0;
@@ -197,29 +197,29 @@ class FloodVisitor {
       const Float4 margin = Float4::broadcast(samePlane(owner) ? kTakeoverMargin : 0.0f) * c.planeTolerance(range_sq);
       pass = pass & (distance + margin < Float4::load(distances_ + first));
     }
-    float distances[kBlock];
+    float distances[kGroup];
     distance.store(distances);
     if (pass.all()) {
-      buffer_.claimRun(first, kBlock, label_, distances);
+      buffer_.claimRun(first, kGroup, label_, distances);
       LaneSums lanes;
       lanes.add(q);
       if (owner == 0) {
         lanes.addTo(self_.sums);
       } else {
-        PlaneSums block;  // of the four points, once for both segments
-        lanes.addTo(block);
+        PlaneSums group;  // of the four points, once for both segments
+        lanes.addTo(group);
         Segment& loser = segments_[owner];
-        loser.sums.subtract(block);
+        loser.sums.subtract(group);
         loser.lost_pixels = true;
-        taken_over_ += kBlock;
-        self_.sums.merge(block);
+        taken_over_ += kGroup;
+        self_.sums.merge(group);
       }
-      return kBlock;
+      return kGroup;
     }
     // The pixels before the first that fails, in the order of the walk, as join() takes them.
     const int passing = step > 0 ? pass.leadingLanes() : pass.trailingLanes();
     for (int k = 0; k < passing; ++k) {
-      const std::size_t lane = step > 0 ? static_cast<std::size_t>(k) : static_cast<std::size_t>(kBlock - 1 - k);
+      const std::size_t lane = step > 0 ? static_cast<std::size_t>(k) : static_cast<std::size_t>(kGroup - 1 - k);
       const std::size_t to = first + lane;
       const Vec3 point = Vec3::load(grid_.point(to));
       if (owner != 0) {
@@ -243,10 +243,10 @@ class FloodVisitor {
   }
 
   const PointGrid& grid_;
-  const bool blocks_;  // fourPixelsAtATime(grid_)
+  const bool in_groups_;  // fourPixelsAtATime(grid_): rows are taken a group of four at a time
   const std::int32_t label_;
   DistanceBuffer& buffer_;
-  const std::int32_t* labels_;  // buffer_'s, for the block test
+  const std::int32_t* labels_;  // buffer_'s, for the group test
   const float* distances_;      // buffer_'s
   std::vector<Segment>& segments_;
   std::vector<std::pair<std::size_t, std::size_t>>& frontier_;

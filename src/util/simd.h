@@ -145,20 +145,20 @@ struct Float4 {
 
 /// Whether the four 32-bit labels from `labels` on all equal `value`.
 inline bool allLabelsEqual(const std::int32_t* labels, std::int32_t value) {
-  const __m128i block = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
-  return _mm_movemask_epi8(_mm_cmpeq_epi32(block, _mm_set1_epi32(value))) == 0xffff;
+  const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(four, _mm_set1_epi32(value))) == 0xffff;
 }
 /// Whether any of the four 32-bit labels from `labels` on equals `value`.
 template <class Label>
 bool anyLabelEquals(const Label* labels, Label value) {
-  const __m128i block = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
-  return _mm_movemask_epi8(_mm_cmpeq_epi32(block, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0;
+  const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(four, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0;
 }
 /// Whether any of the four 32-bit labels from `labels` on differs from `value`.
 template <class Label>
 bool anyLabelDiffers(const Label* labels, Label value) {
-  const __m128i block = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
-  return _mm_movemask_epi8(_mm_cmpeq_epi32(block, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0xffff;
+  const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(labels));
+  return _mm_movemask_epi8(_mm_cmpeq_epi32(four, _mm_set1_epi32(static_cast<std::int32_t>(value)))) != 0xffff;
 }
 
 /// Which of the four labels from `labels` on differ from the four from `other` on, neither of

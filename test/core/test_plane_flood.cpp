@@ -245,15 +245,15 @@ TEST(PlaneFlood, WidensTheToleranceWithTheDepthNoiseAtRange) {
 TEST(PlaneFlood, DecidesFourPixelsAtATimeAsPixelByPixel) {
   if (!simdEnabled()) GTEST_SKIP() << "built without SIMD (FLOODPLANE_SIMD=OFF): there is no four-pixel path";
   // Stride 4 takes the four-pixel path, stride 3 the pixel-by-pixel one; a takeover in the
-  // middle and a step at the right make both kinds of block and borders.
+  // middle and a step at the right make both kinds of group of four and borders.
   const auto depth = [](int u, int v) { return u > 50 ? 2.03 : 2.0 + 0.0005 * ((u * 7 + v * 3) % 5); };
-  const Grid by_pixel(61, 23, depth, 3), by_block(61, 23, depth, 4);
-  Flood a(by_pixel), b(by_block);
+  const Grid by_pixel(61, 23, depth, 3), by_group(61, 23, depth, 4);
+  Flood a(by_pixel), b(by_group);
   // The owner is an estimate of the same plane: Eq. 4's margin decides pixel by pixel.
   claimRightHalf(a, by_pixel, 0.0035f, kFacing);
-  claimRightHalf(b, by_block, 0.0035f, kFacing);
+  claimRightHalf(b, by_group, 0.0035f, kFacing);
   EXPECT_EQ(a.grow(by_pixel, a.seedAt(by_pixel, 3, 11, kFacing, kSpacingAt2m)),
-            b.grow(by_block, b.seedAt(by_block, 3, 11, kFacing, kSpacingAt2m)));
+            b.grow(by_group, b.seedAt(by_group, 3, 11, kFacing, kSpacingAt2m)));
   EXPECT_EQ(a.buffer.labels(), b.buffer.labels());
   EXPECT_EQ(a.buffer.distances(), b.buffer.distances());
   EXPECT_NEAR(a.segments[2].sums.sz, b.segments[2].sums.sz, 1e-9);
