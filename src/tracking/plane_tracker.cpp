@@ -131,6 +131,13 @@ void checkLabels(const std::vector<std::uint32_t>& labels, std::size_t planes, c
                                 std::to_string(*highest) + " but only " + std::to_string(planes) + " planes");
 }
 
+// One of a track's two measurements a plane is compared with, by reference into the track.
+struct Measurement {
+  const Eigen::Vector3d& normal;
+  double offset;
+  const Eigen::Vector3d& centroid;
+};
+
 // How far apart a track's plane and a frame's plane are: the smallest of the difference of
 // their offsets d and the distances from each one's centroid to the other's plane. The offsets
 // compare the planes at the foot of the perpendicular from the camera, often metres from any
@@ -141,13 +148,6 @@ void checkLabels(const std::vector<std::uint32_t>& labels, std::size_t planes, c
 // with a camera turn the tracker was not told of (0.1 rad moves a centroid 5 m away by 50 cm
 // off the turned plane), which leaves d as it was. Two parallel surfaces stay their distance
 // apart by all three.
-// One of a track's two measurements a plane is compared with, by reference into the track.
-struct Measurement {
-  const Eigen::Vector3d& normal;
-  double offset;
-  const Eigen::Vector3d& centroid;
-};
-
 double separation(const Measurement& track, const PlaneFit& fit) {
   const double offsets = std::abs(track.offset - fit.offset);
   const double plane_at_track = std::abs(fit.normal.dot(track.centroid) + fit.offset);
@@ -160,6 +160,98 @@ struct Candidate {
   std::size_t track;  // index into the tracks
   std::size_t plane;  // index into the frame's planes
 };
+
+// How alike a track and a frame's plane are, in [0, 1], or -1 where they are outside the gate
+// (`max_angle`, `max_apart`): against the track's newest measurement and against its best one,
+// the closer counts.
+double similarity(const PlaneTrack& track, const PlaneFit& fit, double max_angle, double max_apart) {
+  double similarity = -1.0;
+  for (const Measurement& measured : {Measurement{track.normal, track.offset, track.centroid},
+                                      Measurement{track.best_normal, track.best_offset, track.best_centroid}}) {
+    const double angle = std::acos(std::clamp(measured.normal.dot(fit.normal), -1.0, 1.0));
+    const double apart = separation(measured, fit);
+    if (angle <= max_angle && apart <= max_apart)
+      similarity = std::max(similarity, 1.0 - 0.5 * (angle / max_angle + apart / max_apart));
+  }
+  return similarity;
+}
+
+// The pixel overlap as intersection over union per (track, plane) pair: [track * planes + plane],
+// 0 for a pair that shares no pixel. `previous_ids` are the previous frame's planes' track ids.
+std::vector<double> intersectionOverUnion(const LabelOverlap& counts, const std::vector<PlaneTrack>& tracks,
+                                          const std::vector<std::uint32_t>& previous_ids, std::size_t planes) {
+  std::vector<double> overlap(tracks.size() * planes, 0.0);
+  for (const LabelOverlap::Pair& pair : counts.pairs) {
+    const auto previous = static_cast<std::uint32_t>(pair.labels >> 32);
+    const auto current = static_cast<std::uint32_t>(pair.labels & 0xffffffffu);
+    // The previous frame's tracks were all seen in it, so none has been dropped.
+    const std::uint32_t id = previous_ids[previous - 1];
+    const auto track = std::lower_bound(tracks.begin(), tracks.end(), id,
+                                        [](const PlaneTrack& t, std::uint32_t i) { return t.id < i; });
+    const double union_pixels =
+        static_cast<double>(counts.previous_pixels[previous]) + counts.current_pixels[current] - pair.pixels;
+    overlap[static_cast<std::size_t>(track - tracks.begin()) * planes + current - 1] = pair.pixels / union_pixels;
+  }
+  return overlap;
+}
+
+// The (track, plane) pairs of one round within the gate of `max_angle` (and the options' offset
+// difference), of the tracks and planes not matched yet (plane_ids[p] == 0), scored by overlap
+// plus similarity, best first. Ties go to the older track (tracks are by id), then to the larger
+// plane (planes are by size).
+void scoreCandidates(const std::vector<PlaneTrack>& tracks, const std::vector<SegmentedPlane>& planes,
+                     const std::vector<std::uint32_t>& plane_ids, const std::vector<double>& overlap, bool lost_only,
+                     std::size_t frame, double max_angle, double max_apart, std::vector<Candidate>& candidates) {
+  candidates.clear();
+  for (std::size_t t = 0; t < tracks.size(); ++t) {
+    if (tracks[t].plane >= 0) continue;
+    if (lost_only && tracks[t].last_frame + 1 >= frame) continue;
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+      if (plane_ids[p] != 0) continue;
+      const double alike = similarity(tracks[t], planes[p].fit, max_angle, max_apart);
+      if (alike < 0.0) continue;
+      candidates.push_back({overlap[t * planes.size() + p] + alike, t, p});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.score != b.score) return a.score > b.score;
+    if (a.track != b.track) return a.track < b.track;
+    return a.plane < b.plane;
+  });
+}
+
+// Step 5: the candidates taken best first, one-to-one: a track and a plane once each. The
+// track takes the plane as its measurement in `frame` (smoothed with weight `alpha`).
+void takeGreedily(const std::vector<Candidate>& candidates, const std::vector<SegmentedPlane>& planes,
+                  std::size_t frame, double alpha, std::vector<PlaneTrack>& tracks,
+                  std::vector<std::uint32_t>& plane_ids) {
+  for (const Candidate& candidate : candidates) {
+    PlaneTrack& track = tracks[candidate.track];
+    if (track.plane >= 0 || plane_ids[candidate.plane] != 0) continue;
+    const SegmentedPlane& plane = planes[candidate.plane];
+    track.plane = static_cast<int>(candidate.plane);
+    track.last_frame = frame;
+    ++track.frames_seen;
+    measure(track, plane, alpha);
+    plane_ids[candidate.plane] = track.id;
+  }
+}
+
+// The planes no track took (plane_ids[p] == 0) start new tracks, numbered from `next_id` on.
+void startTracks(const std::vector<SegmentedPlane>& planes, std::size_t frame, std::uint32_t& next_id,
+                 std::vector<PlaneTrack>& tracks, std::vector<std::uint32_t>& plane_ids) {
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (plane_ids[p] != 0) continue;
+    PlaneTrack track;
+    track.id = next_id++;
+    track.first_frame = track.last_frame = frame;
+    track.frames_seen = 1;
+    track.plane = static_cast<int>(p);
+    measure(track, planes[p], 1.0);  // weight 1: the first measurement is the smoothed one too
+    tracks.push_back(track);         // ids grow, so the tracks stay by id
+    plane_ids[p] = track.id;
+  }
+}
 
 }  // namespace
 
@@ -224,19 +316,7 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
   for (PlaneTrack& track : tracks_) track.plane = -1;
 
   // 3. The overlap as intersection over union per (track, plane).
-  std::vector<double> overlap(tracks_.size() * planes.size(), 0.0);  // [track * planes + plane]
-  for (const LabelOverlap::Pair& pair : counts.pairs) {
-    const auto previous = static_cast<std::uint32_t>(pair.labels >> 32);
-    const auto current = static_cast<std::uint32_t>(pair.labels & 0xffffffffu);
-    // The previous frame's tracks were all seen in it, so none has been dropped.
-    const std::uint32_t id = plane_track_ids_[previous - 1];
-    const auto track = std::lower_bound(tracks_.begin(), tracks_.end(), id,
-                                        [](const PlaneTrack& t, std::uint32_t i) { return t.id < i; });
-    const double union_pixels =
-        static_cast<double>(counts.previous_pixels[previous]) + counts.current_pixels[current] - pair.pixels;
-    overlap[static_cast<std::size_t>(track - tracks_.begin()) * planes.size() + current - 1] =
-        pair.pixels / union_pixels;
-  }
+  const std::vector<double> overlap = intersectionOverUnion(counts, tracks_, plane_track_ids_, planes.size());
 
   // 4. Candidate pairs within the gate, scored by overlap plus parameter similarity, taken
   // greedily one-to-one (5). Two rounds: every track within the gate, then the tracks lost
@@ -251,56 +331,12 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
   std::vector<Candidate> candidates;
   for (const bool lost_only : {false, true}) {
     const double max_angle = lost_only ? 2.0 * options_.max_normal_angle : options_.max_normal_angle;
-    candidates.clear();
-    for (std::size_t t = 0; t < tracks_.size(); ++t) {
-      if (tracks_[t].plane >= 0) continue;
-      if (lost_only && tracks_[t].last_frame + 1 >= frame) continue;
-      for (std::size_t p = 0; p < planes.size(); ++p) {
-        if (plane_track_ids_[p] != 0) continue;
-        const PlaneFit& fit = planes[p].fit;
-        const PlaneTrack& track = tracks_[t];
-        // Against the newest measurement and against the best one; the closer counts.
-        double similarity = -1.0;
-        for (const Measurement& measured : {Measurement{track.normal, track.offset, track.centroid},
-                                            Measurement{track.best_normal, track.best_offset, track.best_centroid}}) {
-          const double angle = std::acos(std::clamp(measured.normal.dot(fit.normal), -1.0, 1.0));
-          const double apart = separation(measured, fit);
-          if (angle <= max_angle && apart <= options_.max_offset_difference)
-            similarity = std::max(similarity, 1.0 - 0.5 * (angle / max_angle + apart / options_.max_offset_difference));
-        }
-        if (similarity < 0.0) continue;
-        candidates.push_back({overlap[t * planes.size() + p] + similarity, t, p});
-      }
-    }
-    // Ties go to the older track (tracks_ is by id), then to the larger plane (planes by size).
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-      if (a.score != b.score) return a.score > b.score;
-      if (a.track != b.track) return a.track < b.track;
-      return a.plane < b.plane;
-    });
-    for (const Candidate& candidate : candidates) {
-      PlaneTrack& track = tracks_[candidate.track];
-      if (track.plane >= 0 || plane_track_ids_[candidate.plane] != 0) continue;
-      const SegmentedPlane& plane = planes[candidate.plane];
-      track.plane = static_cast<int>(candidate.plane);
-      track.last_frame = frame;
-      ++track.frames_seen;
-      measure(track, plane, alpha);
-      plane_track_ids_[candidate.plane] = track.id;
-    }
+    scoreCandidates(tracks_, planes, plane_track_ids_, overlap, lost_only, frame, max_angle,
+                    options_.max_offset_difference, candidates);
+    takeGreedily(candidates, planes, frame, alpha, tracks_, plane_track_ids_);
   }
   // The planes left over start new tracks.
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    if (plane_track_ids_[p] != 0) continue;
-    PlaneTrack track;
-    track.id = next_id_++;
-    track.first_frame = track.last_frame = frame;
-    track.frames_seen = 1;
-    track.plane = static_cast<int>(p);
-    measure(track, planes[p], 1.0);  // weight 1: the first measurement is the smoothed one too
-    tracks_.push_back(track);        // ids grow, so tracks_ stays by id
-    plane_track_ids_[p] = track.id;
-  }
+  startTracks(planes, frame, next_id_, tracks_, plane_track_ids_);
 
   // 6. The tracks that have now been lost for more than max_lost_frames frames go.
   const auto max_lost = static_cast<std::size_t>(options_.max_lost_frames);
