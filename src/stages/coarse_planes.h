@@ -65,35 +65,81 @@ class CoarsePlanes {
   struct Plane {
     PlaneSums sums;                  // of its inner blocks' means, each counted once per pixel
     std::vector<std::size_t> inner;  // its inner blocks
+    std::int32_t label = 0;          // its segment in the fine pass (claim()), 0: none
   };
+  // find()'s view of the coarse pass's clusters, per coarse segment that is a cluster's root.
+  struct Clusters {
+    std::vector<PlaneSums> sums;          // of its blocks' means, one each
+    std::vector<std::uint32_t> blocks;    // its blocks with a measured pixel
+    std::vector<std::int32_t> candidate;  // its candidate (numbered from 1), 0: none
+    std::vector<std::int32_t> plane;      // its plane + 1, 0: none
+  };
+  // fillPockets' scratch.
+  struct Pockets {
+    std::vector<std::size_t> blocks;  // the blocks of one pocket
+    std::vector<std::uint8_t> mark;   // per block: 1 in a pocket, 2 inside the plane around this one
+  };
+
+  // find()'s steps, in order: the clusters' sums; the candidates among them; the candidates'
+  // flatness, alone, in touching pairs and in chains (a curved candidate is no plane); the
+  // planes; their inner blocks.
+  void sumClusters(const BlockGrid& blocks, const MergedSegments& merged);
+  void pickCandidates(const MergedSegments& merged, const Params& params);
+  void testFlatness(const BlockGrid& blocks, const MergedSegments& merged, const Tolerances& block_tolerances);
+  void testFacetPairs(const FloodGrid& block_grid);
+  void testFacetChains(const PointGrid& means, const Tolerances& block_tolerances);
+  void numberPlanes();
+  void findInnerBlocks(const BlockGrid& blocks, const FloodPass& coarse, const MergedSegments& merged,
+                       const Tolerances& measured_tolerances);
+  // Whether the surface of `own` (block bx, by's segment) goes on around the block: none of its
+  // eight neighbours straddles a depth step, and their means lie within own's band.
+  static bool surroundedBySurface(const BlockGrid& blocks, int bx, int by, const FloodCriterion& own);
+  // Whether block i's pixels lie within the noise band of the plane (normal, offset) on average.
+  static bool insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
+                         const Tolerances& measured_tolerances);
+
+  // claim()'s steps, in order: the inner blocks' pixels given to the fine pass; the planes that
+  // touch noted; the pockets filled; the floods from the inner blocks' edges.
+  std::size_t claimInnerBlocks(const BlockGrid& blocks, const PointGrid& pixels, const HoleFilling& holes,
+                               const Tolerances& fine_tolerances, float pixel_pitch, FloodPass& fine);
+  static std::size_t claimBlock(const BlockGrid& blocks, std::size_t i, const PointGrid& pixels,
+                                const HoleFilling& holes, std::int32_t label, FloodPass& fine, PlaneSums& filled);
+  void noteTouchingPlanes(const BlockGrid& blocks, FloodPass& fine) const;
   // The pockets: a few blocks that are not inside a plane (a bump, a patch where the sensor's
   // noise is larger, or where a big plane bends away from its fit) with one plane's inside all
   // around them. The plane floods into each with the plane of its inner blocks around it, which
   // follows a bend the whole plane's fit does not; the pocket's closed, so it cannot run off.
   void fillPockets(const BlockGrid& blocks, const PointGrid& pixels, const Tolerances& fine_tolerances,
                    float pixel_pitch, FloodPass& fine, SegmentationStats& stats);
-  // Whether block i's pixels lie within the noise band of the plane (normal, offset) on average.
-  static bool insideBand(const BlockGrid& blocks, std::size_t i, const Vec3& normal, float offset,
-                         const Tolerances& measured_tolerances);
+  // Its steps per pocket: the pocket's blocks from `first` on (returns the plane around it + 1;
+  // 0 none, -1 more than one or the frame's edge); the means of that plane's inner blocks around
+  // the pocket; the plane's pixels next to the pocket, where the flood starts.
+  std::int32_t collectPocket(const BlockGrid& blocks, std::size_t first);
+  PlaneSums sumAroundPocket(const BlockGrid& blocks, std::int32_t around);
+  void addPocketStarts(const BlockGrid& blocks, const PointGrid& pixels, std::int32_t label,
+                       const std::vector<std::int32_t>& claimed_by);
+  // Each plane floods on from the pixels along its inner blocks' edge (addEdgeStarts: plane k's).
+  void floodFromInnerEdges(const BlockGrid& blocks, const PointGrid& pixels, FloodPass& fine, SegmentationStats& stats);
+  void addEdgeStarts(const BlockGrid& blocks, const PointGrid& pixels, std::size_t k,
+                     const std::vector<std::int32_t>& claimed_by);
 
   std::vector<Plane> planes_;
-  std::vector<std::int32_t> inner_plane_;    // per block: the plane it is inside of + 1, 0 none
-  std::vector<std::int32_t> labels_;         // per plane: its segment in the fine pass
-  std::vector<std::size_t> starts_;          // claim()'s scratch
-  std::vector<std::size_t> pocket_;          // fillPockets' scratch: the blocks of one pocket
-  std::vector<std::uint8_t> pocket_mark_;    // fillPockets' scratch: per block, 1 in a pocket, 2 around
-  std::vector<std::int32_t> plane_of_root_;  // per coarse segment (a cluster's root): its plane + 1, 0 none
-  std::vector<PlaneSums> cluster_sums_;      // per root: the sums of its blocks' means, one each
-  std::vector<std::uint32_t> block_counts_;  // per root: its blocks
+  std::vector<std::int32_t> inner_plane_;  // per block: the plane it is inside of + 1, 0 none
+  Clusters clusters_;
+  // The candidates (clusters large enough, planes as the output has them), numbered from 1:
+  // candidate k's fit, root and views for FacetPairs and FacetChains at [k - 1], its verdicts at [k].
+  std::vector<PlaneFit> fits_;
+  std::vector<std::int32_t> candidate_root_;  // its cluster's root segment
   PlanarityTest planarity_;
-  std::vector<PlaneFit> fits_;                // per candidate (a cluster large enough, a plane)
-  std::vector<std::int32_t> candidate_root_;  // per candidate: its cluster's root segment
-  std::vector<bool> curved_, judgeable_;      // per candidate number (1-based)
+  std::vector<bool> curved_, judgeable_;
+  // candidate_of_block_: per block, its candidate (0: none), the grid FacetPairs and FacetChains read.
   std::vector<std::uint32_t> candidate_of_block_, identity_;
   std::vector<PlaneCandidate> facets_;  // FacetPairs' view of the candidates
   FacetPairs facet_pairs_;
   std::vector<const PlaneSums*> chain_sums_;  // FacetChains' view of the candidates' sums
   FacetChains facet_chains_;
+  Pockets pockets_;
+  std::vector<std::size_t> starts_;  // the pixels a flood of claim() or fillPockets() starts from
 };
 
 }  // namespace floodplane
