@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
 // findInRow and findUnlabelledNextToLabelled: the label scans' four-at-a-time searches must
-// find what a pixel-by-pixel loop finds, wherever in a block the answer lies and however the
-// row ends.
+// find what a pixel-by-pixel loop finds, wherever in a group of four the answer lies and
+// however the row ends.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -20,7 +20,7 @@ int pixelByPixel(const std::vector<std::int32_t>& row, int x, int x_end, std::in
   return x;
 }
 
-TEST(RowSearch, FindsTheFirstMatchAtEveryOffsetOfABlock) {
+TEST(RowSearch, FindsTheFirstMatchAtEveryOffsetOfAGroupOfFour) {
   for (int at = 0; at < 13; ++at) {
     std::vector<std::int32_t> row(13, 7);
     row[static_cast<std::size_t>(at)] = 3;

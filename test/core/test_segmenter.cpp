@@ -183,9 +183,9 @@ TEST(Segmenter, DecidingFourPixelsAtATimeChangesNothing) {
       Params params;
       params.min_inliers = 100;
       params.subsampling = subsampling;
-      Segmenter by_pixel(params), by_block(params);
+      Segmenter by_pixel(params), by_group(params);
       const Segmentation& expected = by_pixel.segment(scene.grid());
-      const Segmentation& actual = by_block.segment(four);
+      const Segmentation& actual = by_group.segment(four);
       EXPECT_EQ(actual.labels, expected.labels) << "noise " << noise << ", s = " << subsampling;
       ASSERT_EQ(actual.planes.size(), expected.planes.size());
       ASSERT_GE(actual.planes.size(), 3u);
