@@ -581,8 +581,8 @@ int main(int argc, char** argv) {
   if (single_file && files.size() > 1) {
     // A directory called "x.pcd" is almost surely a mistake, so this is refused.
     return floodplane::cli::usageError(app, "-o " + options.output + " names one " + file_kind +
-                                                 " file, but there are " + std::to_string(files.size()) +
-                                                 " inputs; give a directory");
+                                                " file, but there are " + std::to_string(files.size()) +
+                                                " inputs; give a directory");
   }
   if (single_file && files.size() == 1 && sameFile(files.front().path, options.output)) {
     return floodplane::cli::usageError(
@@ -603,7 +603,7 @@ int main(int argc, char** argv) {
   }
   if (options.track && options.jobs > 1 && app.get_option("--jobs")->count() > 0) {
     return floodplane::cli::usageError(app, "--track segments the frames in order on one thread; -j " +
-                                                 std::to_string(options.jobs) + " cannot apply (leave -j out)");
+                                                std::to_string(options.jobs) + " cannot apply (leave -j out)");
   }
   std::optional<pcd_segment::CameraMotions> motions;
   if (options.poses) {

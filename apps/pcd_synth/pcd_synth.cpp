@@ -544,7 +544,7 @@ std::string problemWith(Options& options) {
   if (const std::string problem = quirkInconsistency(options); !problem.empty()) return problem;
   try {
     floodplane::cli::outputKind("-o", options.output_dir, {},
-                                 "-o names a directory: pcd_synth writes several files per scene");
+                                "-o names a directory: pcd_synth writes several files per scene");
   } catch (const std::invalid_argument& error) {
     return error.what();
   }

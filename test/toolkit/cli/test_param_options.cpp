@@ -122,25 +122,25 @@ std::string asText(T value) {
 // Python's keywords are tested by test_api.py (PARAMETER_NAMES are the fields of params.h).
 TEST(ParamsTable, EveryParameterIsReachableFromEachInterface) {
   int checked = 0;
-#define FLOODPLANE_REACH(field, kind, flag, setter, help)                                         \
-  {                                                                                               \
-    SCOPED_TRACE(#field);                                                                         \
-    const auto value = valueOf(params_table::kind{});                                             \
-    CLI::App app;                                                                                 \
-    Params from_flag;                                                                             \
+#define FLOODPLANE_REACH(field, kind, flag, setter, help)                                        \
+  {                                                                                              \
+    SCOPED_TRACE(#field);                                                                        \
+    const auto value = valueOf(params_table::kind{});                                            \
+    CLI::App app;                                                                                \
+    Params from_flag;                                                                            \
     cli::addParameterOptions(app, from_flag);                                                    \
-    const std::vector<std::string> arguments = {asText(value), flag};                             \
-    std::vector<std::string> reversed = arguments;                                                \
-    app.parse(reversed);                                                                          \
-    EXPECT_TRUE(from_flag.field == value) << flag;                                                \
-    FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;                                       \
-    segmentation.setter(value);                                                                   \
-    EXPECT_TRUE(segmentation.getParams().field == value) << #setter;                              \
-    const nlohmann::ordered_json json = io::paramsJson(from_flag);                                \
-    ASSERT_TRUE(json.contains(#field));                                                           \
-    EXPECT_TRUE(json[#field] == value);                                                           \
+    const std::vector<std::string> arguments = {asText(value), flag};                            \
+    std::vector<std::string> reversed = arguments;                                               \
+    app.parse(reversed);                                                                         \
+    EXPECT_TRUE(from_flag.field == value) << flag;                                               \
+    FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;                                      \
+    segmentation.setter(value);                                                                  \
+    EXPECT_TRUE(segmentation.getParams().field == value) << #setter;                             \
+    const nlohmann::ordered_json json = io::paramsJson(from_flag);                               \
+    ASSERT_TRUE(json.contains(#field));                                                          \
+    EXPECT_TRUE(json[#field] == value);                                                          \
     EXPECT_NE(cli::inFlagTerms(std::string(#field) + " must be").find(flag), std::string::npos); \
-    ++checked;                                                                                    \
+    ++checked;                                                                                   \
   }
   FLOODPLANE_PARAMETERS(FLOODPLANE_REACH)
 #undef FLOODPLANE_REACH
