@@ -33,19 +33,19 @@ double median(std::vector<double> values) {
 }
 
 struct OmpsRun {
-  OmpsRun() { apps::configureOmps(normal_estimation, omps); }
+  OmpsRun() { baselines::configureOmps(normal_estimation, omps); }
   void operator()(const Frame& frame) {
     normal_estimation.setInputCloud(frame.cloud);
     normal_estimation.compute(*normals);
     omps.setInputCloud(frame.cloud);
     omps.setInputNormals(normals);
-    apps::segmentAndRefineAfresh(omps, outputs);
+    baselines::segmentAndRefineAfresh(omps, outputs);
     benchmark::DoNotOptimize(outputs.regions.data());
   }
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> omps;
   pcl::PointCloud<pcl::Normal>::Ptr normals{new pcl::PointCloud<pcl::Normal>};
-  apps::OmpsOutputs<pcl::PointXYZ> outputs;
+  baselines::OmpsOutputs<pcl::PointXYZ> outputs;
 };
 
 void runInterleaved(benchmark::State& state, const Frame& frame) {

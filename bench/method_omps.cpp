@@ -21,15 +21,15 @@ namespace {
 void runOmps(benchmark::State& state, const Frame& frame) {
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normals_estimation;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> omps;
-  apps::configureOmps(normals_estimation, omps);
+  baselines::configureOmps(normals_estimation, omps);
   pcl::PointCloud<pcl::Normal>::Ptr normals(new pcl::PointCloud<pcl::Normal>);
-  apps::OmpsOutputs<pcl::PointXYZ> outputs;
+  baselines::OmpsOutputs<pcl::PointXYZ> outputs;
   for (auto _ : state) {
     normals_estimation.setInputCloud(frame.cloud);
     normals_estimation.compute(*normals);
     omps.setInputCloud(frame.cloud);
     omps.setInputNormals(normals);
-    apps::segmentAndRefineAfresh(omps, outputs);
+    baselines::segmentAndRefineAfresh(omps, outputs);
     benchmark::DoNotOptimize(outputs.regions.data());
   }
   state.counters["planes"] = static_cast<double>(outputs.regions.size());
@@ -44,7 +44,7 @@ void add(const std::string& name, FrameSource frame) {
 }  // namespace
 
 std::string ompsConfiguration() {
-  using Settings = apps::OmpsSettings;
+  using Settings = baselines::OmpsSettings;
   std::ostringstream text;
   text << "PCL OMPS: IntegralImageNormalEstimation (AVERAGE_3D_GRADIENT, smoothing " << Settings::normal_smoothing_size
        << ", max depth change " << Settings::max_depth_change_factor << ") + OrganizedMultiPlaneSegmentation (angular "

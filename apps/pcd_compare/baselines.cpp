@@ -18,7 +18,7 @@ namespace pcd_compare {
 
 namespace {
 
-using Settings = floodplane::apps::OmpsSettings;
+using Settings = floodplane::baselines::OmpsSettings;
 
 // A tunable baseline: every parameter with its default, in the order they are described, and
 // the method's factory.

@@ -42,7 +42,7 @@ class OmpsMethod : public Method {
   MethodRun run(const Cloud::ConstPtr& cloud) override {
     const auto start = Clock::now();
     MethodRun result;
-    if (!floodplane::apps::normalWindowFits(cloud->width, cloud->height, values_.at("normal_smoothing_size"))) {
+    if (!floodplane::baselines::normalWindowFits(cloud->width, cloud->height, values_.at("normal_smoothing_size"))) {
       // No normal, so no plane: a valid frame too small for OMPS (PCL would write past it).
       result.labels.assign(cloud->size(), 0);
       result.total_ms = millisecondsSince(start);
@@ -56,7 +56,7 @@ class OmpsMethod : public Method {
 
     segmentation_.setInputNormals(normals);
     segmentation_.setInputCloud(cloud);
-    floodplane::apps::segmentAndRefineAfresh(segmentation_, outputs_);
+    floodplane::baselines::segmentAndRefineAfresh(segmentation_, outputs_);
     result.total_ms = millisecondsSince(start);
     result.parts_ms.emplace_back("normals", normals_ms);
     // OMPS's label cloud numbers connected components, not planes; the planes are the
@@ -74,7 +74,7 @@ class OmpsMethod : public Method {
   ParameterValues values_;  // for the description: PCL's normal estimation has no getters
   pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> normal_estimation_;
   pcl::OrganizedMultiPlaneSegmentation<pcl::PointXYZ, pcl::Normal, pcl::Label> segmentation_;
-  floodplane::apps::OmpsOutputs<pcl::PointXYZ> outputs_;
+  floodplane::baselines::OmpsOutputs<pcl::PointXYZ> outputs_;
 };
 
 }  // namespace

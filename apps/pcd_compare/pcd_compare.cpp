@@ -54,7 +54,7 @@ const std::vector<std::string> kSensors = {"kinect", "scanner", "none"};
 
 struct Options {
   std::vector<std::string> inputs;
-  floodplane::apps::DepthInputOptions depth;
+  floodplane::cli::DepthInputOptions depth;
   std::optional<floodplane::io::DepthCamera> camera;  // from `depth`, when given
   std::vector<std::string> labels;                    // --labels NAME=DIR, as given
   std::vector<LabelSource> label_sources;             // the same, parsed
@@ -297,7 +297,7 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
       if (!file.error.empty()) throw std::runtime_error(file.error);
       InputCloud input = loadInputCloud(file.path, options.camera);
       if (!options.quiet && std::find(input.valid.begin(), input.valid.end(), 1) == input.valid.end()) {
-        std::cerr << "pcd_compare: note: " << file.path << ": " << floodplane::apps::kEmptyFrameNote << std::endl;
+        std::cerr << "pcd_compare: note: " << file.path << ": " << floodplane::cli::kEmptyFrameNote << std::endl;
       }
       if (!options.sensor.empty()) input.sensor = options.sensor;
       if (!options.ground_truth_dir.empty()) {
@@ -352,7 +352,7 @@ void addOptions(CLI::App& app, Options& options) {
                  "PCD files, depth PNG files (with --intrinsics), or directories of them (their *.pcd files, and "
                  "*.png files with --intrinsics, sorted)")
       ->required();
-  floodplane::apps::addDepthInputOptions(app, options.depth);
+  floodplane::cli::addDepthInputOptions(app, options.depth);
   // One comma-separated token: without allow_extra_args(false) the option would also swallow
   // the INPUTs that follow it ("--methods omps scene.pcd").
   app.add_option("--methods", options.methods,
@@ -392,7 +392,7 @@ void addOptions(CLI::App& app, Options& options) {
                  std::string("Write <scene>.png per file into this directory: ground truth | ransac | open3d_ransac | "
                              "omps | --labels' methods | floodplane (those run), a pixel per point, segments coloured "
                              "by the ground-truth plane they overlap most, ") +
-                     floodplane::apps::kUnlabelledPixels);
+                     floodplane::cli::kUnlabelledPixels);
   // A picture of its own rather than a 3-D row under --png's: --png keeps working without a
   // display (CI, headless machines).
   app.add_option("--png3d", options.png3d_dir,
@@ -444,11 +444,11 @@ void checkPaths(Options& options) {
   for (const auto& [flag, directory] : {std::pair<std::string, const std::string&>("--png", options.png_dir),
                                         std::pair<std::string, const std::string&>("--png3d", options.png3d_dir)}) {
     if (directory.empty()) continue;
-    floodplane::apps::outputKind(flag, directory, {}, flag + " names a directory: it writes <scene>.png per input");
+    floodplane::cli::outputKind(flag, directory, {}, flag + " names a directory: it writes <scene>.png per input");
   }
   if (!options.json_file.empty() &&
-      floodplane::apps::outputKind("--json", options.json_file, {".json"}, "--json names the report's .json file") ==
-          floodplane::apps::OutputKind::directory) {
+      floodplane::cli::outputKind("--json", options.json_file, {".json"}, "--json names the report's .json file") ==
+          floodplane::cli::OutputKind::directory) {
     throw std::invalid_argument("--json " + options.json_file +
                                 " is a directory; --json names the report's .json file");
   }
@@ -456,7 +456,7 @@ void checkPaths(Options& options) {
   if (!options.ground_truth_dir.empty() && !fs::is_directory(options.ground_truth_dir)) {
     throw std::invalid_argument("--ground-truth " + options.ground_truth_dir + " is not a directory");
   }
-  options.camera = floodplane::apps::depthCamera(options.depth);
+  options.camera = floodplane::cli::depthCamera(options.depth);
 }
 
 }  // namespace
@@ -464,20 +464,20 @@ void checkPaths(Options& options) {
 int main(int argc, char** argv) {
   Options options;
   CLI::App app{kDescription, "pcd_compare"};
-  floodplane::apps::addVersionFlag(app);
+  floodplane::cli::addVersionFlag(app);
   addOptions(app, options);
-  if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
+  if (const std::optional<int> exit_code = floodplane::cli::parseCommandLine(app, argc, argv)) return *exit_code;
   if (options.resolutions) options.methods.insert(options.methods.end(), kResolutions.begin(), kResolutions.end());
   options.methods = firstOfEach(options.methods);
   try {
     checkPaths(options);
   } catch (const std::invalid_argument& error) {
-    return floodplane::apps::usageError(app, error.what());
+    return floodplane::cli::usageError(app, error.what());
   }
   const std::vector<floodplane::io::InputFile> files =
-      floodplane::apps::expandFrameInputs(options.inputs, options.camera.has_value());
-  if (const std::optional<std::string> problem = floodplane::apps::missingCamera(files, options.camera.has_value())) {
-    return floodplane::apps::usageError(app, *problem);
+      floodplane::cli::expandFrameInputs(options.inputs, options.camera.has_value());
+  if (const std::optional<std::string> problem = floodplane::cli::missingCamera(files, options.camera.has_value())) {
+    return floodplane::cli::usageError(app, *problem);
   }
   // Before any work: the comparison can take minutes, and every image would fail alike.
   if (const auto reason = options.png3d_dir.empty() ? std::nullopt : floodplane::view::renderingUnavailableReason()) {

@@ -70,7 +70,7 @@ struct Options {
   std::vector<std::string> inputs;
   std::string output;
   floodplane::Params params;
-  floodplane::apps::DepthInputOptions depth;
+  floodplane::cli::DepthInputOptions depth;
   std::optional<floodplane::io::DepthCamera> camera;  ///< from `depth`, when given
   bool ascii = false;
   bool png = false;
@@ -109,8 +109,8 @@ void addInputOutputOptions(CLI::App& app, Options& options) {
 }
 
 void addOutputFlags(CLI::App& app, Options& options) {
-  floodplane::apps::addAsciiFlag(app, options.ascii, "the label PCD");
-  app.add_flag("--png", options.png, "Also write <name>.labels.png, " + floodplane::apps::labelImageHelp());
+  floodplane::cli::addAsciiFlag(app, options.ascii, "the label PCD");
+  app.add_flag("--png", options.png, "Also write <name>.labels.png, " + floodplane::cli::labelImageHelp());
   app.add_flag("--overlay", options.overlay,
                "Also write <name>.overlay.png: the input's own colours (its rgb field) with each plane's colour "
                "blended half over its pixels, white where there is no point. An input without colour (no rgb "
@@ -329,7 +329,7 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
                                floodplane::io::labelImage(labels, has_point, points->width, points->height)));
   }
   if (std::find(has_point.begin(), has_point.end(), 1) == has_point.end()) {
-    result.notes.push_back(floodplane::apps::kEmptyFrameNote);
+    result.notes.push_back(floodplane::cli::kEmptyFrameNote);
   }
   if (options.overlay) {
     if (const std::optional<floodplane::io::RgbImage> colours = floodplane::io::frameColours(frame)) {
@@ -506,10 +506,10 @@ bool writeTrackSummary(const pcd_segment::TrackSummary& summary, const Options& 
 // the exit code when the program is done.
 std::optional<int> checkViewOptions(CLI::App& app, const Options& options, std::size_t inputs) {
   if (options.view && inputs > 1) {
-    return floodplane::apps::usageError(app, "--view shows one input, but there are " + std::to_string(inputs));
+    return floodplane::cli::usageError(app, "--view shows one input, but there are " + std::to_string(inputs));
   }
   if (options.snapshot && !options.snapshot->empty() && inputs > 1) {
-    return floodplane::apps::usageError(
+    return floodplane::cli::usageError(
         app, "--snapshot " + *options.snapshot + " names one image, but there are " + std::to_string(inputs) +
                  " inputs; give --snapshot without a file name for <name>.snapshot.png in the output directory");
   }
@@ -537,73 +537,73 @@ pcd_segment::CameraMotions readPoses(const std::string& path, std::size_t inputs
 
 int main(int argc, char** argv) {
   // First, before any thread starts (see there): Ctrl-C leaves no temporary file behind.
-  floodplane::apps::removeTemporariesOnInterrupt("pcd_segment");
+  floodplane::cli::removeTemporariesOnInterrupt("pcd_segment");
   // Only pcd_segment's own messages: PCL's reader logs its failures, which are reported here.
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
 
   Options options;
   CLI::App app{kDescription, "pcd_segment"};
-  floodplane::apps::addVersionFlag(app);
+  floodplane::cli::addVersionFlag(app);
   addInputOutputOptions(app, options);
-  floodplane::apps::addParameterOptions(app, options.params);
-  floodplane::apps::addDepthInputOptions(app, options.depth);
+  floodplane::cli::addParameterOptions(app, options.params);
+  floodplane::cli::addDepthInputOptions(app, options.depth);
   addOutputFlags(app, options);
   addUpOptions(app, options, app.get_option("--json"));
   addViewOptions(app, options);
-  if (const std::optional<int> exit_code = floodplane::apps::parseCommandLine(app, argc, argv)) return *exit_code;
+  if (const std::optional<int> exit_code = floodplane::cli::parseCommandLine(app, argc, argv)) return *exit_code;
 
   try {
     // The library's own check of the values, before any work; its message names its fields.
     Segmentation().setParams(options.params);
   } catch (const std::invalid_argument& e) {
-    return floodplane::apps::usageError(app, floodplane::apps::inFlagTerms(e.what()));
+    return floodplane::cli::usageError(app, floodplane::cli::inFlagTerms(e.what()));
   }
   try {
-    options.camera = floodplane::apps::depthCamera(options.depth);
+    options.camera = floodplane::cli::depthCamera(options.depth);
     options.up_direction = upDirection(options);
   } catch (const std::invalid_argument& e) {
-    return floodplane::apps::usageError(app, e.what());
+    return floodplane::cli::usageError(app, e.what());
   }
 
   const std::vector<floodplane::io::InputFile> files =
-      floodplane::apps::expandFrameInputs(options.inputs, options.camera.has_value());
-  if (const std::optional<std::string> problem = floodplane::apps::missingCamera(files, options.camera.has_value())) {
-    return floodplane::apps::usageError(app, *problem);
+      floodplane::cli::expandFrameInputs(options.inputs, options.camera.has_value());
+  if (const std::optional<std::string> problem = floodplane::cli::missingCamera(files, options.camera.has_value())) {
+    return floodplane::cli::usageError(app, *problem);
   }
   bool single_file = false;
   try {
-    single_file = floodplane::apps::outputKind("-o", options.output, {".pcd", ".png"}, kOutputMeaning) ==
-                  floodplane::apps::OutputKind::file;
+    single_file = floodplane::cli::outputKind("-o", options.output, {".pcd", ".png"}, kOutputMeaning) ==
+                  floodplane::cli::OutputKind::file;
   } catch (const std::invalid_argument& e) {
-    return floodplane::apps::usageError(app, e.what());
+    return floodplane::cli::usageError(app, e.what());
   }
   const std::string file_kind = pcd_segment::namesLabelImage(options.output) ? ".png" : ".pcd";
   if (single_file && files.size() > 1) {
     // A directory called "x.pcd" is almost surely a mistake, so this is refused.
-    return floodplane::apps::usageError(app, "-o " + options.output + " names one " + file_kind +
-                                                 " file, but there are " + std::to_string(files.size()) +
-                                                 " inputs; give a directory");
+    return floodplane::cli::usageError(app, "-o " + options.output + " names one " + file_kind +
+                                                " file, but there are " + std::to_string(files.size()) +
+                                                " inputs; give a directory");
   }
   if (single_file && files.size() == 1 && sameFile(files.front().path, options.output)) {
-    return floodplane::apps::usageError(
+    return floodplane::cli::usageError(
         app, "-o " + options.output + " is the input itself; give the " + file_kind + " file another name");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
   if (options.overlay && std::all_of(files.begin(), files.end(), [](const floodplane::io::InputFile& file) {
         return floodplane::io::isDepthImagePath(file.path);
       })) {
-    return floodplane::apps::usageError(
+    return floodplane::cli::usageError(
         app, "--overlay lays the labels over the input's colours, and depth images have none");
   }
   if (options.cold_starts && !options.track) {
-    return floodplane::apps::usageError(app, "--cold-starts turns off the head start of --track: it needs --track");
+    return floodplane::cli::usageError(app, "--cold-starts turns off the head start of --track: it needs --track");
   }
   if (options.poses && !options.track) {
-    return floodplane::apps::usageError(app, "--poses gives the camera motion to the tracker: it needs --track");
+    return floodplane::cli::usageError(app, "--poses gives the camera motion to the tracker: it needs --track");
   }
   if (options.track && options.jobs > 1 && app.get_option("--jobs")->count() > 0) {
-    return floodplane::apps::usageError(app, "--track segments the frames in order on one thread; -j " +
-                                                 std::to_string(options.jobs) + " cannot apply (leave -j out)");
+    return floodplane::cli::usageError(app, "--track segments the frames in order on one thread; -j " +
+                                                std::to_string(options.jobs) + " cannot apply (leave -j out)");
   }
   std::optional<pcd_segment::CameraMotions> motions;
   if (options.poses) {

@@ -499,10 +499,10 @@ void addSceneOptions(CLI::App& app, Options& options) {
 
 // What is written besides each frame's PCD and ground truth, and how.
 void addOutputFlags(CLI::App& app, Options& options) {
-  floodplane::apps::addAsciiFlag(app, options.ascii, "the PCDs");
+  floodplane::cli::addAsciiFlag(app, options.ascii, "the PCDs");
   app.add_flag("--png", options.png,
                "Also write <scene>.<sensor>.labels.png, the ground truth as pcd_segment --png draws labels, " +
-                   floodplane::apps::labelImageHelp());
+                   floodplane::cli::labelImageHelp());
   app.add_flag("--write-scene", options.write_scene,
                "With --random, also save each generated scene as a scene file: <scene>.room.json, "
                "<scene>.blocks.json (<scene>.boards.json with --family boards)");
@@ -543,8 +543,8 @@ std::string problemWith(Options& options) {
   }
   if (const std::string problem = quirkInconsistency(options); !problem.empty()) return problem;
   try {
-    floodplane::apps::outputKind("-o", options.output_dir, {},
-                                 "-o names a directory: pcd_synth writes several files per scene");
+    floodplane::cli::outputKind("-o", options.output_dir, {},
+                                "-o names a directory: pcd_synth writes several files per scene");
   } catch (const std::invalid_argument& error) {
     return error.what();
   }
@@ -570,13 +570,13 @@ int reportFailures(const std::vector<std::string>& failed, const Options& option
 int main(int argc, char** argv) {
   Options options;
   CLI::App app{kDescription, "pcd_synth"};
-  floodplane::apps::addVersionFlag(app);
+  floodplane::cli::addVersionFlag(app);
   addSceneOptions(app, options);
   addOutputFlags(app, options);
   addQuirkOptions(app, options);
-  if (const std::optional<int> done = floodplane::apps::parseCommandLine(app, argc, argv)) return *done;
+  if (const std::optional<int> done = floodplane::cli::parseCommandLine(app, argc, argv)) return *done;
   if (const std::string problem = problemWith(options); !problem.empty()) {
-    return floodplane::apps::usageError(app, problem);
+    return floodplane::cli::usageError(app, problem);
   }
   try {
     fs::create_directories(options.output_dir);

@@ -16,7 +16,7 @@
 #include <memory>
 #include <vector>
 
-namespace floodplane::apps {
+namespace floodplane::baselines {
 
 /// The settings of the paper's Sec. IV (PCL's organized segmentation demo).
 struct OmpsSettings {
@@ -78,4 +78,4 @@ void segmentAndRefineAfresh(Omps& omps, OmpsOutputs<PointT>& outputs) {
                         outputs.boundaries);
 }
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::baselines

@@ -8,7 +8,7 @@
 
 #include "floodplane/version.h"
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 namespace {
 
 // CLI11's failure message, one line: CLI11's own default adds a second ("Run with --help for
@@ -49,4 +49,4 @@ int usageError(CLI::App& app, const std::string& message) {
   return kUsageExitCode;
 }
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

@@ -13,7 +13,7 @@ namespace CLI {
 class App;
 }
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 
 /// The exit code of a usage error: a command line that does not parse, or options refused
 /// before any work.
@@ -52,4 +52,4 @@ void addAsciiFlag(CLI::App& app, bool& ascii, const std::string& files);
 /// the library rejects, options that contradict each other); `message` names the flag.
 int usageError(CLI::App& app, const std::string& message);
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

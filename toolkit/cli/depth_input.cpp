@@ -8,7 +8,7 @@
 
 #include "io/input_frame.h"
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 namespace {
 
 constexpr const char* kIntrinsicsNeeded = "--intrinsics fx,fy,cx,cy (and --depth-scale unless in millimetres)";
@@ -60,4 +60,4 @@ std::optional<std::string> missingCamera(const std::vector<io::InputFile>& files
   return std::nullopt;
 }
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

@@ -16,7 +16,7 @@ namespace CLI {
 class App;
 }
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 
 /// The depth camera as the command line gives it.
 struct DepthInputOptions {
@@ -40,4 +40,4 @@ std::vector<io::InputFile> expandFrameInputs(const std::vector<std::string>& inp
 /// or a directory of them, while `with_camera` is false, said once before any work.
 std::optional<std::string> missingCamera(const std::vector<io::InputFile>& files, bool with_camera);
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

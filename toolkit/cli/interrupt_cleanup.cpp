@@ -10,7 +10,7 @@
 
 #include "io/atomic_file.h"
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 namespace {
 
 [[noreturn]] void endBy(int signal_number, const std::string& program) {
@@ -54,4 +54,4 @@ void removeTemporariesOnInterrupt(const std::string& program) {
   }).detach();
 }
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 
 /// Makes SIGINT and SIGTERM end the program cleanly: the temporaries of the atomic writes under
 /// way are removed and no output is renamed into place after that (io::abandonAtomicWrites),
@@ -20,4 +20,4 @@ namespace floodplane::apps {
 /// a background job of a non-interactive shell) stays ignored.
 void removeTemporariesOnInterrupt(const std::string& program);
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

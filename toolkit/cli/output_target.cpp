@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -35,4 +35,4 @@ OutputKind outputKind(const std::string& flag, const std::string& output,
                               "; end a new directory's name with / if it has a dot");
 }
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 
 enum class OutputKind { file, directory };
 
@@ -23,4 +23,4 @@ enum class OutputKind { file, directory };
 OutputKind outputKind(const std::string& flag, const std::string& output,
                       const std::vector<std::string>& file_extensions, const std::string& meaning);
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

@@ -9,7 +9,7 @@
 
 #include "params/params_table.h"
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 namespace {
 
 // Every parameter: its Params field, its flag and its FloodFillPlaneSegmentation setter.
@@ -77,4 +77,4 @@ std::string inFlagTerms(const std::string& message) {
   return text;
 }
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

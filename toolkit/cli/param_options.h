@@ -14,7 +14,7 @@ namespace CLI {
 class App;
 }
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 
 /// Adds an option per field of `params` (--distance-threshold, --seed-size, ...), each writing
 /// into it; the fields the library derives from each frame stay unset unless given.
@@ -26,4 +26,4 @@ void addParameterOptions(CLI::App& app, Params& params);
 /// "--subsample must be 1, 2, 4 or 8, got 3".
 std::string inFlagTerms(const std::string& message);
 
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

@@ -11,7 +11,7 @@
 
 #include "cli/cli.h"
 
-namespace floodplane::apps {
+namespace floodplane::cli {
 namespace {
 
 TEST(Cli, AsciiFlagSaysWhichFilesItWritesAsText) {
@@ -32,4 +32,4 @@ TEST(Cli, LabelImageHelpSaysHowPlanesAndUnlabelledPixelsAreDrawn) {
 }
 
 }  // namespace
-}  // namespace floodplane::apps
+}  // namespace floodplane::cli

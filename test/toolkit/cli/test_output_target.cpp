@@ -15,8 +15,8 @@
 namespace floodplane::test {
 namespace {
 
-using apps::OutputKind;
-using apps::outputKind;
+using cli::OutputKind;
+using cli::outputKind;
 
 class OutputTarget : public AppTest {};
 

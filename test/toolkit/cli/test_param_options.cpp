@@ -56,9 +56,9 @@ TEST(InFlagTerms, NamesTheFlagOfEveryFieldParamsProblemNames) {
     Params params;
     bad.spoil(params);
     ASSERT_FALSE(params.problem().empty());
-    expectInFlagTerms(apps::inFlagTerms(params.problem()), bad.flag);
+    expectInFlagTerms(cli::inFlagTerms(params.problem()), bad.flag);
   }
-  EXPECT_EQ(apps::inFlagTerms(Params().problem()), "");
+  EXPECT_EQ(cli::inFlagTerms(Params().problem()), "");
 }
 
 TEST(InFlagTerms, NamesTheFlagInPlaceOfTheSetterThatRefusedTheValue) {
@@ -70,26 +70,26 @@ TEST(InFlagTerms, NamesTheFlagInPlaceOfTheSetterThatRefusedTheValue) {
       FloodFillPlaneSegmentation<pcl::PointXYZ>().setParams(params);
       ADD_FAILURE() << "setParams took a bad value";
     } catch (const std::invalid_argument& error) {
-      expectInFlagTerms(apps::inFlagTerms(error.what()), bad.flag);
+      expectInFlagTerms(cli::inFlagTerms(error.what()), bad.flag);
     }
   }
   try {
     FloodFillPlaneSegmentation<pcl::PointXYZ>().setSubsampling(3);
     ADD_FAILURE() << "setSubsampling took 3";
   } catch (const std::invalid_argument& error) {
-    EXPECT_EQ(apps::inFlagTerms(error.what()), "--subsample must be 1, 2, 4 or 8, got 3");
+    EXPECT_EQ(cli::inFlagTerms(error.what()), "--subsample must be 1, 2, 4 or 8, got 3");
   }
 }
 
 TEST(InFlagTerms, LeavesWordsThatOnlyContainAFieldsNameAlone) {
-  EXPECT_EQ(apps::inFlagTerms("subsamplings and my_seed_size stay"), "subsamplings and my_seed_size stay");
+  EXPECT_EQ(cli::inFlagTerms("subsamplings and my_seed_size stay"), "subsamplings and my_seed_size stay");
 }
 
 // The mapping's flags are the options' names: every flag a message can name is an option.
 TEST(AddParameterOptions, AddsAnOptionForEveryFlagTheMessagesName) {
   CLI::App app;
   Params params;
-  apps::addParameterOptions(app, params);
+  cli::addParameterOptions(app, params);
   for (const BadValue& bad : badValues()) EXPECT_NO_THROW(app.get_option(bad.flag)) << bad.flag;
   EXPECT_NO_THROW(app.get_option("--min-inliers"));
 }
@@ -122,25 +122,25 @@ std::string asText(T value) {
 // Python's keywords are tested by test_api.py (PARAMETER_NAMES are the fields of params.h).
 TEST(ParamsTable, EveryParameterIsReachableFromEachInterface) {
   int checked = 0;
-#define FLOODPLANE_REACH(field, kind, flag, setter, help)                                         \
-  {                                                                                               \
-    SCOPED_TRACE(#field);                                                                         \
-    const auto value = valueOf(params_table::kind{});                                             \
-    CLI::App app;                                                                                 \
-    Params from_flag;                                                                             \
-    apps::addParameterOptions(app, from_flag);                                                    \
-    const std::vector<std::string> arguments = {asText(value), flag};                             \
-    std::vector<std::string> reversed = arguments;                                                \
-    app.parse(reversed);                                                                          \
-    EXPECT_TRUE(from_flag.field == value) << flag;                                                \
-    FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;                                       \
-    segmentation.setter(value);                                                                   \
-    EXPECT_TRUE(segmentation.getParams().field == value) << #setter;                              \
-    const nlohmann::ordered_json json = io::paramsJson(from_flag);                                \
-    ASSERT_TRUE(json.contains(#field));                                                           \
-    EXPECT_TRUE(json[#field] == value);                                                           \
-    EXPECT_NE(apps::inFlagTerms(std::string(#field) + " must be").find(flag), std::string::npos); \
-    ++checked;                                                                                    \
+#define FLOODPLANE_REACH(field, kind, flag, setter, help)                                        \
+  {                                                                                              \
+    SCOPED_TRACE(#field);                                                                        \
+    const auto value = valueOf(params_table::kind{});                                            \
+    CLI::App app;                                                                                \
+    Params from_flag;                                                                            \
+    cli::addParameterOptions(app, from_flag);                                                    \
+    const std::vector<std::string> arguments = {asText(value), flag};                            \
+    std::vector<std::string> reversed = arguments;                                               \
+    app.parse(reversed);                                                                         \
+    EXPECT_TRUE(from_flag.field == value) << flag;                                               \
+    FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;                                      \
+    segmentation.setter(value);                                                                  \
+    EXPECT_TRUE(segmentation.getParams().field == value) << #setter;                             \
+    const nlohmann::ordered_json json = io::paramsJson(from_flag);                               \
+    ASSERT_TRUE(json.contains(#field));                                                          \
+    EXPECT_TRUE(json[#field] == value);                                                          \
+    EXPECT_NE(cli::inFlagTerms(std::string(#field) + " must be").find(flag), std::string::npos); \
+    ++checked;                                                                                   \
   }
   FLOODPLANE_PARAMETERS(FLOODPLANE_REACH)
 #undef FLOODPLANE_REACH
