@@ -89,7 +89,7 @@ class CoarsePlanes {
   std::vector<PlaneFit> fits_;                // per candidate (a cluster large enough, a plane)
   std::vector<std::int32_t> candidate_root_;  // per candidate: its cluster's root segment
   std::vector<bool> curved_, judgeable_;      // per candidate number (1-based)
-  std::vector<std::uint32_t> candidate_of_block_, identity_;
+  std::vector<std::uint32_t> candidate_of_block_;
   std::vector<PlaneCandidate> facets_;  // FacetPairs' view of the candidates
   FacetPairs facet_pairs_;
   std::vector<const PlaneSums*> chain_sums_;  // FacetChains' view of the candidates' sums
