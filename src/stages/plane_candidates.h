@@ -66,7 +66,7 @@ struct PlaneCandidate {
 /// image: the one owner of the plane numbers. Every renumbering (sortBySize, regroup, drop) is
 /// recorded here, against the image, so that whoever reads the labels (labels()) or writes
 /// them (writableImage(), forEachWritableRow()) gets them in the current numbers, whatever
-/// came before: no stage needs to know whether another renumbered the planes first. A
+/// came before: no stage needs to know whether another changed the numbers first. A
 /// renumbering costs no pass over the image: the image is rewritten at most once per write
 /// request, and then only if the numbers changed since it was written.
 ///
