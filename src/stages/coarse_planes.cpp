@@ -109,9 +109,7 @@ void CoarsePlanes::testFacetPairs(const FloodGrid& block_grid) {
   facets_.resize(candidates);
   for (std::size_t k = 0; k < candidates; ++k)
     facets_[k].criterion = planeCriterion(fits_[k], block_tolerances, block_grid.pitch);
-  identity_.resize(candidates + 1);
-  for (std::uint32_t k = 0; k <= candidates; ++k) identity_[k] = k;
-  facet_pairs_.find(block_grid.points, {candidate_of_block_.data(), identity_.data()}, facets_, fits_, judgeable_);
+  facet_pairs_.find(block_grid.points, PlainLabels{candidate_of_block_.data()}, facets_, fits_, judgeable_);
   for (const auto& [k, l] : facet_pairs_.pairs()) {
     if (curved_[k] && curved_[l]) continue;
     PlaneSums joint = clusters_.sums[static_cast<std::size_t>(candidate_root_[k - 1])];

@@ -133,7 +133,7 @@ class CoarsePlanes {
   PlanarityTest planarity_;
   std::vector<bool> curved_, judgeable_;
   // candidate_of_block_: per block, its candidate (0: none), the grid FacetPairs and FacetChains read.
-  std::vector<std::uint32_t> candidate_of_block_, identity_;
+  std::vector<std::uint32_t> candidate_of_block_;
   std::vector<PlaneCandidate> facets_;  // FacetPairs' view of the candidates
   FacetPairs facet_pairs_;
   std::vector<const PlaneSums*> chain_sums_;  // FacetChains' view of the candidates' sums

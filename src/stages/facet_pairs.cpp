@@ -11,7 +11,8 @@
 
 namespace floodplane {
 
-void FacetPairs::find(const PointGrid& grid, const RenumberedLabels& labels, const std::vector<PlaneCandidate>& planes,
+template <class Labels>
+void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::vector<PlaneCandidate>& planes,
                       const std::vector<PlaneFit>& fits, const std::vector<bool>& eligible) {
   touching_.clear();
   pairs_.clear();
@@ -59,5 +60,10 @@ void FacetPairs::find(const PointGrid& grid, const RenumberedLabels& labels, con
     i = j;
   }
 }
+
+template void FacetPairs::find(const PointGrid&, const PlainLabels&, const std::vector<PlaneCandidate>&,
+                               const std::vector<PlaneFit>&, const std::vector<bool>&);
+template void FacetPairs::find(const PointGrid&, const CurrentLabels&, const std::vector<PlaneCandidate>&,
+                               const std::vector<PlaneFit>&, const std::vector<bool>&);
 
 }  // namespace floodplane

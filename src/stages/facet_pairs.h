@@ -27,6 +27,13 @@ namespace floodplane {
 /// criterion: a facet in front of a wall only touches it in the image), and whose normals are
 /// at most kMaximumAngle apart (a facet that turns further than that from its neighbour is not
 /// within one noise band of its own plane: that is a crease).
+/// A label image whose numbers are the planes' (as FacetPairs reads the coarse pass's
+/// candidates); the planes' own image is read through CurrentLabels.
+struct PlainLabels {
+  const std::uint32_t* image = nullptr;
+  std::uint32_t operator[](std::size_t i) const { return image[i]; }
+};
+
 class FacetPairs {
  public:
   static constexpr double kMaximumAngle = 1.0;  // rad (about 57 degrees)
@@ -35,7 +42,10 @@ class FacetPairs {
   /// The pairs (k, l), k < l, of planes 1..fits.size() (fits[k - 1] and planes[k - 1] are
   /// plane k) in `labels` of the points `grid`, both planes `eligible` (indexed by plane
   /// number: those with a sample large enough to judge that are not dropped already).
-  void find(const PointGrid& grid, const RenumberedLabels& labels, const std::vector<PlaneCandidate>& planes,
+  /// `Labels` is PlainLabels or CurrentLabels: labels[i] is pixel i's plane, and labels.image
+  /// the image whose borders are scanned.
+  template <class Labels>
+  void find(const PointGrid& grid, const Labels& labels, const std::vector<PlaneCandidate>& planes,
             const std::vector<PlaneFit>& fits, const std::vector<bool>& eligible);
   const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
 

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 
-#include "util/row_search.h"
-
 namespace floodplane {
 
 namespace {
@@ -15,13 +13,12 @@ constexpr float kBehindTolerances = 2.0f;
 
 }  // namespace
 
-void OcclusionMerging::findBoxes(int width, int height, const RenumberedLabels& labels, std::size_t planes) {
+void OcclusionMerging::findBoxes(int width, int height, const CurrentLabels& labels, std::size_t planes) {
   boxes_.assign(planes, Box{width, height, -1, -1});
   // A row is mostly long runs of one label: one box update per run.
   for (int y = 0; y < height; ++y) {
-    const std::uint32_t* row = labels.image + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-    forEachRunInRow(row, 0, width - 1, [&](std::uint32_t image_label, int begin, int end) {
-      const std::uint32_t k = labels.number[image_label];
+    const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
+    labels.forEachRunInRow(row, 0, width - 1, [&](std::uint32_t k, int begin, int end) {
       if (k == 0) return;
       Box& box = boxes_[k - 1];
       box.x_min = std::min(box.x_min, begin);
@@ -32,7 +29,7 @@ void OcclusionMerging::findBoxes(int width, int height, const RenumberedLabels& 
   }
 }
 
-bool OcclusionMerging::occludedBetween(const PointGrid& full, const RenumberedLabels& labels, std::uint32_t a,
+bool OcclusionMerging::occludedBetween(const PointGrid& full, const CurrentLabels& labels, std::uint32_t a,
                                        std::uint32_t b, const FloodCriterion& plane) const {
   const Box& box_a = boxes_[a - 1];
   const Box& box_b = boxes_[b - 1];
@@ -81,11 +78,12 @@ bool OcclusionMerging::occludedBetween(const PointGrid& full, const RenumberedLa
   return gaps > 0;
 }
 
-bool OcclusionMerging::run(const PointGrid& full, const RenumberedLabels& labels, PlaneCandidates& planes,
-                           const MergeCriterion& criterion, const Tolerances& tolerances, float angular_pitch) {
+bool OcclusionMerging::run(const PointGrid& full, PlaneCandidates& planes, const MergeCriterion& criterion,
+                           const Tolerances& tolerances, float angular_pitch) {
   std::vector<PlaneCandidate>& list = planes.list();
   const std::size_t n = list.size();
   if (n < 2) return false;
+  const CurrentLabels labels = planes.labels();
   fits_.clear();
   for (const PlaneCandidate& candidate : list) fits_.push_back(candidate.sums.fit());
   bool boxes_found = false;

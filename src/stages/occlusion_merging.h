@@ -24,20 +24,20 @@ namespace floodplane {
 /// shared row or column have no pixels between them to judge and stay apart.
 class OcclusionMerging {
  public:
-  /// Merges such candidates of `planes` (labelled in `labels` by number, 1-based); returns
-  /// whether any merged. Only when it did does `planes.remap()` map every old number to its
-  /// new one (with fewer than two planes it is left as the previous stage set it).
-  bool run(const PointGrid& full, const RenumberedLabels& labels, PlaneCandidates& planes,
-           const MergeCriterion& criterion, const Tolerances& tolerances, float angular_pitch);
+  /// Merges such candidates of `planes` (on the grid `full`); returns whether any merged. Only
+  /// when it did does `planes.remap()` map every old number to its new one (with fewer than
+  /// two planes it is left as the previous stage set it).
+  bool run(const PointGrid& full, PlaneCandidates& planes, const MergeCriterion& criterion,
+           const Tolerances& tolerances, float angular_pitch);
 
  private:
   struct Box {
     int x_min, y_min, x_max, y_max;
   };
   // The pixel boxes of the planes (box k - 1 of plane k).
-  void findBoxes(int width, int height, const RenumberedLabels& labels, std::size_t planes);
+  void findBoxes(int width, int height, const CurrentLabels& labels, std::size_t planes);
   // Whether the pixels between a and b along their shared rows and columns allow a merge.
-  bool occludedBetween(const PointGrid& full, const RenumberedLabels& labels, std::uint32_t a, std::uint32_t b,
+  bool occludedBetween(const PointGrid& full, const CurrentLabels& labels, std::uint32_t a, std::uint32_t b,
                        const FloodCriterion& plane) const;
 
   std::vector<Box> boxes_;

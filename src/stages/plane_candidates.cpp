@@ -25,7 +25,18 @@ bool acceptablePlane(const PlaneFit& fit, const Params& params) {
 
 // ---- PlaneCandidates -------------------------------------------------------------------
 
+void PlaneCandidates::clear() {
+  candidates_.clear();
+  number_.clear();
+}
+
 bool PlaneCandidates::sortBySize(std::uint32_t min_inliers, const Params* recheck) {
+  const bool changed = sortCandidates(min_inliers, recheck);
+  recordRenumbering();
+  return changed;
+}
+
+bool PlaneCandidates::sortCandidates(std::uint32_t min_inliers, const Params* recheck) {
   order_.resize(candidates_.size());
   std::iota(order_.begin(), order_.end(), 0);
   std::stable_sort(order_.begin(), order_.end(),
@@ -67,14 +78,16 @@ bool PlaneCandidates::regroup(const std::vector<std::uint32_t>& group) {
   }
   const bool merged = kept_.size() != n;
   candidates_.swap(kept_);
-  if (!merged) return false;
-  // A merged plane may have outgrown the ones before it: number by size again, through the
-  // same remap, so that the labels are renumbered once.
-  std::vector<std::uint32_t> grouped = remap_;
-  sortBySize(0, nullptr);
-  for (std::size_t k = 1; k <= n; ++k) grouped[k] = remap_[grouped[k]];
-  remap_.swap(grouped);
-  return true;
+  if (merged) {
+    // A merged plane may have outgrown the ones before it: number by size again, in the same
+    // remap, which is then one renumbering.
+    std::vector<std::uint32_t> grouped = remap_;
+    sortCandidates(0, nullptr);
+    for (std::size_t k = 1; k <= n; ++k) grouped[k] = remap_[grouped[k]];
+    remap_.swap(grouped);
+  }
+  recordRenumbering();
+  return merged;
 }
 
 bool PlaneCandidates::drop(const std::vector<bool>& drop) {
@@ -87,39 +100,56 @@ bool PlaneCandidates::drop(const std::vector<bool>& drop) {
   }
   const bool dropped = kept_.size() != candidates_.size();
   candidates_.swap(kept_);
+  recordRenumbering();
   return dropped;
 }
 
-void PlaneCandidates::forgetFirstPixels() {
-  for (PlaneCandidate& candidate : candidates_) candidate.first_pixel = kNoPixel;
-}
+// ---- the label image -------------------------------------------------------------------
 
-void PlaneCandidates::renumberPixels(std::uint32_t* labels, std::size_t begin, std::size_t end) {
-  forEachRun(labels, begin, end, [&](std::uint32_t old_label, std::size_t first, std::size_t last) {
-    const std::uint32_t k = remap_[old_label];
-    if (k != old_label) std::fill(labels + first, labels + last, k);
-    if (k != 0 && candidates_[k - 1].first_pixel == kNoPixel) candidates_[k - 1].first_pixel = first;
-  });
-}
-
-void PlaneCandidates::deferRenumbering(bool pending) {
-  if (pending) {
-    number_ = remap_;
-  } else {
-    number_.resize(candidates_.size() + 1);
-    std::iota(number_.begin(), number_.end(), 0u);
-  }
-}
-
-void PlaneCandidates::composeRenumbering() {
+void PlaneCandidates::recordRenumbering() {
   for (std::uint32_t& number : number_) number = remap_[number];
 }
 
-void PlaneCandidates::applyRenumbering(std::vector<std::uint32_t>& image) const {
-  std::uint32_t* labels = image.data();
-  forEachRun(labels, 0, image.size(), [&](std::uint32_t old_label, std::size_t first, std::size_t last) {
-    if (number_[old_label] != old_label) std::fill(labels + first, labels + last, number_[old_label]);
+std::uint32_t* PlaneCandidates::newImage(int width, int height) {
+  width_ = width;
+  height_ = height;
+  image_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  imageUpToDate();
+  return image_.data();
+}
+
+bool PlaneCandidates::imageOutOfDate() const {
+  for (std::size_t k = 0; k < number_.size(); ++k)
+    if (number_[k] != k) return true;
+  return false;
+}
+
+void PlaneCandidates::imageUpToDate() {
+  number_.resize(candidates_.size() + 1);
+  std::iota(number_.begin(), number_.end(), 0u);
+}
+
+void PlaneCandidates::renumberPixels(std::size_t begin, std::size_t end) {
+  std::uint32_t* labels = image_.data();
+  forEachRun(labels, begin, end, [&](std::uint32_t old_label, std::size_t first, std::size_t last) {
+    const std::uint32_t k = number_[old_label];
+    if (k != old_label) std::fill(labels + first, labels + last, k);
   });
+}
+
+std::uint32_t* PlaneCandidates::writableImage() {
+  if (imageOutOfDate()) {
+    renumberPixels(0, image_.size());
+    imageUpToDate();
+  }
+  return image_.data();
+}
+
+void PlaneCandidates::releaseImage(std::vector<std::uint32_t>& out) {
+  writableImage();
+  out.swap(image_);
+  number_.clear();
+  width_ = height_ = 0;
 }
 
 }  // namespace floodplane

@@ -13,31 +13,22 @@ namespace {
 
 class Refiner {
  public:
-  Refiner(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels, PlaneCandidates& planes,
-          std::vector<std::size_t>& queue)
-      : full_(full),
-        holes_(holes),
-        labels_(labels.data()),
-        planes_(planes),
-        queue_(queue),
-        width_(full.width),
-        height_(full.height) {}
+  Refiner(const PointGrid& full, const HoleFilling& holes, PlaneCandidates& planes, std::vector<std::size_t>& queue)
+      : full_(full), holes_(holes), planes_(planes), queue_(queue), width_(full.width), height_(full.height) {}
 
   // Seeds of the growth: unlabelled pixels next to a plane they fit, the best plane first.
-  void seedAlongPlaneBorders(bool renumber_first) {
-    if (renumber_first) {
-      planes_.forgetFirstPixels();
-      renumberRow(0);
-    }
+  // The image is written in the planes' current numbers on the way, if they changed since it
+  // was written: one pass over it.
+  void seedAlongPlaneBorders() {
     queue_.clear();
-    for (int y = 0; y < height_; ++y) {
+    planes_.forEachWritableRow([&](std::uint32_t* labels, int y) {
+      labels_ = labels;
       // The unlabelled pixels are scattered along a row, too far apart for the hardware to
       // see a stream: the next row's points are requested while this one is worked on.
       if (y + 1 < height_) {
         const std::size_t next = static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(width_);
         prefetchRange(full_.point(next), full_.point(next + static_cast<std::size_t>(width_) - 1) + 3);
       }
-      if (renumber_first && y + 1 < height_) renumberRow(y + 1);
       const std::uint32_t* row = labels_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
       const std::uint32_t* above = y > 0 ? row - width_ : row;
       const std::uint32_t* below = y + 1 < height_ ? row + width_ : row;
@@ -47,11 +38,12 @@ class Refiner {
            x = findUnlabelledNextToLabelled(row, above, below, x + 1, width_)) {
         seedPixel(x, y);
       }
-    }
+    });
   }
 
   // Breadth-first growth from the seeds.
   void grow() {
+    labels_ = planes_.writableImage();
     const std::size_t width = static_cast<std::size_t>(width_);
     for (std::size_t head = 0; head < queue_.size(); ++head) {
       const std::size_t i = queue_[head];
@@ -67,11 +59,6 @@ class Refiner {
   }
 
  private:
-  void renumberRow(int y) {
-    const std::size_t row_start = static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
-    planes_.renumberPixels(labels_, row_start, row_start + static_cast<std::size_t>(width_));
-  }
-
   // The unlabelled pixel (x, y), which has a labelled neighbour, joins the neighbouring plane
   // it fits best, if any.
   void seedPixel(int x, int y) {
@@ -108,7 +95,7 @@ class Refiner {
 
   const PointGrid& full_;
   const HoleFilling& holes_;
-  std::uint32_t* labels_;
+  std::uint32_t* labels_ = nullptr;  // the planes' image, writable
   PlaneCandidates& planes_;
   std::vector<std::size_t>& queue_;
   const int width_;
@@ -117,14 +104,11 @@ class Refiner {
 
 }  // namespace
 
-void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
-                  PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue) {
-  if (planes.list().empty()) {
-    if (renumber_first) planes.renumberImage(labels);
-    return;
-  }
-  Refiner refiner(full, holes, labels, planes, queue);
-  refiner.seedAlongPlaneBorders(renumber_first);
+void refinePlanes(const PointGrid& full, const HoleFilling& holes, PlaneCandidates& planes,
+                  std::vector<std::size_t>& queue) {
+  if (planes.list().empty()) return;
+  Refiner refiner(full, holes, planes, queue);
+  refiner.seedAlongPlaneBorders();
   refiner.grow();
 }
 

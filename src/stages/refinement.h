@@ -18,11 +18,9 @@ namespace floodplane {
 /// of segments too small to report. An unlabelled pixel next to several planes goes to the one
 /// it fits best. The planes' sums and first pixels follow.
 ///
-/// With `renumber_first`, the labels are first renumbered by `planes.remap()` in the same pass,
-/// one row ahead of the scan (which reads the rows above and below the pixel it looks at).
-/// `queue` is scratch space.
-/// Pixels `holes` filled in are never labelled.
-void refinePlanes(const PointGrid& full, const HoleFilling& holes, std::vector<std::uint32_t>& labels,
-                  PlaneCandidates& planes, bool renumber_first, std::vector<std::size_t>& queue);
+/// The labels are the planes' image (`planes` on `full`), in whatever numbers it was written.
+/// `queue` is scratch space. Pixels `holes` filled in are never labelled.
+void refinePlanes(const PointGrid& full, const HoleFilling& holes, PlaneCandidates& planes,
+                  std::vector<std::size_t>& queue);
 
 }  // namespace floodplane

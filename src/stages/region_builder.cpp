@@ -24,40 +24,33 @@ constexpr double kPlanaritySamples = 4000.0;
 // ---- RegionBuilder ---------------------------------------------------------------------
 
 void RegionBuilder::assemble(const PreparedFrame& frame, const MergedSegments& merged, const Params& params,
-                             bool refine, Segmentation& out) {
+                             bool refine) {
   params_ = params;
   const std::uint32_t min_inliers = frame.tolerances.minInliers();
-  std::vector<std::uint32_t>& labels = out.labels;
   selectCandidates(frame, merged, params);
-  labels.resize(frame.grid.size());
   // The plane tests of selectCandidates ran on the merged clusters; refinement adds points,
   // which can tip a plane over the curvature limit or, rarely (an outlier far along a ray),
   // make its fit degenerate. The last sort of the candidates checks them again, so that what
   // is reported passes. Filled-in holes (HoleFilling) leave the clusters when their points are
   // labelled, so the counts are known only afterwards.
-  bool renumbered = false;  // labels still to be renumbered by remap()
   if (!frame.holes->filled()) {
     // Counts are known: number the planes by size before writing any label.
     candidates_.sortBySize(min_inliers, nullptr);
     for (std::size_t segment = 1; segment < merged.segment_count; ++segment)
       candidate_of_segment_[segment] = candidates_.remap(candidate_of_segment_[segment]);
-    labelSegmentedGrid(frame, merged, labels);
+    labelSegmentedGrid(frame, merged);
   } else {
-    labelSegmentedGrid(frame, merged, labels);
-    renumbered = candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
+    labelSegmentedGrid(frame, merged);
+    candidates_.sortBySize(min_inliers, refine ? nullptr : &params);
   }
   if (refine) {
-    refinePlanes(frame.grid, *frame.holes, labels, candidates_, renumbered, queue_);  // renumbers
+    refinePlanes(frame.grid, *frame.holes, candidates_, queue_);
     // Refinement may also have changed the order by size.
-    renumbered = candidates_.sortBySize(0, &params);
+    candidates_.sortBySize(0, &params);
   }
-  // Each stage below renumbers the planes and reads the labels by their current numbers:
-  // through the pending renumbering, so that the image is rewritten once, at the end.
-  candidates_.deferRenumbering(renumbered);
-  if (occlusion_merging_.run(frame.grid, candidates_.labels(labels), candidates_,
-                             MergeCriterion(params, frame.tolerances), frame.tolerances, frame.pitch))
-    candidates_.composeRenumbering();
-  if (dropCurvedPlanes(frame, candidates_.labels(labels))) candidates_.composeRenumbering();
+  occlusion_merging_.run(frame.grid, candidates_, MergeCriterion(params, frame.tolerances), frame.tolerances,
+                         frame.pitch);
+  dropCurvedPlanes(frame);
 }
 
 void RegionBuilder::write(const PreparedFrame& frame, Segmentation& out) {
@@ -66,9 +59,8 @@ void RegionBuilder::write(const PreparedFrame& frame, Segmentation& out) {
   // A plane's centroid, covariance and fit are those of its inliers as the caller measured
   // them, not as they were smoothed for segmenting, nor the block means that stood for the
   // pixels of a coarse plane (s > 1).
-  if (frame.measured.data != frame.grid.data || frame.blocks)
-    sumMeasuredPoints(frame.measured, candidates_.labels(out.labels));
-  candidates_.applyRenumbering(out.labels);
+  if (frame.measured.data != frame.grid.data || frame.blocks) sumMeasuredPoints(frame.measured);
+  candidates_.releaseImage(out.labels);
   out.planes.clear();
   for (const PlaneCandidate& candidate : candidates_.list()) {
     SegmentedPlane plane;
@@ -80,8 +72,8 @@ void RegionBuilder::write(const PreparedFrame& frame, Segmentation& out) {
 }
 
 void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSegments& merged, const Params& params) {
+  candidates_.clear();
   std::vector<PlaneCandidate>& list = candidates_.list();
-  list.clear();
   candidate_of_segment_.assign(merged.segment_count, 0);
   // Refinement only adds pixels: drop small ones now. (A filled-in hole counts here, and
   // leaves the count when the labels are written.)
@@ -102,8 +94,8 @@ void RegionBuilder::selectCandidates(const PreparedFrame& frame, const MergedSeg
     candidate_of_segment_[segment] = candidate_of_segment_[static_cast<std::size_t>(merged.root[segment])];
 }
 
-void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedSegments& merged,
-                                       std::vector<std::uint32_t>& labels) {
+void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedSegments& merged) {
+  std::uint32_t* labels = candidates_.newImage(frame.grid.width, frame.grid.height);
   // Run by run of one segment: its plane is looked up once.
   const std::uint32_t* table = candidate_of_segment_.data();
   const HoleFilling& holes = *frame.holes;
@@ -113,8 +105,7 @@ void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedS
       const std::uint32_t k = table[segment];
       const std::size_t first = row + static_cast<std::size_t>(begin), last = row + static_cast<std::size_t>(end);
       if (k == 0 || !holes.filled()) {
-        std::fill(labels.begin() + static_cast<std::ptrdiff_t>(first),
-                  labels.begin() + static_cast<std::ptrdiff_t>(last), k);
+        std::fill(labels + first, labels + last, k);
         if (k != 0 && candidates_[k].first_pixel == kNoPixel) candidates_[k].first_pixel = first;
         return;
       }
@@ -131,28 +122,23 @@ void RegionBuilder::labelSegmentedGrid(const PreparedFrame& frame, const MergedS
   }
 }
 
-void RegionBuilder::sumMeasuredPoints(const PointGrid& measured, const RenumberedLabels& labels) {
+void RegionBuilder::sumMeasuredPoints(const PointGrid& measured) {
   for (PlaneCandidate& candidate : candidates_.list()) candidate.sums = PlaneSums();
+  const CurrentLabels labels = candidates_.labels();
   const std::size_t width = static_cast<std::size_t>(measured.width);
   const std::size_t size = width * static_cast<std::size_t>(measured.height);
+  // Run by run of one plane (pieces merged since the image was written are one run): the
+  // sums are added in the same order whatever numbers the image carries.
   for (std::size_t row = 0; row < size; row += width) {
-    const std::uint32_t* image_row = labels.image + row;
-    int u = 0;
-    while (u < measured.width) {
-      // A run of one plane: runs of image numbers that now carry the same number join.
-      const std::uint32_t k = labels.number[image_row[u]];
-      int end = findInRow(image_row, u, measured.width - 1, image_row[u], false);
-      while (end < measured.width && labels.number[image_row[end]] == k)
-        end = findInRow(image_row, end, measured.width - 1, image_row[end], false);
+    labels.forEachPlaneRunInRow(row, measured.width, [&](std::uint32_t k, int begin, int end) {
       if (k != 0)
-        addRunToSums(candidates_[k].sums, measured, row + static_cast<std::size_t>(u),
-                     static_cast<std::size_t>(end - u));
-      u = end;
-    }
+        addRunToSums(candidates_[k].sums, measured, row + static_cast<std::size_t>(begin),
+                     static_cast<std::size_t>(end - begin));
+    });
   }
 }
 
-void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const RenumberedLabels& labels, PlanarityTest& test) {
+void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const CurrentLabels& labels, PlanarityTest& test) {
   // Interior points only (no neighbour in another plane or none): the points along a plane's
   // border may be a neighbouring surface's within the tolerance band, and would fake a bend.
   // A neighbour without a return does not make a border: on a speckled surface there would be
@@ -177,8 +163,7 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
   // up once. Points are added in raster order of the grid.
   for (std::size_t y = 1; y + 1 < static_cast<std::size_t>(grid.height); ++y) {
     const std::size_t row = y * width;
-    forEachRunInRow(labels.image + row, 1, grid.width - 2, [&](std::uint32_t image_label, int begin, int end) {
-      const std::uint32_t k = labels.number[image_label];
+    labels.forEachRunInRow(row, 1, grid.width - 2, [&](std::uint32_t k, int begin, int end) {
       if (k == 0 || y % strides_[k] != 0) return;
       const std::uint32_t s = strides_[k];
       // The first column of the run on the plane's lattice.
@@ -192,10 +177,11 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const Renumbered
   }
 }
 
-bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const RenumberedLabels& labels) {
+void RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame) {
   const Tolerances& tolerances = frame.tolerances;
   const std::vector<PlaneCandidate>& list = candidates_.list();
-  if (list.empty()) return false;
+  if (list.empty()) return;
+  const CurrentLabels labels = candidates_.labels();
   fits_.clear();
   for (const PlaneCandidate& candidate : list) fits_.push_back(candidate.sums.fit());
   planarity_.reset(fits_);
@@ -213,7 +199,7 @@ bool RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame, const Renumbere
     joint.merge(list[l - 1].sums);
     if (planarity_.curvedPair(k, l, joint.fit(), tolerances)) curved_[k] = curved_[l] = true;
   }
-  return candidates_.drop(curved_);
+  candidates_.drop(curved_);
 }
 
 }  // namespace floodplane

@@ -190,7 +190,7 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
   }
   {
     PhaseTimer timer(timed, result_.phases.region_output);
-    ws.regions.assemble(frame, clusters, params_, options.refine, result_);
+    ws.regions.assemble(frame, clusters, params_, options.refine);
     ws.regions.write(frame, result_);
   }
   previous.valid = true;

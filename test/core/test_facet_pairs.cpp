@@ -5,6 +5,7 @@
 // Whether a pair is one surface is the planarity test's (test_planarity.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -28,7 +29,6 @@ constexpr int kWidth = 40, kHeight = 30;
 struct TwoPlanes {
   test::PinholeGrid grid;
   std::vector<std::uint32_t> image;
-  std::vector<std::uint32_t> number = {0, 1, 2};  // no renumbering pending
   std::vector<PlaneCandidate> planes;
   std::vector<PlaneFit> fits;
 
@@ -58,7 +58,7 @@ struct TwoPlanes {
     }
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> find(const std::vector<bool>& eligible = {false, true, true}) {
-    pairs.find(grid.grid(), RenumberedLabels{image.data(), number.data()}, planes, fits, eligible);
+    pairs.find(grid.grid(), PlainLabels{image.data()}, planes, fits, eligible);
     return pairs.pairs();
   }
   FacetPairs pairs;
@@ -93,6 +93,25 @@ TEST(FacetPairs, NeedsABorderOfTheSmallestLength) {
 TEST(FacetPairs, PairsOnlyEligiblePlanes) {
   TwoPlanes scene(20.0, 0.0);
   EXPECT_TRUE(scene.find({false, true, false}).empty());
+}
+
+TEST(FacetPairs, ReadsThePlanesImageInTheirCurrentNumbers) {
+  // A third plane without a pixel in the image outgrows the two: after the sort by size, the
+  // image's planes 1 and 2 are planes 2 and 3, and plane 1 is not eligible. (Read in the
+  // image's numbers, the pair would be (1, 2), and left out.)
+  TwoPlanes scene(20.0, 0.0);
+  PlaneCandidates planes;
+  PlaneCandidate third = scene.planes[0];
+  third.sums.count = 10000.0;
+  planes.list() = {scene.planes[0], scene.planes[1], third};
+  std::copy(scene.image.begin(), scene.image.end(), planes.newImage(kWidth, kHeight));
+  ASSERT_TRUE(planes.sortBySize(0, nullptr));
+  ASSERT_EQ(planes.remap(3), 1u);
+  ASSERT_EQ(planes.remap(1), 2u);
+  const std::vector<PlaneFit> fits = {scene.fits[0], scene.fits[0], scene.fits[1]};
+  FacetPairs pairs;
+  pairs.find(scene.grid.grid(), planes.labels(), planes.list(), fits, {false, false, true, true});
+  EXPECT_EQ(pairs.pairs(), (Pairs{{2, 3}}));
 }
 
 }  // namespace

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -30,30 +29,19 @@ using test::kPinholePitch;
 // numbered by size as region output leaves them); each plane's sums are those of its pixels.
 struct Frame {
   Grid grid;
-  std::vector<std::uint32_t> image;
-  std::vector<std::uint32_t> number;  // image number -> plane number
-  PlaneCandidates planes;
+  PlaneCandidates planes;  // and their label image
   Params params = exactParams();
   Tolerances tolerances;
 
-  // `renumbering`, when given, is the pending renumbering the image is read through (image
-  // number -> plane number).
-  Frame(const std::vector<std::string>& art, const std::function<double(int, int)>& depth,
-        const std::vector<std::uint32_t>& renumbering = {})
-      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth),
-        image(test::labelsFromArt(art)),
-        number(renumbering) {
-    if (number.empty()) {
-      number.resize(*std::max_element(image.begin(), image.end()) + 1);
-      std::iota(number.begin(), number.end(), 0u);
-    }
+  Frame(const std::vector<std::string>& art, const std::function<double(int, int)>& depth)
+      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth) {
+    const std::vector<std::uint32_t> image = test::labelsFromArt(art);
     tolerances = Tolerances(params, {}, 1.0 / test::kPinholeFocal, image.size());
-    planes = test::planesOfLabels(grid, image, tolerances, number);
+    planes = test::planesOfLabels(grid, image, tolerances);
   }
 
   bool merge() {
-    return OcclusionMerging().run(grid.grid(), {image.data(), number.data()}, planes,
-                                  MergeCriterion(params, tolerances), tolerances, kPinholePitch);
+    return OcclusionMerging().run(grid.grid(), planes, MergeCriterion(params, tolerances), tolerances, kPinholePitch);
   }
 };
 
@@ -231,14 +219,16 @@ TEST(OcclusionMerging, KeepsPlanesWithoutPixelsInTheImageApart) {
   Frame pieces(kTwoPieces, [](int, int) { return 3.0; });
   Frame f({".........................", "........................."}, [](int, int) { return kNaN; });
   f.planes = pieces.planes;
-  f.number = {0, 1, 2};
+  std::uint32_t* image = f.planes.newImage(f.grid.width, f.grid.height);
+  std::fill(image, image + f.grid.width * f.grid.height, 0u);
   EXPECT_FALSE(f.merge());
   EXPECT_EQ(f.planes.list().size(), 2u);
 }
 
-TEST(OcclusionMerging, ReadsTheLabelsThroughThePendingRenumbering) {
-  // The image carries the numbers of before a sort: image 2 (the right piece) is plane 3 now,
-  // image 3 (a parallel plane in front, below) plane 2. The floor is seen between the pieces.
+TEST(OcclusionMerging, ReadsTheLabelsInThePlanesCurrentNumbers) {
+  // The image carries the numbers it was written in; a sort by size has given the planes new
+  // numbers since: the row below (image 3, a parallel plane in front) is plane 1 now, the left and right
+  // pieces (images 1 and 2) planes 2 and 3. The floor is seen between the pieces.
   const std::vector<std::string> art = {
       "1111111111..........2222222222",  //
       "1111111111..........2222222222",  //
@@ -251,17 +241,28 @@ TEST(OcclusionMerging, ReadsTheLabelsThroughThePendingRenumbering) {
       "333333333333333333333333333333",  //
   };
   const auto depth = [](int u, int v) { return v >= 6 ? 2.5 : inGap(u) ? 4.0 : 3.0; };
-  Frame f(art, depth, {0, 1, 3, 2});
-  ASSERT_EQ(f.planes.list().size(), 3u);
-  ASSERT_DOUBLE_EQ(f.planes[3].sums.count, 60.0);
-  // Read as image numbers, planes 1 and 3 would touch along the columns of the left piece.
+  Frame f(art, depth);
+  ASSERT_TRUE(f.planes.sortBySize(0, nullptr));
+  ASSERT_EQ(f.planes.remap(3), 1u);
+  ASSERT_EQ(f.planes.remap(1), 2u);
+  ASSERT_EQ(f.planes.remap(2), 3u);
+  // Read in the image's numbers, planes 2 and 3 (the pieces, by their sums) would be the right
+  // piece and the row, which touch along the right piece's columns.
   EXPECT_FALSE(f.merge());
-  // Seen through an occluder instead of the floor, the pieces (planes 1 and 3) join.
-  Frame g(art, [](int u, int v) { return v >= 6 ? 2.5 : inGap(u) ? 2.0 : 3.0; }, {0, 1, 3, 2});
+  // Seen through an occluder instead of the floor, the pieces (planes 2 and 3) join, and
+  // outnumber the row.
+  Frame g(art, [](int u, int v) { return v >= 6 ? 2.5 : inGap(u) ? 2.0 : 3.0; });
+  ASSERT_TRUE(g.planes.sortBySize(0, nullptr));
   ASSERT_TRUE(g.merge());
-  EXPECT_EQ(g.planes.remap(1), 1u);
+  EXPECT_EQ(g.planes.remap(1), 2u);
+  EXPECT_EQ(g.planes.remap(2), 1u);
   EXPECT_EQ(g.planes.remap(3), 1u);
-  EXPECT_EQ(g.planes.remap(2), 2u);
+  ASSERT_EQ(g.planes.list().size(), 2u);
+  EXPECT_DOUBLE_EQ(g.planes[1].sums.count, 120.0);
+  EXPECT_EQ(g.planes.labels()[g.grid.index(0, 0)], 1u);
+  EXPECT_EQ(g.planes.labels()[g.grid.index(29, 5)], 1u);
+  EXPECT_EQ(g.planes.labels()[g.grid.index(15, 7)], 2u);
+  EXPECT_EQ(g.planes.labels()[g.grid.index(15, 0)], 0u);
 }
 
 }  // namespace

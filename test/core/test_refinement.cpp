@@ -28,26 +28,28 @@ using test::kPinholePitch;
 // pixel and criterion are those of its labelled pixels, as region output hands them over.
 struct Frame {
   Grid grid;
-  std::vector<std::uint32_t> labels;
-  PlaneCandidates planes;
-  HoleFilling holes;  // none filled
+  PlaneCandidates planes;  // and their label image
+  HoleFilling holes;       // none filled
   std::vector<std::size_t> queue;
 
   Frame(const std::vector<std::string>& art, const std::function<double(int, int)>& depth)
-      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth), labels(test::labelsFromArt(art)) {
+      : grid(static_cast<int>(art[0].size()), static_cast<int>(art.size()), depth) {
     Params params;
     params.distance_threshold = 0.01;  // the paper's sigma_plane; exact data
+    const std::vector<std::uint32_t> labels = test::labelsFromArt(art);
     planes = test::planesOfLabels(grid, labels, Tolerances(params, {}, 1.0 / test::kPinholeFocal, labels.size()));
   }
 
-  void refine(bool renumber_first = false) { refinePlanes(grid.grid(), holes, labels, planes, renumber_first, queue); }
+  void refine() { refinePlanes(grid.grid(), holes, planes, queue); }
+  // The plane of pixel i now.
+  std::uint32_t label(std::size_t i) const { return planes.labels()[i]; }
 
   std::vector<std::string> art() const {
     std::vector<std::string> rows;
     for (int y = 0; y < grid.height; ++y) {
       std::string row;
       for (int x = 0; x < grid.width; ++x) {
-        const std::uint32_t l = labels[grid.index(x, y)];
+        const std::uint32_t l = label(grid.index(x, y));
         row += l == 0 ? '.' : static_cast<char>('0' + l);
       }
       rows.push_back(row);
@@ -57,8 +59,8 @@ struct Frame {
   // The sums of the pixels labelled k now.
   PlaneSums sumsOf(std::uint32_t k) const {
     PlaneSums sums;
-    for (std::size_t i = 0; i < labels.size(); ++i)
-      if (labels[i] == k) sums.add(grid.point(i));
+    for (std::size_t i = 0; i < grid.data.size() / grid.stride; ++i)
+      if (label(i) == k) sums.add(grid.point(i));
     return sums;
   }
 };
@@ -109,7 +111,7 @@ TEST(Refinement, GivesAMarginPixelToTheNeighbouringPlaneThatExplainsItBest) {
       },
       depth);
   f.refine();
-  for (int v = 0; v < 5; ++v) EXPECT_EQ(f.labels[f.grid.index(5, v)], v % 2 == 0 ? 1u : 2u) << "row " << v;
+  for (int v = 0; v < 5; ++v) EXPECT_EQ(f.label(f.grid.index(5, v)), v % 2 == 0 ? 1u : 2u) << "row " << v;
   expectSameSums(f.planes[1].sums, f.sumsOf(1));
   expectSameSums(f.planes[2].sums, f.sumsOf(2));
   // Mirrored, the same.
@@ -123,8 +125,7 @@ TEST(Refinement, GivesAMarginPixelToTheNeighbouringPlaneThatExplainsItBest) {
       },
       [&](int u, int v) { return depth(10 - u, v); });
   mirrored.refine();
-  for (int v = 0; v < 5; ++v)
-    EXPECT_EQ(mirrored.labels[mirrored.grid.index(5, v)], v % 2 == 0 ? 1u : 2u) << "row " << v;
+  for (int v = 0; v < 5; ++v) EXPECT_EQ(mirrored.label(mirrored.grid.index(5, v)), v % 2 == 0 ? 1u : 2u) << "row " << v;
 }
 
 TEST(Refinement, LeavesPixelsThatNoPlaneExplainsUnlabelled) {
@@ -161,7 +162,7 @@ TEST(Refinement, DoesNotGrowOverADepthStep) {
 TEST(Refinement, LeavesHolesUnlabelled) {
   Frame f({"11111", "11.11", "11111"}, [](int u, int v) { return u == 2 && v == 1 ? kNaN : 2.0; });
   f.refine();
-  EXPECT_EQ(f.labels[f.grid.index(2, 1)], 0u);
+  EXPECT_EQ(f.label(f.grid.index(2, 1)), 0u);
   EXPECT_DOUBLE_EQ(f.planes[1].sums.count, 14.0);
 }
 
@@ -173,7 +174,7 @@ TEST(Refinement, NotesAPlanesNewFirstPixel) {
   EXPECT_DOUBLE_EQ(f.planes[1].sums.count, 24.0);
 }
 
-TEST(Refinement, RenumbersTheLabelsFirstWhenAsked) {
+TEST(Refinement, GrowsThePlanesUnderTheirNumbersAfterASort) {
   // Plane 1 is the smaller: a sort by size swaps the numbers. The image still has the old
   // ones; refinement writes the new ones as it goes, and grows the planes under them.
   const std::vector<std::string> art = {
@@ -184,26 +185,33 @@ TEST(Refinement, RenumbersTheLabelsFirstWhenAsked) {
   Frame f(art, depth);
   ASSERT_TRUE(f.planes.sortBySize(0, nullptr));
   ASSERT_EQ(f.planes.remap(1), 2u);
-  f.refine(true);
+  f.refine();
   EXPECT_EQ(f.art(), (std::vector<std::string>{"22211111111", "22211111111"}));
   EXPECT_DOUBLE_EQ(f.planes[1].sums.count, 16.0);
   EXPECT_DOUBLE_EQ(f.planes[2].sums.count, 6.0);
   EXPECT_EQ(f.planes[1].first_pixel, 3u);
   EXPECT_EQ(f.planes[2].first_pixel, 0u);
-  // The same as renumbering the image first and refining it then.
+  // The same as writing the image in the new numbers first and refining it then.
   Frame g(art, depth);
   ASSERT_TRUE(g.planes.sortBySize(0, nullptr));
-  g.planes.renumberImage(g.labels);
-  g.refine(false);
-  EXPECT_EQ(g.labels, f.labels);
+  g.planes.writableImage();
+  g.refine();
+  EXPECT_EQ(g.art(), f.art());
+  std::vector<std::uint32_t> f_image, g_image;
+  f.planes.releaseImage(f_image);
+  g.planes.releaseImage(g_image);
+  EXPECT_EQ(f_image, g_image);
 }
 
 TEST(Refinement, ClearsTheLabelsOfDroppedPlanesWhenNoneIsLeft) {
   Frame f({"11..", "11.."}, flat);
   ASSERT_TRUE(f.planes.sortBySize(100, nullptr));  // plane 1 is too small
   ASSERT_TRUE(f.planes.list().empty());
-  f.refine(true);
+  f.refine();
   EXPECT_EQ(f.art(), (std::vector<std::string>{"....", "...."}));
+  std::vector<std::uint32_t> image;
+  f.planes.releaseImage(image);
+  EXPECT_EQ(image, std::vector<std::uint32_t>(8, 0u));
 }
 
 TEST(Refinement, NeverLabelsFilledInHoles) {
@@ -219,20 +227,23 @@ TEST(Refinement, NeverLabelsFilledInHoles) {
   const PointGrid& full = holes.fill(measured.grid(), tolerances);
   ASSERT_TRUE(holes.filled());
   // The left half is plane 1 (the filled points are on it, but not labelled).
-  std::vector<std::uint32_t> labels(full.size(), 0u);
   PlaneCandidates planes;
   planes.list().resize(1);
+  std::uint32_t* image = planes.newImage(width, height);
+  std::fill(image, image + full.size(), 0u);
   for (int v = 0; v < height; ++v)
     for (int u = 0; u < width / 2; ++u) {
       const std::size_t i = static_cast<std::size_t>(v * width + u);
       if (holes.isFilled(i) || !full.isFinite(i)) continue;  // a hole at the corner is left
-      labels[i] = 1;
+      image[i] = 1;
       planes[1].sums.add(Vec3::load(full.point(i)));
       planes[1].first_pixel = std::min(planes[1].first_pixel, i);
     }
   planes[1].criterion = planeCriterion(planes[1].sums.fit(), tolerances, kPinholePitch);
   std::vector<std::size_t> queue;
-  refinePlanes(full, holes, labels, planes, false, queue);
+  refinePlanes(full, holes, planes, queue);
+  std::vector<std::uint32_t> labels;
+  planes.releaseImage(labels);
   std::size_t labelled = 0, measured_points = 0, filled = 0;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (holes.isFilled(i)) {
@@ -253,7 +264,9 @@ TEST(Refinement, NeverLabelsFilledInHoles) {
 TEST(Refinement, DoesNothingOnEmptyOrAllHoleFramesOrWithoutPlanes) {
   Frame empty({""}, flat);
   empty.refine();
-  EXPECT_TRUE(empty.labels.empty());
+  std::vector<std::uint32_t> image;
+  empty.planes.releaseImage(image);
+  EXPECT_TRUE(image.empty());
 
   Frame no_planes({"....", "...."}, flat);
   no_planes.refine();

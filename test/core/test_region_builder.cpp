@@ -76,7 +76,7 @@ struct Merged {
     frame.tolerances = Tolerances(params, {}, frame.pitch, full.data.size() / full.stride);
     frame.measured_tolerances = frame.tolerances;
     frame.holes = &holes;
-    builder.assemble(frame, merged, params, refine, out);
+    builder.assemble(frame, merged, params, refine);
     builder.write(frame, out);
     return out;
   }

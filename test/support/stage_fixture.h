@@ -44,18 +44,15 @@ inline std::vector<std::uint32_t> labelsFromArt(const std::vector<std::string>& 
   return labels;
 }
 
-/// The planes of `labels` on `grid`: plane k (1..K) has the sums and the first pixel of the
-/// pixels whose label `number` maps to k (no map: the label is the plane's number), and the
-/// criterion of its fit under `tolerances`. K is the largest plane number.
+/// The planes of `labels` on `grid`, with `labels` as their image: plane k (1..K) has the sums
+/// and the first pixel of the pixels labelled k, and the criterion of its fit under
+/// `tolerances`. K is the largest label.
 inline PlaneCandidates planesOfLabels(const PinholeGrid& grid, const std::vector<std::uint32_t>& labels,
-                                      const Tolerances& tolerances, const std::vector<std::uint32_t>& number = {}) {
-  const auto plane_of = [&number](std::uint32_t label) { return number.empty() ? label : number[label]; };
-  std::uint32_t count = number.empty() ? 0u : *std::max_element(number.begin(), number.end());
-  for (const std::uint32_t label : labels) count = std::max(count, plane_of(label));
+                                      const Tolerances& tolerances) {
   PlaneCandidates planes;
-  planes.list().resize(count);
+  planes.list().resize(labels.empty() ? 0u : *std::max_element(labels.begin(), labels.end()));
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    const std::uint32_t k = plane_of(labels[i]);
+    const std::uint32_t k = labels[i];
     if (k == 0) continue;
     PlaneCandidate& plane = planes[k];
     plane.sums.add(grid.point(i));
@@ -63,6 +60,7 @@ inline PlaneCandidates planesOfLabels(const PinholeGrid& grid, const std::vector
   }
   for (PlaneCandidate& plane : planes.list())
     plane.criterion = planeCriterion(plane.sums.fit(), tolerances, kPinholePitch);
+  std::copy(labels.begin(), labels.end(), planes.newImage(grid.width, grid.height));
   return planes;
 }
 
