@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "models/flood_criterion.h"
-#include "stages/segment_borders.h"
 #include "util/label_borders.h"
 
 namespace floodplane {

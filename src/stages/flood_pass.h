@@ -10,6 +10,7 @@
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
 #include "models/tolerances.h"
+#include "stages/flood_grid.h"
 #include "stages/leftover_seeds.h"
 #include "stages/plane_flood.h"
 #include "stages/plane_merger.h"
@@ -26,18 +27,6 @@ struct MergedSegments {
   const std::int32_t* root = nullptr;    ///< per segment: the segment it merged into
   const PlaneSums* sums = nullptr;       ///< per root segment: the sums of its whole cluster
   std::size_t segment_count = 0;         ///< labels are < segment_count
-};
-
-/// The grid a flood pass segments and what it needs to know of it.
-struct FloodGrid {
-  PointGrid points;
-  Tolerances tolerances;  ///< the depth noise of `points` and every length derived from it
-  float pitch = 0.f;      ///< the angle between neighbouring points' viewing rays [rad]
-  /// How many pixels of the frame a point stands for along each axis (a block's side; 1: the
-  /// pixels themselves): the seed lattice and the smallest pieces count pixels of the frame.
-  int factor = 1;
-  /// No noise worth the name (exact data): the second seeding pass seeds smaller.
-  bool noise_free = false;
 };
 
 /// Segments one grid up to merged clusters: seed selection (Sec. III-C) interleaved with

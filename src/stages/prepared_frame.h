@@ -5,7 +5,7 @@
 #include "floodplane/point_grid.h"
 #include "models/tolerances.h"
 #include "stages/block_grid.h"
-#include "stages/flood_pass.h"
+#include "stages/flood_grid.h"
 #include "stages/hole_filling.h"
 
 namespace floodplane {

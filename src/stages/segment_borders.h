@@ -10,6 +10,7 @@
 
 #include "floodplane/point_grid.h"
 #include "stages/plane_flood.h"
+#include "util/label_borders.h"
 
 namespace floodplane {
 
@@ -53,13 +54,6 @@ struct SegmentBorder {
     return Eigen::Vector3d(dx, dy, dz) / count;
   }
 };
-
-/// Key of an unordered pair of segment labels.
-inline std::uint64_t borderKey(std::int32_t a, std::int32_t b) {
-  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
-  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
 
 using SegmentBorderMap = std::unordered_map<std::uint64_t, SegmentBorder>;
 

@@ -3,11 +3,19 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "floodplane/point_grid.h"
 #include "util/simd.h"
 
 namespace floodplane {
+
+/// Key of an unordered pair of segment labels.
+inline std::uint64_t borderKey(std::int32_t a, std::int32_t b) {
+  const std::uint32_t lo = static_cast<std::uint32_t>(a < b ? a : b);
+  const std::uint32_t hi = static_cast<std::uint32_t>(a < b ? b : a);
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
 
 /// Calls visit(i, j) for every pair of 4-neighbouring pixels of `labels` (grid.width x
 /// grid.height) whose labels differ, neither being 0: j = i + 1 (right) or j = i + width
