@@ -6,8 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_frames.h"
+#include "frame/noise_estimator.h"
 #include "methods.h"
-#include "stages/noise_estimator.h"
 
 namespace floodplane::bench {
 

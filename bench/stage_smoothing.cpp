@@ -6,9 +6,9 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_frames.h"
+#include "frame/depth_smoothing.h"
+#include "frame/noise_estimator.h"
 #include "methods.h"
-#include "stages/depth_smoothing.h"
-#include "stages/noise_estimator.h"
 #include "util/simd.h"
 
 namespace floodplane::bench {

@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
-# Every include of the library points down its layers:
+# Every include of the library points down its layers, which are the pipeline's steps:
 #   the API's plain types (floodplane/point_grid.h, plane_fit.h, params.h, noise_model.h)
 #   <- util/ (SIMD, small containers, label-image scans)
-#   <- models/ (noise model, tolerances, flood criterion, plane sums, planarity test)
-#   <- stages/ (the pipeline) and the segmenter (floodplane/segmenter.h)
+#   <- models/ (what the steps share: noise model, tolerances, flood criterion, plane sums,
+#      planarity test, the plane candidates and their numbers, facet pairs)
+#   <- frame/ (the frame's preparation) <- seeds/ (seed selection) <- flood/ (the flood pass)
+#   <- coarse/ (the coarse planes, s > 1) and regions/ (the planes a user gets), neither
+#      including the other
+#   <- segmenter/ (Segmenter::segment calling them in order; floodplane/segmenter.h)
 #   <- tracking/, semantics/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
 # params/ sits beside util/ (it needs the API's params.h alone). A public header includes
 # nothing of src/ or toolkit/. toolkit/ (what the programs, tests and benchmarks share) sits on
@@ -21,7 +25,12 @@ declare -A allowed=(
   [util]="^(util/|${types})"
   [params]="^(params/|${types})"
   [models]="^(util/|models/|${types})"
-  [stages]="^(util/|models/|stages/|${types}|floodplane/segmenter\.h)"
+  [frame]="^(util/|models/|frame/|${types}|floodplane/segmenter\.h)"
+  [seeds]="^(util/|models/|frame/|seeds/|${types}|floodplane/segmenter\.h)"
+  [flood]="^(util/|models/|frame/|seeds/|flood/|${types}|floodplane/segmenter\.h)"
+  [coarse]="^(util/|models/|frame/|seeds/|flood/|coarse/|${types}|floodplane/segmenter\.h)"
+  [regions]="^(util/|models/|frame/|seeds/|flood/|regions/|${types}|floodplane/segmenter\.h)"
+  [segmenter]="^(util/|models/|frame/|seeds/|flood/|coarse/|regions/|segmenter/|${types}|floodplane/segmenter\.h)"
   [tracking]="^(util/|models/|tracking/|floodplane/)"
   [semantics]="^(util/|models/|semantics/|floodplane/)"
   [io]="^(util/|models/|params/|io/|floodplane/)"
@@ -51,7 +60,7 @@ while IFS= read -r line; do
 done < <(cd toolkit && grep -rn '#include "' --include='*.h' --include='*.cpp' . | sed 's|^\./||' || true)
 while IFS= read -r line; do
   problems+=("include/$line (a public header includes an internal one)")
-done < <(cd include && grep -rnE '#include "(util|models|stages|params|tracking|semantics|io|pcl_interface|cli|view|baselines|synth|eval)/' . | sed 's|^\./||' || true)
+done < <(cd include && grep -rnE '#include "(util|models|frame|seeds|flood|coarse|regions|segmenter|params|tracking|semantics|io|pcl_interface|cli|view|baselines|synth|eval)/' . | sed 's|^\./||' || true)
 if [ ${#problems[@]} -gt 0 ]; then
   echo "check_includes: these includes run back up the library's layers (see the top of $0):" >&2
   printf '  %s\n' "${problems[@]}" >&2

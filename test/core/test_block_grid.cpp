@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-#include "stages/block_grid.h"
+#include "frame/block_grid.h"
 #include "support/pinhole_grid.h"
 #include "util/simd.h"
 

@@ -13,9 +13,9 @@
 #include <limits>
 #include <vector>
 
-#include "stages/coarse_planes.h"
-#include "stages/flood_pass.h"
-#include "stages/hole_filling.h"
+#include "coarse/coarse_planes.h"
+#include "flood/flood_pass.h"
+#include "frame/hole_filling.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

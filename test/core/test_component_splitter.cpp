@@ -9,7 +9,7 @@
 #include <tuple>
 #include <vector>
 
-#include "stages/component_splitter.h"
+#include "flood/component_splitter.h"
 #include "util/union_find.h"
 
 namespace floodplane {

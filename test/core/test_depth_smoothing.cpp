@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "stages/depth_smoothing.h"
+#include "frame/depth_smoothing.h"
 #include "test_scenes.h"
 #include "util/simd.h"
 

@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-#include "stages/facet_chains.h"
+#include "coarse/facet_chains.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

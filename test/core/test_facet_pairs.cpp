@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "stages/facet_pairs.h"
-#include "stages/plane_candidates.h"
+#include "models/facet_pairs.h"
+#include "models/plane_candidates.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "stages/flood_pass.h"
-#include "stages/plane_candidates.h"
+#include "flood/flood_pass.h"
+#include "models/plane_candidates.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "floodplane/segmenter.h"
-#include "stages/hole_filling.h"
+#include "frame/hole_filling.h"
 #include "test_scenes.h"
 
 namespace floodplane {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "models/tolerances.h"
-#include "stages/leftover_seeds.h"
+#include "seeds/leftover_seeds.h"
 #include "support/pinhole_grid.h"
 #include "util/distance_buffer.h"
 

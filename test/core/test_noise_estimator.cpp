@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "stages/noise_estimator.h"
+#include "frame/noise_estimator.h"
 #include "test_scenes.h"
 
 namespace floodplane {

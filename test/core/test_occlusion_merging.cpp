@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "stages/occlusion_merging.h"
+#include "regions/occlusion_merging.h"
 #include "support/pinhole_grid.h"
 #include "support/stage_fixture.h"
 

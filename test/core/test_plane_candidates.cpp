@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "stages/plane_candidates.h"
+#include "models/plane_candidates.h"
 
 namespace floodplane {
 namespace {

@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "stages/plane_flood.h"
+#include "flood/plane_flood.h"
 #include "support/pinhole_grid.h"
 #include "util/distance_buffer.h"
 #include "util/simd.h"

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "stages/plane_merger.h"
+#include "flood/plane_merger.h"
 #include "support/stage_fixture.h"
 
 namespace floodplane {

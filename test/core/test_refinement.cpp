@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "stages/refinement.h"
+#include "regions/refinement.h"
 #include "support/pinhole_grid.h"
 #include "support/stage_fixture.h"
 

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "stages/region_boundary.h"
+#include "segmenter/region_boundary.h"
 
 namespace floodplane {
 namespace {

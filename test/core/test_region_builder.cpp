@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "stages/region_builder.h"
+#include "regions/region_builder.h"
 #include "support/pinhole_grid.h"
 #include "support/stage_fixture.h"
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "stages/plane_candidates.h"
-#include "stages/relabelling.h"
+#include "flood/relabelling.h"
+#include "models/plane_candidates.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "stages/seed_selector.h"
+#include "seeds/seed_selector.h"
 #include "test_scenes.h"
 
 namespace floodplane {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "stages/plane_candidates.h"
-#include "stages/segment_borders.h"
+#include "flood/segment_borders.h"
+#include "models/plane_candidates.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane {

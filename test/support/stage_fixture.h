@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "floodplane/params.h"
+#include "models/plane_candidates.h"
 #include "models/tolerances.h"
-#include "stages/plane_candidates.h"
 #include "support/pinhole_grid.h"
 
 namespace floodplane::test {

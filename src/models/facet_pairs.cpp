@@ -1,0 +1,68 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#include "models/facet_pairs.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/flood_criterion.h"
+#include "util/label_borders.h"
+
+namespace floodplane {
+
+template <class Labels>
+void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::vector<PlaneCandidate>& planes,
+                      const std::vector<PlaneFit>& fits, const std::vector<bool>& eligible) {
+  touching_.clear();
+  pairs_.clear();
+  const std::size_t count = fits.size();
+  const double cos_maximum = std::cos(kMaximumAngle);
+  const auto close = [&](std::uint32_t k, std::uint32_t l) {
+    return std::abs(fits[k - 1].normal.dot(fits[l - 1].normal)) >= cos_maximum;
+  };
+  // Planes with a possible partner (most planes of a room meet at right angles, a frame may
+  // have none): the scan below looks only at them, and is skipped when there are none.
+  candidate_.assign(count + 1, 0);
+  bool any = false;
+  for (std::uint32_t k = 1; k <= count; ++k) {
+    if (!eligible[k] || !fits[k - 1].valid) continue;
+    for (std::uint32_t l = k + 1; l <= count; ++l) {
+      if (eligible[l] && fits[l - 1].valid && close(k, l)) candidate_[k] = candidate_[l] = 1;
+    }
+    any = any || candidate_[k];
+  }
+  if (!any) return;
+
+  // Pixels i and j = i + 1 or i + width, of two different planes (the image's numbers differ,
+  // neither is 0).
+  const auto touch = [&](std::size_t i, std::size_t j) {
+    const std::uint32_t k = labels[i], l = labels[j];
+    if (k == l || k == 0 || l == 0 || !candidate_[k] || !candidate_[l] || !close(k, l)) return;
+    const Vec3 p = Vec3::load(grid.point(i)), q = Vec3::load(grid.point(j));
+    if (!(squaredEuclideanDistance(p, q) < planes[k - 1].criterion.euclideanToleranceSq(noiseRangeSq(p, q)))) return;
+    // Consecutive pixel pairs of one border are counted in one entry: the list stays short.
+    const std::uint64_t key = borderKey(static_cast<std::int32_t>(k), static_cast<std::int32_t>(l));
+    if (!touching_.empty() && touching_.back().key == key)
+      ++touching_.back().count;
+    else
+      touching_.push_back({key, 1});
+  };
+  forEachLabelBorder(grid, labels.image, touch);
+  std::sort(touching_.begin(), touching_.end(), [](const Touch& a, const Touch& b) { return a.key < b.key; });
+  for (std::size_t i = 0; i < touching_.size();) {
+    std::size_t j = i;
+    std::uint32_t border = 0;
+    for (; j < touching_.size() && touching_[j].key == touching_[i].key; ++j) border += touching_[j].count;
+    if (border >= kMinimumBorder)
+      pairs_.emplace_back(static_cast<std::uint32_t>(touching_[i].key >> 32),
+                          static_cast<std::uint32_t>(touching_[i].key & 0xffffffffu));
+    i = j;
+  }
+}
+
+template void FacetPairs::find(const PointGrid&, const PlainLabels&, const std::vector<PlaneCandidate>&,
+                               const std::vector<PlaneFit>&, const std::vector<bool>&);
+template void FacetPairs::find(const PointGrid&, const CurrentLabels&, const std::vector<PlaneCandidate>&,
+                               const std::vector<PlaneFit>&, const std::vector<bool>&);
+
+}  // namespace floodplane
