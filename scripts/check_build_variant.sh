@@ -9,7 +9,12 @@
 #   without-pcl  FLOODPLANE_WITH_PCL=OFF, configured with PCL unfindable (as on a machine
 #                without PCL): the core alone builds and installs, its consumers work, and
 #                asking for the pcl component says that it was not built
-# Usage: scripts/check_build_variant.sh <shared|without-pcl>   (CXX: the compiler, optional)
+# Given a build tree of the same sources (the tests give theirs), the variant takes from it the
+# objects that it compiled with the very same command and that are up to date
+# (scripts/compile_or_reuse.py: the libraries' sources compile alike in every variant; what
+# differs is the configure, the link and the install, which are what is checked), and uses its
+# FLOODPLANE_WERROR; every other object is compiled. It says which objects it took.
+# Usage: scripts/check_build_variant.sh <shared|without-pcl> [build-dir]   (CXX: the compiler, optional)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 variant=${1:-}
@@ -27,8 +32,16 @@ esac
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+reuse_from=${2:-}
 compiler=()
 [ -n "${CXX:-}" ] && compiler=(-DCMAKE_CXX_COMPILER="$CXX")
+if [ -n "$reuse_from" ]; then
+  reuse_from=$(cd "$reuse_from" && pwd)
+  werror=$(sed -n 's/^FLOODPLANE_WERROR:[A-Z]*=//p' "$reuse_from/CMakeCache.txt")
+  options+=(-DFLOODPLANE_WERROR="${werror:-OFF}" -DCMAKE_CXX_COMPILER_LAUNCHER="$root/scripts/compile_or_reuse.py")
+  export FLOODPLANE_REUSE_BUILD=$reuse_from FLOODPLANE_REUSE_INTO=$work/build FLOODPLANE_REUSE_LOG=$work/reuse.log
+  : > "$work/reuse.log"
+fi
 if ! cmake -S "$root" -B "$work/build" -DCMAKE_BUILD_TYPE=Release "${compiler[@]}" \
        -DFLOODPLANE_BUILD_TESTS=OFF -DFLOODPLANE_BUILD_APPS=OFF -DFLOODPLANE_BUILD_PYTHON=OFF \
        -DFLOODPLANE_BUILD_BENCHMARKS=OFF -DFLOODPLANE_BUILD_FUZZERS=OFF "${options[@]}" > "$work/configure.log" 2>&1; then
@@ -40,4 +53,9 @@ if ! cmake --build "$work/build" --parallel "$(nproc)" > "$work/build.log" 2>&1;
   exit 1
 fi
 echo "check_build_variant: $variant: built" "$work"/build/src/libfloodplane*
+if [ -n "$reuse_from" ]; then
+  echo "check_build_variant: $variant: $(grep -c '^reused' "$work/reuse.log" || true) objects taken from $reuse_from," \
+       "$(grep -c '^compiled' "$work/reuse.log" || true) compiled:"
+  sed 's/^/  /' "$work/reuse.log"
+fi
 "$root/scripts/check_install.sh" "$work/build" "${checks[@]}"
