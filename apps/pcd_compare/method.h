@@ -115,3 +115,25 @@ std::unique_ptr<Method> makeOpen3dRansacMethod(const ParameterValues& values, co
 std::unique_ptr<Method> makeOmpsMethod(const ParameterValues& values, const std::string& name);
 
 }  // namespace pcd_compare
+
+namespace pcd_compare {
+
+// The object methods of --objects: the same interface, MethodRun::labels an object id per pixel
+// (0 = no object, 1..K). Each lives in its own file (the heavy PCL headers compiled once there)
+// and stands in objectMethods()' table (object_methods.cpp) under its name.
+
+/// A factory of an object method.
+using ObjectMethodFactory = std::unique_ptr<Method> (*)();
+/// The object methods by name, in the order --objects runs them by default.
+const std::vector<std::pair<std::string, ObjectMethodFactory>>& objectMethods();
+
+/// PCL's organized tabletop pipeline as its apps/organized_segmentation_demo runs it
+/// (pcl_organized_objects_method.cpp).
+std::unique_ptr<Method> makePclOrganizedObjectsMethod();
+/// PCL's supervoxels and LCCPSegmentation, as its example_lccp_segmentation runs them by default
+/// (lccp_objects_method.cpp).
+std::unique_ptr<Method> makeLccpObjectsMethod();
+/// The same with the example's -ec -sc: extended convexity and the sanity criterion.
+std::unique_ptr<Method> makeLccpExtendedObjectsMethod();
+
+}  // namespace pcd_compare

@@ -34,9 +34,12 @@
 #include "input_cloud.h"
 #include "io/atomic_file.h"
 #include "io/input_files.h"
+#include "io/labelled_cloud.h"
+#include "io/pcd_file.h"
 #include "io/png_file.h"
 #include "label_files.h"
 #include "method.h"
+#include "object_report.h"
 #include "report.h"
 #include "view/display_check.h"
 
@@ -66,7 +69,17 @@ struct Options {
   std::string sensor;      // every input's sensor model; empty: from the file name
   std::string tuned_file;  // empty: defaultTunedFile()
   bool resolutions = false, tuned = false, quiet = false, misses = false;
+  bool objects = false;                     // --objects: the object methods in place of the plane methods
+  std::vector<std::string> object_methods;  // --object-methods; empty: every object method
+  std::string objects_dir;                  // --write-objects DIR
 };
+
+// The object methods' names, in objectMethods()' order.
+std::vector<std::string> objectMethodNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : objectMethods()) names.push_back(entry.first);
+  return names;
+}
 
 // `names` in order, each once.
 std::vector<std::string> firstOfEach(const std::vector<std::string>& names) {
@@ -135,10 +148,20 @@ struct Methods {
   std::vector<std::unique_ptr<Method>> selected;
   using BySensor = std::map<std::string, std::unique_ptr<Method>>;
   std::vector<std::pair<std::string, BySensor>> tuned;  // row name, instance by sensor model
+  std::vector<std::unique_ptr<Method>> objects;         // --objects: the object methods
 };
 
 Methods makeMethods(const Options& options, Json& configuration) {
   Methods methods;
+  if (options.objects) {
+    for (const std::string& name : options.object_methods) {
+      for (const auto& [known, make] : objectMethods()) {
+        if (known == name) methods.objects.push_back(make());
+      }
+      configuration["object method " + name] = methods.objects.back()->parameters();
+    }
+    return methods;
+  }
   for (const std::string& name : options.methods) {
     methods.selected.push_back(makeMethod(name));
     configuration["method " + name] = methods.selected.back()->parameters();
@@ -162,6 +185,17 @@ Methods makeMethods(const Options& options, Json& configuration) {
     }
   }
   return methods;
+}
+
+// The configuration's accuracy entry of --objects.
+std::string objectAccuracy(const Options& options) {
+  return std::string(options.ground_truth_dir.empty() ? "for files with a `label` field"
+                                                      : "against the ground truth in " + options.ground_truth_dir) +
+         ", object labels as mOSD codes them (1-9 the table, from 20 the objects, each label an object, those under "
+         "200 pixels left out): object_iou (mean over objects of the IoU with the output object holding most of "
+         "it), found (IoU >= 0.8), under (its best output object holds 20 % of another object), over (two output "
+         "objects hold 20 % of it each), table in objects (the table's share inside output objects), as "
+         "../shared/tools/osd_scores.py --objects; every pixel counts; means over the files";
 }
 
 Json configuration(const Options& options) {
@@ -269,6 +303,28 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
   return scene;
 }
 
+// One input under --objects: each object method timed and scored (objectJson), its objects
+// written as <write-objects>/<method>/<scene>.objects.pcd on request.
+Json compareObjects(const Options& options, Methods& methods, const InputCloud& input) {
+  Json scene = {{"name", input.name},
+                {"file", input.path},
+                {"width", input.cloud->width},
+                {"height", input.cloud->height},
+                {"ground_truth", input.ground_truth.has_value()}};
+  scene["methods"] = Json::object();
+  for (const auto& method : methods.objects) {
+    Json timing;
+    const MethodRun run = measure(*method, input.cloud, options.repeat, timing);
+    scene["methods"][method->name()] = objectJson(timing, run.labels, input);
+    if (options.objects_dir.empty()) continue;
+    const fs::path directory = fs::path(options.objects_dir) / method->name();
+    fs::create_directories(directory);
+    floodplane::io::savePcd((directory / (input.name + ".objects.pcd")).string(),
+                            floodplane::io::labelledCloud<pcl::PointXYZL>(*input.cloud, run.labels));
+  }
+  return scene;
+}
+
 std::string minutes(double seconds) {
   char text[32];
   const int whole = static_cast<int>(seconds + 0.5);
@@ -312,7 +368,8 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
       // directories would share a row label and an image file.
       if (!names.insert(input.name).second)
         input.name = fs::path(file.path).parent_path().filename().string() + "_" + input.name;
-      report["scenes"].push_back(compareScene(options, methods, input, missing, report));
+      report["scenes"].push_back(options.objects ? compareObjects(options, methods, input)
+                                                 : compareScene(options, methods, input, missing, report));
     } catch (const std::exception& error) {
       std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
       report["failed"].push_back(file.path);
@@ -328,7 +385,8 @@ constexpr const char* kDescription =
     "in the PCD, or --ground-truth), mean and weighted IoU, Hoover counts and the false-plane fraction; without "
     "ground truth the tables have the time and plane columns only. --json has every file and plane; "
     "bench/compare_tables.py makes the per-file tables and CSV from it, bench/tune_baselines.py tunes the "
-    "baselines.";
+    "baselines. With --objects it compares object segmentations instead (the objects on the planes: PCL's "
+    "organized tabletop pipeline and LCCP), scored against object labels as the mOSD frames carry them.";
 
 // The naming rule of label files (label_files.h), for --labels' and --ground-truth's help.
 constexpr const char* kLabelFiles =
@@ -344,6 +402,34 @@ std::string wholePixelCount(const std::string& value) {
   if (digits && std::stoull(value) >= 1 && std::stoull(value) <= std::numeric_limits<std::uint32_t>::max()) return "";
   return "N must be a whole number of pixels from 1 to " + std::to_string(std::numeric_limits<std::uint32_t>::max()) +
          ", got '" + value + "'";
+}
+
+// --objects and its options, which the plane comparison's own options exclude.
+void addObjectOptions(CLI::App& app, Options& options) {
+  const std::vector<std::string> names = objectMethodNames();
+  CLI::Option* objects = app.add_flag(
+      "--objects", options.objects,
+      "Compare object segmentations (the objects standing on the planes) instead of planes: run --object-methods "
+      "and score their objects against the ground truth's object labels as the mOSD frames carry them (`label`: "
+      "0 nothing, 1-9 the table, 20-29 the first object, 30-39 the second, ...; or --ground-truth): object_iou, "
+      "found, under, over, table in objects (../shared/tools/osd_scores.py --objects)");
+  app.add_option("--object-methods", options.object_methods,
+                 "With --objects, the object methods to run, comma-separated, of " + joined(names) +
+                     " (the configuration printed first says what each runs)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember(names))
+      ->default_str(joined(names, ","))
+      ->needs(objects);
+  app.add_option("--write-objects", options.objects_dir,
+                 "With --objects, write each method's objects as DIR/<method>/<scene>.objects.pcd (organized, x y z "
+                 "label: object ids 1..K, 0 = none), which osd_scores.py --objects reads")
+      ->type_name("DIR")
+      ->needs(objects);
+  for (const char* plane_option : {"--methods", "--resolutions", "--tuned", "--tuned-file", "--misses", "--png",
+                                   "--png3d", "--labels", "--min-gt-points", "--sensor"}) {
+    objects->excludes(plane_option);
+  }
 }
 
 void addOptions(CLI::App& app, Options& options) {
@@ -415,6 +501,7 @@ void addOptions(CLI::App& app, Options& options) {
                "planes; over_segmented: split into several; iou_below_t: found at an IoU below T), its size, IoU "
                "and unlabelled share, and every noise segment (--json has them too)");
   app.add_flag("-q,--quiet", options.quiet, "Print no configuration and no progress: only the means and errors");
+  addObjectOptions(app, options);
 }
 
 // The label sources of --labels, checked: distinct names that are not a method's, directories
@@ -452,6 +539,10 @@ void checkPaths(Options& options) {
     throw std::invalid_argument("--json " + options.json_file +
                                 " is a directory; --json names the report's .json file");
   }
+  if (!options.objects_dir.empty()) {
+    floodplane::cli::outputKind("--write-objects", options.objects_dir, {},
+                                "--write-objects names a directory: it writes <method>/<scene>.objects.pcd per input");
+  }
   options.label_sources = labelSources(options.labels);
   if (!options.ground_truth_dir.empty() && !fs::is_directory(options.ground_truth_dir)) {
     throw std::invalid_argument("--ground-truth " + options.ground_truth_dir + " is not a directory");
@@ -469,6 +560,7 @@ int main(int argc, char** argv) {
   if (const std::optional<int> exit_code = floodplane::cli::parseCommandLine(app, argc, argv)) return *exit_code;
   if (options.resolutions) options.methods.insert(options.methods.end(), kResolutions.begin(), kResolutions.end());
   options.methods = firstOfEach(options.methods);
+  options.object_methods = firstOfEach(options.object_methods.empty() ? objectMethodNames() : options.object_methods);
   try {
     checkPaths(options);
   } catch (const std::invalid_argument& error) {
@@ -492,6 +584,14 @@ int main(int argc, char** argv) {
   try {
     if (options.tuned && options.tuned_file.empty()) options.tuned_file = defaultTunedFile();
     methods = makeMethods(options, report["configuration"]);
+    if (options.objects) {
+      report["configuration"]["timing"] =
+          (options.repeat > 0 ? "median and min of " + std::to_string(options.repeat) + " runs after one warm-up"
+                              : std::string("one run per method and file (--repeat 0: no warm-up)")) +
+          ", of the object method's whole call (normals, planes and clusters; supervoxels and LCCP) on the cloud "
+          "in memory, one thread, steady_clock";
+      report["configuration"]["accuracy"] = objectAccuracy(options);
+    }
   } catch (const std::exception& error) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
     return 1;
@@ -499,8 +599,13 @@ int main(int argc, char** argv) {
   if (!options.quiet) std::cout << markdownConfiguration(report) << std::flush;
   MissingTuned missing;
   compareAll(options, files, methods, report, missing);
-  addMeans(report);
-  std::cout << markdownMeans(report) << std::flush;
+  if (options.objects) {
+    addObjectMeans(report);
+    std::cout << markdownObjectMeans(report) << std::flush;
+  } else {
+    addMeans(report);
+    std::cout << markdownMeans(report) << std::flush;
+  }
   if (options.misses) std::cout << markdownMisses(report) << std::flush;
   bool written = true;
   try {

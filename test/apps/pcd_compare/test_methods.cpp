@@ -183,4 +183,34 @@ TEST(Baselines, TunedValuesFileIsReadAndCheckedByName) {
   EXPECT_THROW(readTunedValues(dir + "/no_such_file.json"), std::runtime_error);
 }
 
+// The object methods (--objects) on the tabletop: each made by its table's name, an object id
+// per pixel numbered 1..K without gaps, none on a pixel without a point, the same labels twice;
+// and a frame without a point gives no object.
+TEST(ObjectMethods, FindObjectsOnTheTabletopDeterministically) {
+  const InputCloud input = loadInputCloud(kTabletop);
+  ASSERT_EQ(objectMethods().size(), 3u);
+  for (const auto& [name, make] : objectMethods()) {
+    const auto method = make();
+    EXPECT_EQ(method->name(), name);
+    EXPECT_FALSE(method->parameters().empty()) << name;
+    const MethodRun run = method->run(input.cloud);
+    ASSERT_EQ(run.labels.size(), input.cloud->size()) << name;
+    const std::set<std::uint32_t> objects = planeLabels(run.labels);
+    ASSERT_FALSE(objects.empty()) << name;
+    EXPECT_EQ(*objects.rbegin(), objects.size()) << name << ": objects 1..K without gaps";
+    for (std::size_t i = 0; i < run.labels.size(); ++i) {
+      if (input.valid[i] == 0) {
+        ASSERT_EQ(run.labels[i], 0u) << name << " labelled a NaN pixel " << i;
+      }
+    }
+    EXPECT_EQ(method->run(input.cloud).labels, run.labels) << name;
+    EXPECT_GT(run.total_ms, 0.0) << name;
+
+    InputCloud empty = loadInputCloud(kTabletop);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (auto& point : *empty.cloud) point.x = point.y = point.z = nan;
+    EXPECT_TRUE(planeLabels(method->run(empty.cloud).labels).empty()) << name;
+  }
+}
+
 }  // namespace

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -537,6 +538,64 @@ TEST_F(PcdCompareTuned, BadTunedFilesAreReportedByName) {
   const Result bad_value = run("--tuned --tuned-file " + quote(bad.string()) + " " + quote(kStaircase));
   EXPECT_EQ(bad_value.exit_code, 1);
   EXPECT_NE(bad_value.err.find(bad.string() + ": omps has no parameter 'bogus'"), std::string::npos) << bad_value.err;
+}
+
+// --objects on the tabletop: each object method's objects written and scored. Scored against its
+// own objects as ground truth (object k as mOSD's label 10 (k + 1): 20, 30, ...), a method is
+// perfect: what was written is what was scored, by the osd_scores.py rules.
+TEST_F(PcdCompare, ObjectMethodsWriteTheirObjectsAndScoreThem) {
+  const fs::path objects_dir = dir_ / "objects";
+  const fs::path json_file = dir_ / "objects.json";
+  const Result first = run("--objects --repeat 0 --write-objects " + quote(objects_dir.string()) + " --json " +
+                           quote(json_file.string()) + " " + quote(kTabletop));
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.out.find("**object method pcl_organized**"), std::string::npos) << first.out;
+  const nlohmann::json report = nlohmann::json::parse(readFile(json_file));
+  ASSERT_EQ(report["scenes"].size(), 1u);
+  for (const std::string method : {"pcl_organized", "lccp", "lccp_ec_sc"}) {
+    EXPECT_EQ(meanRowCount(first.out, "all files (1)", method, 1), 1) << method << first.out;
+    const auto& entry = report["scenes"][0]["methods"][method];
+    pcl::PointCloud<pcl::PointXYZL> objects;
+    const fs::path file = objects_dir / method / "tabletop.kinect.objects.pcd";
+    ASSERT_EQ(pcl::io::loadPCDFile(file.string(), objects), 0) << file;
+    ASSERT_EQ(objects.width, 320u);
+    ASSERT_EQ(objects.height, 240u);
+    std::set<std::uint32_t> ids;
+    for (const auto& point : objects) {
+      if (point.label != 0) ids.insert(point.label);
+    }
+    // The tabletop's boxes, ball and jar: some objects, numbered 1..K.
+    ASSERT_FALSE(ids.empty()) << method;
+    EXPECT_EQ(*ids.rbegin(), ids.size()) << method;
+    EXPECT_EQ(entry["objects"].get<std::size_t>(), ids.size()) << method;
+
+    const fs::path truth_dir = dir_ / ("truth_" + method);
+    fs::create_directories(truth_dir);
+    for (auto& point : objects) point.label = point.label == 0 ? 0 : 10 * (point.label + 1);
+    pcl::io::savePCDFileBinary((truth_dir / "tabletop.kinect.labels.pcd").string(), objects);
+    const fs::path scored_file = dir_ / ("scored_" + method + ".json");
+    const Result scored =
+        run("--objects --repeat 0 --quiet --object-methods " + method + " --ground-truth " + quote(truth_dir.string()) +
+            " --json " + quote(scored_file.string()) + " " + quote(kTabletop));
+    ASSERT_EQ(scored.exit_code, 0) << scored.err;
+    const nlohmann::json self = nlohmann::json::parse(readFile(scored_file))["scenes"][0]["methods"][method];
+    EXPECT_EQ(self["ground_truth_objects"].get<std::size_t>(), ids.size()) << method;
+    EXPECT_DOUBLE_EQ(self["object_iou"].get<double>(), 1.0) << method;
+    EXPECT_DOUBLE_EQ(self["objects_found"].get<double>(), 1.0) << method;
+    EXPECT_DOUBLE_EQ(self["under"].get<double>(), 0.0) << method;
+    EXPECT_DOUBLE_EQ(self["over"].get<double>(), 0.0) << method;
+    EXPECT_DOUBLE_EQ(self["support_in_objects"].get<double>(), 0.0) << method;
+  }
+}
+
+TEST_F(PcdCompare, ObjectOptionsAreRefusedWithThePlaneComparison) {
+  expectUsageError(run("--objects --methods omps " + quote(kStaircase)), "pcd_compare", "--methods");
+  expectUsageError(run("--objects --png " + quote((dir_ / "png").string()) + " " + quote(kStaircase)), "pcd_compare",
+                   "--png");
+  expectUsageError(run("--write-objects " + quote((dir_ / "o").string()) + " " + quote(kStaircase)), "pcd_compare",
+                   "--objects");
+  expectUsageError(run("--objects --object-methods cpc " + quote(kStaircase)), "pcd_compare", "--object-methods");
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
 }
 
 }  // namespace
