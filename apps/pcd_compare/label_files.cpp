@@ -27,8 +27,8 @@ LabelSource parseLabelSource(const std::string& text) {
   return source;
 }
 
-std::string labelFileOf(const std::string& directory, const InputCloud& input) {
-  const fs::path pcd = fs::path(directory) / (input.name + ".labels.pcd");
+std::string labelFileOf(const std::string& directory, const InputCloud& input, const std::string& pcd_suffix) {
+  const fs::path pcd = fs::path(directory) / (input.name + pcd_suffix);
   const fs::path png = fs::path(directory) / (input.name + ".png");
   std::error_code error;
   const bool has_pcd = fs::is_regular_file(pcd, error);
@@ -44,8 +44,9 @@ std::string labelFileOf(const std::string& directory, const InputCloud& input) {
   return file.string();
 }
 
-std::vector<std::uint32_t> labelsFromDirectory(const std::string& directory, const InputCloud& input) {
-  const std::string file = labelFileOf(directory, input);
+std::vector<std::uint32_t> labelsFromDirectory(const std::string& directory, const InputCloud& input,
+                                               const std::string& pcd_suffix) {
+  const std::string file = labelFileOf(directory, input, pcd_suffix);
   floodplane::io::LabelGrid grid;
   try {
     grid = floodplane::io::readLabelFile(file);

@@ -8,7 +8,8 @@
 //   <stem>.labels.pcd  a PCD with x y z and a 32-bit unsigned `label` field on the input's grid
 //                      (what pcd_segment -o DIR writes), or
 //   <stem>.png         a grey PNG of 8 or 16 bits, the input's size, each pixel's value its label;
-// label 0 is "no plane".
+// label 0 is "no plane". Under --objects, a method's objects are <stem>.objects.pcd (what
+// pcd_segment --objects and pcd_compare --write-objects write) in place of <stem>.labels.pcd.
 
 #include <cstdint>
 #include <string>
@@ -28,13 +29,16 @@ struct LabelSource {
 /// name is empty or holds a space or '|' (it is a Markdown table's cell), or DIR is empty.
 LabelSource parseLabelSource(const std::string& text);
 
-/// The label file of `input` in `directory` by the naming rule. Throws std::runtime_error
-/// naming the files looked for when there is none, or both, or when the file is the input.
-std::string labelFileOf(const std::string& directory, const InputCloud& input);
+/// The label file of `input` in `directory` by the naming rule, <stem><pcd_suffix> or
+/// <stem>.png. Throws std::runtime_error naming the files looked for when there is none, or
+/// both, or when the file is the input.
+std::string labelFileOf(const std::string& directory, const InputCloud& input,
+                        const std::string& pcd_suffix = ".labels.pcd");
 
 /// The labels of `input` from `directory` (labelFileOf, io::readLabelFile), one per pixel of
 /// its grid. Throws std::runtime_error naming the file: none found, unreadable, or of another
 /// size than the input.
-std::vector<std::uint32_t> labelsFromDirectory(const std::string& directory, const InputCloud& input);
+std::vector<std::uint32_t> labelsFromDirectory(const std::string& directory, const InputCloud& input,
+                                               const std::string& pcd_suffix = ".labels.pcd");
 
 }  // namespace pcd_compare

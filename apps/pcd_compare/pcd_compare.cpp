@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // pcd_compare: runs floodplane, PCL's sequential RANSAC and OMPS and Open3D's sequential RANSAC
 // on organized PCD files and reports their runtime and, where a file carries ground-truth
-// labels, their accuracy (the project's metrics.md, floodplane_eval). This file is the driver:
+// labels, their accuracy (the project's metrics.md, floodplane_eval); with --objects, the object
+// methods (the objects on the planes) scored against object labels (object_report.cpp). This file is the driver:
 // options, the timing protocol, the loop over files. The methods are in *_method.cpp, the
 // report in report.cpp, the pictures in comparison_image.cpp; the baselines' tuning and the
 // tables beyond the means are bench/tune_baselines.py and bench/compare_tables.py.
@@ -160,6 +161,11 @@ Methods makeMethods(const Options& options, Json& configuration) {
       }
       configuration["object method " + name] = methods.objects.back()->parameters();
     }
+    for (const LabelSource& source : options.label_sources) {
+      configuration["object method " + source.name] =
+          "objects another program wrote (--labels): " + source.directory +
+          "/<stem>.objects.pcd or <stem>.png per input; not run here, no time";
+    }
     return methods;
   }
   for (const std::string& name : options.methods) {
@@ -304,8 +310,9 @@ Json compareScene(const Options& options, Methods& methods, const InputCloud& in
 }
 
 // One input under --objects: each object method timed and scored (objectJson), its objects
-// written as <write-objects>/<method>/<scene>.objects.pcd on request.
-Json compareObjects(const Options& options, Methods& methods, const InputCloud& input) {
+// written as <write-objects>/<method>/<scene>.objects.pcd on request; then the objects of
+// --labels' directories, scored without a time.
+Json compareObjects(const Options& options, Methods& methods, const InputCloud& input, Json& report) {
   Json scene = {{"name", input.name},
                 {"file", input.path},
                 {"width", input.cloud->width},
@@ -321,6 +328,15 @@ Json compareObjects(const Options& options, Methods& methods, const InputCloud& 
     fs::create_directories(directory);
     floodplane::io::savePcd((directory / (input.name + ".objects.pcd")).string(),
                             floodplane::io::labelledCloud<pcl::PointXYZL>(*input.cloud, run.labels));
+  }
+  for (const LabelSource& source : options.label_sources) {
+    try {
+      const Json no_time = {{"median_ms", nullptr}, {"min_ms", nullptr}};
+      scene["methods"][source.name] =
+          objectJson(no_time, labelsFromDirectory(source.directory, input, ".objects.pcd"), input);
+    } catch (const std::runtime_error& error) {
+      reportLabelProblem(input, "--labels " + source.name, error.what(), report);
+    }
   }
   return scene;
 }
@@ -368,7 +384,7 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
       // directories would share a row label and an image file.
       if (!names.insert(input.name).second)
         input.name = fs::path(file.path).parent_path().filename().string() + "_" + input.name;
-      report["scenes"].push_back(options.objects ? compareObjects(options, methods, input)
+      report["scenes"].push_back(options.objects ? compareObjects(options, methods, input, report)
                                                  : compareScene(options, methods, input, missing, report));
     } catch (const std::exception& error) {
       std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
@@ -427,7 +443,7 @@ void addObjectOptions(CLI::App& app, Options& options) {
       ->type_name("DIR")
       ->needs(objects);
   for (const char* plane_option : {"--methods", "--resolutions", "--tuned", "--tuned-file", "--misses", "--png",
-                                   "--png3d", "--labels", "--min-gt-points", "--sensor"}) {
+                                   "--png3d", "--min-gt-points", "--sensor"}) {
     objects->excludes(plane_option);
   }
 }
@@ -453,7 +469,9 @@ void addOptions(CLI::App& app, Options& options) {
                              "methods run here (time \"-\": not run here); repeat for more methods. ") +
                      kLabelFiles +
                      ". An input whose file is missing, unreadable or of another size is reported and "
-                     "the batch goes on (exit code 1)")
+                     "the batch goes on (exit code 1). With --objects, the objects of another program: "
+                     "<stem>.objects.pcd (as pcd_segment --objects and --write-objects write) in place of "
+                     "<stem>.labels.pcd")
       ->type_name("NAME=DIR")
       ->allow_extra_args(false);
   app.add_option("--ground-truth", options.ground_truth_dir,
@@ -510,7 +528,9 @@ std::vector<LabelSource> labelSources(const std::vector<std::string>& arguments)
   std::vector<LabelSource> sources;
   for (const std::string& argument : arguments) {
     LabelSource source = parseLabelSource(argument);
-    const bool method = std::find(kMethods.begin(), kMethods.end(), source.name) != kMethods.end();
+    const std::vector<std::string> object_methods = objectMethodNames();
+    const bool method = std::find(kMethods.begin(), kMethods.end(), source.name) != kMethods.end() ||
+                        std::find(object_methods.begin(), object_methods.end(), source.name) != object_methods.end();
     const bool taken = std::any_of(sources.begin(), sources.end(),
                                    [&source](const LabelSource& other) { return other.name == source.name; });
     if (method || taken) {

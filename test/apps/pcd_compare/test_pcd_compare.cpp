@@ -586,6 +586,22 @@ TEST_F(PcdCompare, ObjectMethodsWriteTheirObjectsAndScoreThem) {
     EXPECT_DOUBLE_EQ(self["over"].get<double>(), 0.0) << method;
     EXPECT_DOUBLE_EQ(self["support_in_objects"].get<double>(), 0.0) << method;
   }
+  // Another program's objects (--labels, <stem>.objects.pcd): the written objects scored again
+  // give the method's scores, without a time.
+  const Result labelled = run("--objects --repeat 0 --quiet --object-methods pcl_organized --labels mine=" +
+                              quote((objects_dir / "pcl_organized").string()) + " --json " + quote(json_file.string()) +
+                              " " + quote(kTabletop));
+  ASSERT_EQ(labelled.exit_code, 0) << labelled.err;
+  EXPECT_NE(labelled.out.find("\n| mine | 1 | - | - |"), std::string::npos) << labelled.out;
+  const nlohmann::json both = nlohmann::json::parse(readFile(json_file))["scenes"][0]["methods"];
+  for (const std::string score : {"objects", "object_iou", "objects_found", "under", "over", "support_in_objects"}) {
+    EXPECT_EQ(both["mine"][score], both["pcl_organized"][score]) << score;
+  }
+  const Result missing =
+      run("--objects --repeat 0 --quiet --object-methods pcl_organized --labels mine=" + quote(dir_.string()) + " " +
+          quote(kTabletop));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("tabletop.kinect.objects.pcd"), std::string::npos) << missing.err;
 }
 
 TEST_F(PcdCompare, ObjectOptionsAreRefusedWithThePlaneComparison) {
@@ -595,6 +611,8 @@ TEST_F(PcdCompare, ObjectOptionsAreRefusedWithThePlaneComparison) {
   expectUsageError(run("--write-objects " + quote((dir_ / "o").string()) + " " + quote(kStaircase)), "pcd_compare",
                    "--objects");
   expectUsageError(run("--objects --object-methods cpc " + quote(kStaircase)), "pcd_compare", "--object-methods");
+  expectUsageError(run("--objects --labels lccp=" + quote(dir_.string()) + " " + quote(kStaircase)), "pcd_compare",
+                   "lccp is already a method");
   EXPECT_FALSE(fs::exists(dir_ / "o"));
 }
 
