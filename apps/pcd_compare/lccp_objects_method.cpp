@@ -3,10 +3,11 @@
 // PCL's LCCP (Stein et al., "Object partitioning using local convexity", CVPR 2014): supervoxels
 // (pcl::SupervoxelClustering) joined across convex edges by pcl::LCCPSegmentation, every
 // setting PCL's examples/segmentation/example_lccp_segmentation's default, or with that
-// example's switches -ec -sc (extended convexity, k = 1, and the sanity criterion). LCCP partitions
-// every surface, the table too and knows no support: its largest segment is taken as the
-// table and left out, and segments of at most 1000 points are left out as the organized
-// pipeline's clusters are (pcl_organized_objects_method.cpp); the rest are the objects.
+// example's switches -ec -sc (extended convexity, k = 1, and the sanity criterion). LCCP
+// partitions every surface, the table too, and knows no support: its largest segment is taken
+// as the table and left out, and segments of at most 1000 points are left out as the organized
+// pipeline's clusters are (pcl_organized_objects_method.cpp); the rest are the objects. The
+// time is that of the PCL calls; leaving segments out is part of turning them into labels.
 
 #include <pcl/segmentation/lccp_segmentation.h>
 #include <pcl/segmentation/supervoxel_clustering.h>
@@ -41,10 +42,11 @@ class LccpObjectsMethod : public Method {
 
   std::string parameters() const override {
     std::ostringstream text;
-    text << "PCL's example_lccp_segmentation" << (sanity_criterion_ ? " -ec -sc" : "")
-         << ", otherwise its defaults: pcl::SupervoxelClustering<PointXYZ> voxel resolution " << kVoxelResolution
-         << " m, seed resolution " << kSeedResolution << " m, colour/spatial/normal importance " << kColorImportance
-         << "/" << kSpatialImportance << "/" << kNormalImportance
+    text << (sanity_criterion_ ? "PCL's example_lccp_segmentation -ec -sc, otherwise its defaults"
+                               : "PCL's example_lccp_segmentation's defaults")
+         << ": pcl::SupervoxelClustering<PointXYZ> voxel resolution " << kVoxelResolution << " m, seed resolution "
+         << kSeedResolution << " m, colour/spatial/normal importance " << kColorImportance << "/" << kSpatialImportance
+         << "/" << kNormalImportance
          << ", no single-camera transform, no refinement; pcl::LCCPSegmentation concavity tolerance "
          << kConcavityToleranceDegrees << " deg, smoothness check " << kSmoothnessThreshold << ", k factor "
          << k_factor_ << ", sanity criterion " << (sanity_criterion_ ? "on" : "off") << ", min segment size "
