@@ -23,6 +23,9 @@ Inputs:
                    --quirks and each --chart-run TITLE=JSON (pcd_compare --json on another data
                    set: the bundled scenes, the real frames); fills "chart" with the image and
                    the runs it was drawn from.
+  --objects JSON   pcd_compare --objects --json on the mOSD learn half (../shared/data/osd-learn);
+                   fills "objects" (a row per object method: the object scores of
+                   ../shared/tools/osd_scores.py --objects, objects a frame, ms).
 Any one of them may be given alone. --dry-run prints the parts instead of writing.
 
 Example:
@@ -175,6 +178,44 @@ def resolution_part(path):
             "peak memory the call adds to the process (VmHWM after it, over that before it):\n\n" + table + "\n")
 
 
+# The objects (issue 59) -------------------------------------------------------------------------
+
+# pcd_compare's object methods as the table names them; another method (--labels) by its name.
+OBJECT_METHODS = {
+    "floodplane": "floodplane (`floodplane`)",
+    "pcl_organized": "PCL's organized pipeline (`pcl_organized`, the demo's settings)",
+    "lccp": "LCCP (`lccp`, PCL's example's defaults)",
+    "lccp_ec_sc": "LCCP (`lccp_ec_sc`, the example's `-ec -sc`)",
+}
+OBJECT_SCORES = ["object_iou", "objects_found", "under", "over", "support_in_objects"]
+
+
+def objects_part(path):
+    """The object methods' means of a pcd_compare --objects --json run, a row each in run order."""
+    try:
+        report = json.loads(pathlib.Path(path).read_text(encoding="utf-8"))
+        means, scenes = report["means"], report["scenes"]
+        rows = []
+        for method, row in means.items():
+            scores = [row[key] for key in OBJECT_SCORES]
+            rows.append((method, scores, row["objects"], row["median_ms"], row["scenes"]))
+    except (OSError, ValueError, TypeError, KeyError) as error:
+        raise Unusable(f"{path}: not the JSON of pcd_compare --objects ({error!r})") from error
+    if not rows or any(not isinstance(score, (int, float)) for _, scores, *_ in rows for score in scores):
+        raise Unusable(f"{path}: no object scores (pcd_compare --objects on frames with object labels)")
+    date = datetime.date.fromtimestamp(pathlib.Path(path).stat().st_mtime).isoformat()
+    out = (f"Run {stamp(date)}, {len(scenes)} files; means over the files, ms the mean of each file's median "
+           "time:\n\n| method | object_iou | found | under | over | table in objects | objects a frame | ms |\n"
+           "|---|---:|---:|---:|---:|---:|---:|---:|\n")
+    for method, scores, objects, ms, files in rows:
+        if files != len(scenes):
+            raise Unusable(f"{path}: {method} ran on {files} of the {len(scenes)} files")
+        time = "-" if ms is None else f"{ms:.0f}"  # --labels rows: not run by pcd_compare
+        out += (f"| {OBJECT_METHODS.get(method, method)} | " + " | ".join(f"{score:.3f}" for score in scores)
+                + f" | {objects:.1f} | {time} |\n")
+    return out
+
+
 # The chart ------------------------------------------------------------------------------------
 
 def run_description(title, path):
@@ -225,14 +266,15 @@ def main():
                                         "(bench/figures/speed_accuracy.png)")
     parser.add_argument("--chart-run", action="append", type=speed_accuracy_chart.titled_run, metavar="TITLE=JSON",
                         help="a pcd_compare run of another data set, a panel of --chart's (repeatable)")
+    parser.add_argument("--objects", help="pcd_compare --objects JSON of the mOSD learn half")
     parser.add_argument("--bench-readme", default=str(BENCH_README), help="the page to update")
     parser.add_argument("--readme", default=str(README), help="the README whose speed sentence to update")
     parser.add_argument("--dry-run", action="store_true", help="print the parts, write nothing")
     args = parser.parse_args()
     if args.chart_run and not args.chart:
         parser.error("--chart-run gives a panel of the chart: give --chart PNG too")
-    if not (args.speed or args.report or args.quirks or args.resolution or args.chart):
-        parser.error("give at least one of --speed, --report, --quirks, --resolution, --chart")
+    if not (args.speed or args.report or args.quirks or args.resolution or args.chart or args.objects):
+        parser.error("give at least one of --speed, --report, --quirks, --resolution, --chart, --objects")
     if args.chart and not chart_runs(args):
         parser.error("--chart needs a pcd_compare run: --chart-run TITLE=JSON, --report or --quirks")
     try:
@@ -248,6 +290,8 @@ def main():
                 args.quirks, "Report split with the quirks (--quantize-bits 9 --warp 3 --speckle --bend 0.02)")
         if args.resolution:
             bench_parts["resolution"] = resolution_part(args.resolution)
+        if args.objects:
+            bench_parts["objects"] = objects_part(args.objects)
         panels = []
         if args.chart:
             runs = chart_runs(args)

@@ -26,6 +26,8 @@ middle
 <!-- figures:accuracy end -->
 <!-- figures:accuracy-quirks begin -->
 <!-- figures:accuracy-quirks end -->
+<!-- figures:objects begin -->
+<!-- figures:objects end -->
 <!-- figures:resolution begin -->
 <!-- figures:resolution end -->
 after
@@ -144,7 +146,7 @@ def test_refuses_a_page_without_its_markers_and_writes_neither_page(pages):
 
 def test_the_real_pages_carry_every_marker_the_script_fills():
     bench = (SOURCE / "bench/README.md").read_text()
-    for name in ("speed", "accuracy", "accuracy-quirks", "chart"):
+    for name in ("speed", "accuracy", "accuracy-quirks", "chart", "objects"):
         assert bench.count(f"<!-- figures:{name} begin -->") == 1, name
         assert bench.count(f"<!-- figures:{name} end -->") == 1, name
     readme = (SOURCE / "README.md").read_text()
@@ -183,3 +185,42 @@ def test_a_resolution_run_without_every_size_is_refused_and_nothing_is_written(p
     assert done.returncode != 0
     assert "resolution.json" in done.stderr and "resolution_sweep.py" in done.stderr
     assert (pages / "bench.md").read_text() == before
+
+
+def object_report(scored=True):
+    """pcd_compare --objects --json of two files: PCL's pipeline, and another program's objects
+    (--labels: no time)."""
+    def mean(iou, found, under, over, support, objects, ms):
+        row = {"scenes": 2, "scenes_with_ground_truth": 2, "median_ms": ms, "min_ms": ms, "objects": objects}
+        scores = dict(zip(["object_iou", "objects_found", "under", "over", "support_in_objects"],
+                          [iou, found, under, over, support]))
+        row.update(scores if scored else {key: None for key in scores})
+        return row
+    return {"configuration": {}, "scenes": [{"name": "learn0"}, {"name": "learn1"}],
+            "means": {"pcl_organized": mean(0.7481, 0.6704, 0.2428, 0.0, 0.0034, 2.6, 95.9),
+                      "mine": mean(0.5, 0.25, 0.125, 0.0625, 0.01, 3.0, None)}}
+
+
+def test_writes_the_objects_table_a_row_per_method(pages):
+    (pages / "objects.json").write_text(json.dumps(object_report()))
+    done = run(pages, "--objects", pages / "objects.json")
+    assert done.returncode == 0, done.stderr
+    page = (pages / "bench.md").read_text()
+    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")] for line in page.splitlines()
+            if line.startswith("| PCL") or line.startswith("| mine")]
+    assert rows == [["PCL's organized pipeline (`pcl_organized`, the demo's settings)", "0.748", "0.670", "0.243",
+                     "0.000", "0.003", "2.6", "96"],
+                    ["mine", "0.500", "0.250", "0.125", "0.062", "0.010", "3.0", "-"]]
+    assert "2 files" in page and page.startswith("# Page\nbefore\n") and page.endswith("after\n")
+
+
+def test_refuses_an_objects_run_without_scores(pages):
+    (pages / "objects.json").write_text(json.dumps(object_report(scored=False)))
+    done = run(pages, "--objects", pages / "objects.json")
+    assert done.returncode == 1
+    assert "no object scores" in done.stderr
+    assert (pages / "bench.md").read_text() == BENCH_PAGE
+    (pages / "objects.json").write_text(json.dumps(compare_report()))  # a plane comparison
+    done = run(pages, "--objects", pages / "objects.json")
+    assert done.returncode == 1
+    assert "not the JSON of pcd_compare --objects" in done.stderr
