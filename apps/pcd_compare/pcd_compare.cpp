@@ -562,6 +562,10 @@ void checkPaths(Options& options) {
   if (!options.objects_dir.empty()) {
     floodplane::cli::outputKind("--write-objects", options.objects_dir, {},
                                 "--write-objects names a directory: it writes <method>/<scene>.objects.pcd per input");
+    if (fs::exists(options.objects_dir) && !fs::is_directory(options.objects_dir)) {
+      throw std::invalid_argument("--write-objects " + options.objects_dir +
+                                  " is a file; --write-objects names a directory");
+    }
   }
   options.label_sources = labelSources(options.labels);
   if (!options.ground_truth_dir.empty() && !fs::is_directory(options.ground_truth_dir)) {

@@ -614,6 +614,9 @@ TEST_F(PcdCompare, ObjectOptionsAreRefusedWithThePlaneComparison) {
   expectUsageError(run("--objects --labels lccp=" + quote(dir_.string()) + " " + quote(kStaircase)), "pcd_compare",
                    "lccp is already a method");
   EXPECT_FALSE(fs::exists(dir_ / "o"));
+  std::ofstream(dir_ / "file") << "not a directory";
+  expectUsageError(run("--objects --write-objects " + quote((dir_ / "file").string()) + " " + quote(kStaircase)),
+                   "pcd_compare", "is a file");
 }
 
 }  // namespace
