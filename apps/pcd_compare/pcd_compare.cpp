@@ -276,12 +276,27 @@ std::string minutes(double seconds) {
   return text;
 }
 
+// The name of each input in the tables and image files, in the order of `files` (empty for
+// an input the expansion found bad): its file name without extension, or, for a second file of
+// one name from another directory, "<directory>_<name>", so that the two do not share a row
+// label and an image file.
+std::vector<std::string> sceneNames(const std::vector<floodplane::io::InputFile>& files) {
+  std::vector<std::string> names;
+  std::set<std::string> taken;
+  for (const floodplane::io::InputFile& file : files) {
+    std::string name = file.error.empty() ? sceneName(file.path) : "";
+    if (!name.empty() && !taken.insert(name).second)
+      name = fs::path(file.path).parent_path().filename().string() + "_" + name;
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
 // Compares every input, going on past files that cannot be read (listed in report["failed"])
 // and label files that are missing (report["label_problems"]).
-void compareAll(const Options& options, const std::vector<floodplane::io::InputFile>& files, Methods& methods,
-                Json& report, MissingTuned& missing) {
+void compareAll(const Options& options, const std::vector<floodplane::io::InputFile>& files,
+                const std::vector<std::string>& names, Methods& methods, Json& report, MissingTuned& missing) {
   const auto start = Clock::now();
-  std::set<std::string> names;
   for (std::size_t i = 0; i < files.size(); ++i) {
     const floodplane::io::InputFile& file = files[i];
     if (!options.quiet && files.size() > 1) {
@@ -296,6 +311,7 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
     try {
       if (!file.error.empty()) throw std::runtime_error(file.error);
       InputCloud input = loadInputCloud(file.path, options.camera);
+      input.name = names[i];
       if (!options.quiet && std::find(input.valid.begin(), input.valid.end(), 1) == input.valid.end()) {
         std::cerr << "pcd_compare: note: " << file.path << ": " << floodplane::cli::kEmptyFrameNote << std::endl;
       }
@@ -308,10 +324,6 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
           reportLabelProblem(input, "--ground-truth", error.what(), report);
         }
       }
-      // Scenes are named by their file name; two files of one name from different
-      // directories would share a row label and an image file.
-      if (!names.insert(input.name).second)
-        input.name = fs::path(file.path).parent_path().filename().string() + "_" + input.name;
       report["scenes"].push_back(compareScene(options, methods, input, missing, report));
     } catch (const std::exception& error) {
       std::cerr << "pcd_compare: error: " << file.path << ": " << error.what() << "\n";
@@ -459,6 +471,39 @@ void checkPaths(Options& options) {
   options.camera = floodplane::cli::depthCamera(options.depth);
 }
 
+// Every file the run would write: --json's report, the images of --png and --png3d.
+std::vector<std::string> outputsOfRun(const Options& options, const std::vector<std::string>& names) {
+  std::vector<std::string> outputs;
+  if (!options.json_file.empty()) outputs.push_back(options.json_file);
+  for (const std::string& directory : {options.png_dir, options.png3d_dir}) {
+    if (directory.empty()) continue;
+    for (const std::string& name : names) {
+      if (!name.empty()) outputs.push_back((fs::path(directory) / (name + ".png")).string());
+    }
+  }
+  return outputs;
+}
+
+// Every file the run reads: the inputs, their label files of --labels and --ground-truth
+// (either name label_files.h allows), the tuned values.
+std::vector<std::string> inputsOfRun(const Options& options, const std::vector<floodplane::io::InputFile>& files,
+                                     const std::vector<std::string>& names) {
+  std::vector<std::string> inputs;
+  std::vector<std::string> label_directories;
+  for (const LabelSource& source : options.label_sources) label_directories.push_back(source.directory);
+  if (!options.ground_truth_dir.empty()) label_directories.push_back(options.ground_truth_dir);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (names[i].empty()) continue;
+    inputs.push_back(files[i].path);
+    for (const std::string& directory : label_directories) {
+      inputs.push_back((fs::path(directory) / (names[i] + ".labels.pcd")).string());
+      inputs.push_back((fs::path(directory) / (names[i] + ".png")).string());
+    }
+  }
+  if (!options.tuned_file.empty()) inputs.push_back(options.tuned_file);
+  return inputs;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -479,6 +524,20 @@ int main(int argc, char** argv) {
   if (const std::optional<std::string> problem = floodplane::cli::missingCamera(files, options.camera.has_value())) {
     return floodplane::cli::usageError(app, *problem);
   }
+  const std::vector<std::string> scene_names = sceneNames(files);
+  if (options.tuned && options.tuned_file.empty()) {
+    try {
+      options.tuned_file = defaultTunedFile();
+    } catch (const std::exception& error) {
+      std::cerr << "pcd_compare: error: " << error.what() << "\n";
+      return 1;
+    }
+  }
+  if (const std::optional<std::string> collision = floodplane::cli::outputOverwritingInput(
+          outputsOfRun(options, scene_names), inputsOfRun(options, files, scene_names))) {
+    return floodplane::cli::usageError(app,
+                                       *collision + "; nothing written: give --json, --png or --png3d another place");
+  }
   // Before any work: the comparison can take minutes, and every image would fail alike.
   if (const auto reason = options.png3d_dir.empty() ? std::nullopt : floodplane::view::renderingUnavailableReason()) {
     std::cerr << "pcd_compare: error: --png3d cannot draw in 3-D: " << *reason << "\n";
@@ -490,7 +549,6 @@ int main(int argc, char** argv) {
                  {"label_problems", Json::array()}};
   Methods methods;
   try {
-    if (options.tuned && options.tuned_file.empty()) options.tuned_file = defaultTunedFile();
     methods = makeMethods(options, report["configuration"]);
   } catch (const std::exception& error) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
@@ -498,7 +556,7 @@ int main(int argc, char** argv) {
   }
   if (!options.quiet) std::cout << markdownConfiguration(report) << std::flush;
   MissingTuned missing;
-  compareAll(options, files, methods, report, missing);
+  compareAll(options, files, scene_names, methods, report, missing);
   addMeans(report);
   std::cout << markdownMeans(report) << std::flush;
   if (options.misses) std::cout << markdownMisses(report) << std::flush;

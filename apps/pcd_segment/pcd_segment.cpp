@@ -363,6 +363,34 @@ bool sameFile(const std::string& a, const std::string& b) {
   return fs::equivalent(a, b, error) && !error;
 }
 
+// Every file the run would write (cf. segmentFile, addSnapshotOf, writeTrackSummary), for the
+// check that none of them is an input.
+std::vector<std::string> outputsOfRun(const std::vector<floodplane::io::InputFile>& files, const Options& options,
+                                      bool single_file) {
+  std::vector<std::string> outputs;
+  for (const floodplane::io::InputFile& file : files) {
+    if (!file.error.empty()) continue;
+    const pcd_segment::OutputPaths paths = pcd_segment::outputPaths(file.path, options.output, single_file);
+    if (!paths.pcd.empty()) outputs.push_back(paths.pcd);
+    if (options.png || paths.pcd.empty()) outputs.push_back(paths.png);
+    if (options.json) outputs.push_back(paths.json);
+    if (options.overlay) outputs.push_back(paths.overlay);
+    if (options.snapshot) outputs.push_back(options.snapshot->empty() ? paths.snapshot : *options.snapshot);
+  }
+  if (options.track && options.json) outputs.push_back(pcd_segment::tracksPath(options.output, single_file));
+  return outputs;
+}
+
+// Every file the run reads.
+std::vector<std::string> inputsOfRun(const std::vector<floodplane::io::InputFile>& files, const Options& options) {
+  std::vector<std::string> inputs;
+  for (const floodplane::io::InputFile& file : files) {
+    if (file.error.empty()) inputs.push_back(file.path);
+  }
+  if (options.poses) inputs.push_back(*options.poses);
+  return inputs;
+}
+
 bool createOutputDirectory(const fs::path& directory) {
   if (directory.empty()) return true;
   std::error_code error;
@@ -587,6 +615,10 @@ int main(int argc, char** argv) {
   if (single_file && files.size() == 1 && sameFile(files.front().path, options.output)) {
     return floodplane::cli::usageError(
         app, "-o " + options.output + " is the input itself; give the " + file_kind + " file another name");
+  }
+  if (const std::optional<std::string> collision = floodplane::cli::outputOverwritingInput(
+          outputsOfRun(files, options, single_file), inputsOfRun(files, options))) {
+    return floodplane::cli::usageError(app, *collision + "; nothing written: give another -o");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
   if (options.overlay && std::all_of(files.begin(), files.end(), [](const floodplane::io::InputFile& file) {
