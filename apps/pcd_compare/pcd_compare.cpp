@@ -34,6 +34,7 @@
 #include "input_cloud.h"
 #include "io/atomic_file.h"
 #include "io/input_files.h"
+#include "io/json_text.h"
 #include "io/png_file.h"
 #include "label_files.h"
 #include "method.h"
@@ -562,7 +563,8 @@ int main(int argc, char** argv) {
   if (options.misses) std::cout << markdownMisses(report) << std::flush;
   bool written = true;
   try {
-    if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, report.dump(2) + "\n");
+    if (!options.json_file.empty())
+      floodplane::io::writeBytesAtomically(options.json_file, floodplane::io::jsonText(report));
   } catch (const std::exception& error) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
     written = false;

@@ -33,6 +33,7 @@
 #include "io/atomic_file.h"
 #include "io/input_files.h"
 #include "io/input_frame.h"
+#include "io/json_text.h"
 #include "io/label_palette.h"
 #include "io/labelled_cloud.h"
 #include "io/png_file.h"
@@ -273,7 +274,7 @@ std::string reportText(const std::string& input, const Cloud& points, const floo
     report.up = up->normalized();
     pcd_segment::describeRecords(report.planes, floodplane::describePlanes(planes, *up));
   }
-  return pcd_segment::reportJson(report).dump(2) + "\n";
+  return floodplane::io::jsonText(pcd_segment::reportJson(report));
 }
 
 struct FileResult {
@@ -517,7 +518,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
 bool writeTrackSummary(const pcd_segment::TrackSummary& summary, const Options& options, bool single_file) {
   const std::string path = pcd_segment::tracksPath(options.output, single_file);
   try {
-    floodplane::io::writeBytesAtomically(path, summary.json().dump(2) + "\n");
+    floodplane::io::writeBytesAtomically(path, floodplane::io::jsonText(summary.json()));
   } catch (const std::exception& error) {
     std::cerr << "pcd_segment: error: " << path << ": " << error.what() << "\n";
     return false;

@@ -3,6 +3,9 @@
 """Reading and writing files from Python: PCD points and labels, 16-bit depth PNGs, and
 segment_file, which must write what pcd_segment writes, byte for byte."""
 
+import json
+import os
+
 import numpy as np
 import pytest
 
@@ -193,3 +196,17 @@ def test_pcd_segment_keeps_the_colours_read_pcd_reads(tmp_path, pcd_segment):
     completed = pcd_segment(path, "-o", output)
     assert completed.returncode == 0, completed.stderr
     np.testing.assert_array_equal(floodplane.read_pcd(str(output), colors=True)[1], colors)
+
+
+def test_json_name_is_the_name_pcd_segment_writes_for_a_name_that_is_not_utf8(tmp_path, pcd_segment):
+    # Latin-1's e-acute, and a euro sign cut after two of its three bytes.
+    name = b"caf\xe9_\xe2\x82.pcd"
+    input = os.path.join(os.fsencode(tmp_path), name)
+    floodplane.write_labels_pcd(str(tmp_path / "plain.pcd"), two_plane_scene(), np.zeros((120, 160), np.uint32))
+    os.rename(os.fsencode(tmp_path / "plain.pcd"), input)
+    done = pcd_segment(os.fsdecode(input), "-o", tmp_path / "out", "--json", "--quiet")
+    assert done.returncode == 0, done.stderr
+    report = json.loads((tmp_path / "out" / os.fsdecode(b"caf\xe9_\xe2\x82.planes.json")).read_bytes())
+    assert report["input"] == floodplane.json_name(input) == str(tmp_path) + "/caf\ufffd_\ufffd.pcd"
+    assert floodplane.json_name(os.fsdecode(input)) == report["input"]
+    assert floodplane.json_name("plain.pcd") == "plain.pcd"
