@@ -27,6 +27,7 @@
 
 #include "cli/cli.h"
 #include "cli/depth_input.h"
+#include "cli/interrupt_cleanup.h"
 #include "cli/output_target.h"
 #include "comparison_image.h"
 #include "eval/segmentation_metrics.h"
@@ -341,7 +342,8 @@ constexpr const char* kDescription =
     "in the PCD, or --ground-truth), mean and weighted IoU, Hoover counts and the false-plane fraction; without "
     "ground truth the tables have the time and plane columns only. --json has every file and plane; "
     "bench/compare_tables.py makes the per-file tables and CSV from it, bench/tune_baselines.py tunes the "
-    "baselines.";
+    "baselines. An output that would overwrite a file the run reads is refused before any work; on Ctrl-C or "
+    "SIGTERM the unfinished outputs are removed and pcd_compare ends by that signal (a shell's status 130 or 143).";
 
 // The naming rule of label files (label_files.h), for --labels' and --ground-truth's help.
 constexpr const char* kLabelFiles =
@@ -508,6 +510,8 @@ std::vector<std::string> inputsOfRun(const Options& options, const std::vector<f
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before any thread starts (see there): Ctrl-C leaves no temporary file behind.
+  floodplane::cli::removeTemporariesOnInterrupt("pcd_compare");
   Options options;
   CLI::App app{kDescription, "pcd_compare"};
   floodplane::cli::addVersionFlag(app);
