@@ -88,7 +88,7 @@ std::string asciiPcd(const pcl::PointCloud<PointT>& cloud) {
       for (std::uint32_t c = 0; c < count; ++c) {
         if (!first) out << ' ';
         first = false;
-        const char* data = base + field.offset + c * pcl::getFieldSize(field.datatype);
+        const char* data = base + field.offset + c * static_cast<std::uint32_t>(pcl::getFieldSize(field.datatype));
         switch (field.datatype) {
           case pcl::PCLPointField::INT8:
             writeAsciiValue<std::int8_t>(out, data);
