@@ -9,7 +9,10 @@
 # pcd_to_pointcloud to play a PCD file, pcl_ros's filter nodelets to chain onto its inliers
 # (its rostest chains ExtractIndices) and rviz to look at the planes. The rest of floodplane
 # needs none of them (scripts/install_deps.sh). As root it installs them; otherwise it prints
-# the command to run and fails, so nothing half-happens.
+# the command to run and fails, so nothing half-happens. `--list` prints the packages, one a
+# line, and nothing else (scripts/check_ros_commands.sh checks each with dpkg -s).
+# After it, scripts/check_ros_commands.sh finds every executable the README's ROS section and
+# the rostests run: a package missing here fails there, not on a user's machine.
 set -euo pipefail
 
 packages=(
@@ -21,7 +24,8 @@ packages=(
   libdiagnostic-updater-dev                  # the node's status on /diagnostics (diagnostic_updater)
   libpcl-msgs-dev python3-pcl-msgs           # pcl_msgs: the inliers and model topics (C++; Python for rostopic echo)
   libnodelet-topic-tools-dev                 # NodeletLazy: the input subscribed only while an output is
-  libtf2-ros-dev                             # tf2_ros: ~target_frame, and static_transform_publisher
+  libtf2-ros-dev                             # tf2_ros: ~target_frame (the library)
+  tf2-tools                                  # tf2_ros's static_transform_publisher (README, target_frame.test)
   libpcl-ros-dev                             # pcl_ros's nodelets (ExtractIndices, ProjectInliers) chained onto inliers and model
   python3-rostest                            # rostest (roslaunch with a master on a port of its own)
   # The Python messages of the node's topics and of the ones floodplane_ros/Planes contains:
@@ -32,6 +36,11 @@ packages=(
   pcl-ros-tools                              # pcd_to_pointcloud: a PCD file played as a PointCloud2 topic
   rviz                                       # the planes seen
 )
+
+if [ "${1:-}" = "--list" ]; then
+  printf '%s\n' "${packages[@]}"
+  exit 0
+fi
 
 missing=()
 for p in "${packages[@]}"; do

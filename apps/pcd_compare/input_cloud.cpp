@@ -10,13 +10,17 @@
 
 namespace pcd_compare {
 
+std::string sceneName(const std::string& path) {
+  const std::string file = std::filesystem::path(path).filename().string();
+  const bool pcd = file.size() > 4 && file.compare(file.size() - 4, 4, ".pcd") == 0;
+  return pcd || floodplane::io::isDepthImagePath(file) ? file.substr(0, file.size() - 4) : file;
+}
+
 InputCloud loadInputCloud(const std::string& path, const std::optional<floodplane::io::DepthCamera>& camera) {
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(path, camera);
   InputCloud input;
   input.path = path;
-  const std::string file = std::filesystem::path(path).filename().string();
-  const bool pcd = file.size() > 4 && file.compare(file.size() - 4, 4, ".pcd") == 0;
-  input.name = pcd || floodplane::io::isDepthImagePath(file) ? file.substr(0, file.size() - 4) : file;
+  input.name = sceneName(path);
   // Recorded frames are often named by time ("frame_20121214T142255.814212"): digits after
   // the dot are a fraction of a second, not a sensor model.
   const std::size_t dot = input.name.rfind('.');

@@ -28,6 +28,9 @@ struct InputCloud {
   std::vector<std::uint8_t> valid;
 };
 
+/// The name of the input at `path`: its file name without ".pcd" or a depth image's ".png".
+std::string sceneName(const std::string& path);
+
 /// Loads an organized cloud, or a depth image back-projected with `camera`, through
 /// floodplane::io::loadInputFrame. Throws std::runtime_error with a one-line reason (without
 /// the path) if the file cannot be read as a frame. Any organized grid is a frame, a single

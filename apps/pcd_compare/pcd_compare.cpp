@@ -28,6 +28,7 @@
 
 #include "cli/cli.h"
 #include "cli/depth_input.h"
+#include "cli/interrupt_cleanup.h"
 #include "cli/output_target.h"
 #include "comparison_image.h"
 #include "eval/segmentation_metrics.h"
@@ -35,6 +36,7 @@
 #include "input_cloud.h"
 #include "io/atomic_file.h"
 #include "io/input_files.h"
+#include "io/json_text.h"
 #include "io/labelled_cloud.h"
 #include "io/pcd_file.h"
 #include "io/png_file.h"
@@ -348,12 +350,27 @@ std::string minutes(double seconds) {
   return text;
 }
 
+// The name of each input in the tables and image files, in the order of `files` (empty for
+// an input the expansion found bad): its file name without extension, or, for a second file of
+// one name from another directory, "<directory>_<name>", so that the two do not share a row
+// label and an image file.
+std::vector<std::string> sceneNames(const std::vector<floodplane::io::InputFile>& files) {
+  std::vector<std::string> names;
+  std::set<std::string> taken;
+  for (const floodplane::io::InputFile& file : files) {
+    std::string name = file.error.empty() ? sceneName(file.path) : "";
+    if (!name.empty() && !taken.insert(name).second)
+      name = fs::path(file.path).parent_path().filename().string() + "_" + name;
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
 // Compares every input, going on past files that cannot be read (listed in report["failed"])
 // and label files that are missing (report["label_problems"]).
-void compareAll(const Options& options, const std::vector<floodplane::io::InputFile>& files, Methods& methods,
-                Json& report, MissingTuned& missing) {
+void compareAll(const Options& options, const std::vector<floodplane::io::InputFile>& files,
+                const std::vector<std::string>& names, Methods& methods, Json& report, MissingTuned& missing) {
   const auto start = Clock::now();
-  std::set<std::string> names;
   for (std::size_t i = 0; i < files.size(); ++i) {
     const floodplane::io::InputFile& file = files[i];
     if (!options.quiet && files.size() > 1) {
@@ -368,6 +385,7 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
     try {
       if (!file.error.empty()) throw std::runtime_error(file.error);
       InputCloud input = loadInputCloud(file.path, options.camera);
+      input.name = names[i];
       if (!options.quiet && std::find(input.valid.begin(), input.valid.end(), 1) == input.valid.end()) {
         std::cerr << "pcd_compare: note: " << file.path << ": " << floodplane::cli::kEmptyFrameNote << std::endl;
       }
@@ -380,10 +398,6 @@ void compareAll(const Options& options, const std::vector<floodplane::io::InputF
           reportLabelProblem(input, "--ground-truth", error.what(), report);
         }
       }
-      // Scenes are named by their file name; two files of one name from different
-      // directories would share a row label and an image file.
-      if (!names.insert(input.name).second)
-        input.name = fs::path(file.path).parent_path().filename().string() + "_" + input.name;
       report["scenes"].push_back(options.objects ? compareObjects(options, methods, input, report)
                                                  : compareScene(options, methods, input, missing, report));
     } catch (const std::exception& error) {
@@ -402,7 +416,9 @@ constexpr const char* kDescription =
     "ground truth the tables have the time and plane columns only. --json has every file and plane; "
     "bench/compare_tables.py makes the per-file tables and CSV from it, bench/tune_baselines.py tunes the "
     "baselines. With --objects it compares object segmentations instead (the objects on the planes: PCL's "
-    "organized tabletop pipeline and LCCP), scored against object labels as the mOSD frames carry them.";
+    "organized tabletop pipeline and LCCP), scored against object labels as the mOSD frames carry them. An output "
+    "that would overwrite a file the run reads is refused before any work; on Ctrl-C or SIGTERM the unfinished "
+    "outputs are removed and pcd_compare ends by that signal (a shell's status 130 or 143).";
 
 // The naming rule of label files (label_files.h), for --labels' and --ground-truth's help.
 constexpr const char* kLabelFiles =
@@ -574,9 +590,56 @@ void checkPaths(Options& options) {
   options.camera = floodplane::cli::depthCamera(options.depth);
 }
 
+// Every file the run would write: --json's report, the images of --png and --png3d, the objects
+// of --write-objects.
+std::vector<std::string> outputsOfRun(const Options& options, const std::vector<std::string>& names) {
+  std::vector<std::string> outputs;
+  if (!options.json_file.empty()) outputs.push_back(options.json_file);
+  for (const std::string& directory : {options.png_dir, options.png3d_dir}) {
+    if (directory.empty()) continue;
+    for (const std::string& name : names) {
+      if (!name.empty()) outputs.push_back((fs::path(directory) / (name + ".png")).string());
+    }
+  }
+  if (options.objects && !options.objects_dir.empty()) {
+    const std::vector<std::string> methods =
+        options.object_methods.empty() ? objectMethodNames() : firstOfEach(options.object_methods);
+    for (const std::string& method : methods) {
+      for (const std::string& name : names) {
+        if (!name.empty())
+          outputs.push_back((fs::path(options.objects_dir) / method / (name + ".objects.pcd")).string());
+      }
+    }
+  }
+  return outputs;
+}
+
+// Every file the run reads: the inputs, their label files of --labels and --ground-truth
+// (either name label_files.h allows), the tuned values.
+std::vector<std::string> inputsOfRun(const Options& options, const std::vector<floodplane::io::InputFile>& files,
+                                     const std::vector<std::string>& names) {
+  std::vector<std::string> inputs;
+  std::vector<std::string> label_directories;
+  for (const LabelSource& source : options.label_sources) label_directories.push_back(source.directory);
+  if (!options.ground_truth_dir.empty()) label_directories.push_back(options.ground_truth_dir);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (names[i].empty()) continue;
+    inputs.push_back(files[i].path);
+    for (const std::string& directory : label_directories) {
+      inputs.push_back((fs::path(directory) / (names[i] + ".labels.pcd")).string());
+      inputs.push_back((fs::path(directory) / (names[i] + ".objects.pcd")).string());
+      inputs.push_back((fs::path(directory) / (names[i] + ".png")).string());
+    }
+  }
+  if (!options.tuned_file.empty()) inputs.push_back(options.tuned_file);
+  return inputs;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before any thread starts (see there): Ctrl-C leaves no temporary file behind.
+  floodplane::cli::removeTemporariesOnInterrupt("pcd_compare");
   Options options;
   CLI::App app{kDescription, "pcd_compare"};
   floodplane::cli::addVersionFlag(app);
@@ -595,6 +658,20 @@ int main(int argc, char** argv) {
   if (const std::optional<std::string> problem = floodplane::cli::missingCamera(files, options.camera.has_value())) {
     return floodplane::cli::usageError(app, *problem);
   }
+  const std::vector<std::string> scene_names = sceneNames(files);
+  if (options.tuned && options.tuned_file.empty()) {
+    try {
+      options.tuned_file = defaultTunedFile();
+    } catch (const std::exception& error) {
+      std::cerr << "pcd_compare: error: " << error.what() << "\n";
+      return 1;
+    }
+  }
+  if (const std::optional<std::string> collision = floodplane::cli::outputOverwritingInput(
+          outputsOfRun(options, scene_names), inputsOfRun(options, files, scene_names))) {
+    return floodplane::cli::usageError(app,
+                                       *collision + "; nothing written: give --json, --png or --png3d another place");
+  }
   // Before any work: the comparison can take minutes, and every image would fail alike.
   if (const auto reason = options.png3d_dir.empty() ? std::nullopt : floodplane::view::renderingUnavailableReason()) {
     std::cerr << "pcd_compare: error: --png3d cannot draw in 3-D: " << *reason << "\n";
@@ -606,7 +683,6 @@ int main(int argc, char** argv) {
                  {"label_problems", Json::array()}};
   Methods methods;
   try {
-    if (options.tuned && options.tuned_file.empty()) options.tuned_file = defaultTunedFile();
     methods = makeMethods(options, report["configuration"]);
     if (options.objects) {
       report["configuration"]["timing"] =
@@ -622,7 +698,7 @@ int main(int argc, char** argv) {
   }
   if (!options.quiet) std::cout << markdownConfiguration(report) << std::flush;
   MissingTuned missing;
-  compareAll(options, files, methods, report, missing);
+  compareAll(options, files, scene_names, methods, report, missing);
   if (options.objects) {
     addObjectMeans(report);
     std::cout << markdownObjectMeans(report) << std::flush;
@@ -633,7 +709,8 @@ int main(int argc, char** argv) {
   if (options.misses) std::cout << markdownMisses(report) << std::flush;
   bool written = true;
   try {
-    if (!options.json_file.empty()) floodplane::io::writeBytesAtomically(options.json_file, report.dump(2) + "\n");
+    if (!options.json_file.empty())
+      floodplane::io::writeBytesAtomically(options.json_file, floodplane::io::jsonText(report));
   } catch (const std::exception& error) {
     std::cerr << "pcd_compare: error: " << error.what() << "\n";
     written = false;

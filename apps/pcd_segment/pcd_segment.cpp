@@ -33,6 +33,7 @@
 #include "io/atomic_file.h"
 #include "io/input_files.h"
 #include "io/input_frame.h"
+#include "io/json_text.h"
 #include "io/label_palette.h"
 #include "io/labelled_cloud.h"
 #include "io/png_file.h"
@@ -76,7 +77,8 @@ struct Options {
   bool png = false;
   bool overlay = false;
   bool json = false;
-  std::vector<double> up;                       ///< --up X,Y,Z, or empty
+  std::vector<std::string> up;                  ///< --up X,Y,Z or --up viewpoint, or empty
+  bool up_from_viewpoint = false;               ///< --up viewpoint: each input's own
   std::vector<double> gravity;                  ///< --gravity X,Y,Z, or empty
   std::optional<Eigen::Vector3d> up_direction;  ///< from `up` or `gravity`, checked
   bool quiet = false;
@@ -145,16 +147,20 @@ void addOutputFlags(CLI::App& app, Options& options) {
 
 // The up direction the planes of --json are classed by (floodplane/plane_classes.h).
 void addUpOptions(CLI::App& app, Options& options, CLI::Option* json) {
+  // One token (allow_extra_args(false)), so that "--up viewpoint scene.pcd" leaves the input.
   CLI::Option* up =
       app.add_option("--up", options.up,
                      "With --json: the up direction (against gravity) in the cloud's frame, e.g. 0,-1,0 for a level "
                      "camera with y down (PCL's and ROS's optical frames), any length; each plane in "
                      "<name>.planes.json then has a \"class\" (floor, ceiling, wall, horizontal_surface or other) "
                      "and its \"height_above_floor\" in metres (null when no floor is in view). An IMU at rest "
-                     "measures this direction")
+                     "measures this direction. viewpoint: each input's own, from its PCD header's VIEWPOINT "
+                     "rotation, the camera's orientation in a world whose z is up (as pcd_synth writes it; its "
+                     "<scene>.planes.json has the same \"up\"); an input whose VIEWPOINT has no rotation (the "
+                     "identity: most files) or a depth image fails with the reason")
           ->delimiter(',')
-          ->expected(3)
-          ->type_name("X,Y,Z")
+          ->allow_extra_args(false)
+          ->type_name("X,Y,Z|viewpoint")
           ->needs(json);
   app.add_option("--gravity", options.gravity,
                  "The same as --up given the other way round: the direction gravity pulls (down) in the cloud's "
@@ -168,9 +174,30 @@ void addUpOptions(CLI::App& app, Options& options, CLI::Option* json) {
 
 // The up direction of --up or --gravity, or nothing; throws std::invalid_argument naming the
 // flag of a vector that is no direction.
+// The numbers of --up X,Y,Z; throws std::invalid_argument naming the flag for anything else.
+std::vector<double> upNumbers(const std::vector<std::string>& texts) {
+  std::string given;
+  for (const std::string& text : texts) given += (given.empty() ? "" : ",") + text;
+  const std::invalid_argument error("--up takes X,Y,Z (three numbers) or viewpoint, not '" + given + "'");
+  if (texts.size() != 3) throw error;
+  std::vector<double> values;
+  for (const std::string& text : texts) {
+    std::size_t used = 0;
+    try {
+      values.push_back(std::stod(text, &used));
+    } catch (const std::exception&) {
+      throw error;
+    }
+    if (used != text.size()) throw error;
+  }
+  return values;
+}
+
+// --up viewpoint is each input's own: upFromViewpoint.
 std::optional<Eigen::Vector3d> upDirection(const Options& options) {
   const bool from_gravity = !options.gravity.empty();
-  const std::vector<double>& values = from_gravity ? options.gravity : options.up;
+  if (!from_gravity && (options.up.empty() || options.up_from_viewpoint)) return std::nullopt;
+  const std::vector<double> values = from_gravity ? options.gravity : upNumbers(options.up);
   if (values.empty()) return std::nullopt;
   const Eigen::Vector3d vector(values.at(0), values.at(1), values.at(2));
   if (!vector.allFinite() || vector.isZero(0.0)) {
@@ -178,6 +205,20 @@ std::optional<Eigen::Vector3d> upDirection(const Options& options) {
                                 " X,Y,Z must be a direction: three finite numbers, not all zero");
   }
   return from_gravity ? Eigen::Vector3d(-vector) : vector;
+}
+
+// The up direction of --up viewpoint for `points`: the world's z turned back by the camera's
+// orientation in the world, the rotation of the file's VIEWPOINT. Throws std::runtime_error
+// when it has none (the identity, which PCL writes for a cloud without a pose).
+Eigen::Vector3d upFromViewpoint(const Cloud& points) {
+  const Eigen::Quaterniond world_from_camera = points.sensor_orientation_.cast<double>().normalized();
+  if (!world_from_camera.coeffs().allFinite() ||
+      world_from_camera.angularDistance(Eigen::Quaterniond::Identity()) < 1e-6) {
+    throw std::runtime_error(
+        "--up viewpoint: the input has no VIEWPOINT rotation (the identity) to take the up direction from; give "
+        "--up X,Y,Z");
+  }
+  return world_from_camera.conjugate() * Eigen::Vector3d::UnitZ();
 }
 
 // The 3-D outputs. The checks run while parsing, so a bad value fails before any work.
@@ -273,7 +314,7 @@ std::string reportText(const std::string& input, const Cloud& points, const floo
     report.up = up->normalized();
     pcd_segment::describeRecords(report.planes, floodplane::describePlanes(planes, *up));
   }
-  return pcd_segment::reportJson(report).dump(2) + "\n";
+  return floodplane::io::jsonText(pcd_segment::reportJson(report));
 }
 
 struct FileResult {
@@ -297,6 +338,8 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
                        pcd_segment::CameraMotions* motions) {
   floodplane::io::InputFrame frame = floodplane::io::loadInputFrame(input, options.camera);
   const auto points = std::make_shared<Cloud>(std::move(frame.xyz));
+  const std::optional<Eigen::Vector3d> up =
+      options.json && options.up_from_viewpoint ? std::optional(upFromViewpoint(*points)) : options.up_direction;
   const std::size_t frames_taken = segmentation.getTracker().frameCount();
   if (motions) {
     if (const std::optional<Eigen::Matrix4d> motion = motions->motionTo(index)) segmentation.setCameraMotion(*motion);
@@ -340,7 +383,7 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
   }
   if (options.json) {
     outputs.add(paths.json, reportText(input, *points, segmentation.getParams(), segmented, segmentation.getTrackIds(),
-                                       options.up_direction, segmentation.getLastSegmentation().planes));
+                                       up, segmentation.getLastSegmentation().planes));
   }
   if (options.snapshot || options.view) {
     result.scene = pcd_segment::planeScene(points, *segmented.labels, segmented.regions, segmented.coefficients,
@@ -361,6 +404,34 @@ void addSnapshotOf(const pcd_segment::OutputPaths& paths, FileResult& result, co
 bool sameFile(const std::string& a, const std::string& b) {
   std::error_code error;
   return fs::equivalent(a, b, error) && !error;
+}
+
+// Every file the run would write (cf. segmentFile, addSnapshotOf, writeTrackSummary), for the
+// check that none of them is an input.
+std::vector<std::string> outputsOfRun(const std::vector<floodplane::io::InputFile>& files, const Options& options,
+                                      bool single_file) {
+  std::vector<std::string> outputs;
+  for (const floodplane::io::InputFile& file : files) {
+    if (!file.error.empty()) continue;
+    const pcd_segment::OutputPaths paths = pcd_segment::outputPaths(file.path, options.output, single_file);
+    if (!paths.pcd.empty()) outputs.push_back(paths.pcd);
+    if (options.png || paths.pcd.empty()) outputs.push_back(paths.png);
+    if (options.json) outputs.push_back(paths.json);
+    if (options.overlay) outputs.push_back(paths.overlay);
+    if (options.snapshot) outputs.push_back(options.snapshot->empty() ? paths.snapshot : *options.snapshot);
+  }
+  if (options.track && options.json) outputs.push_back(pcd_segment::tracksPath(options.output, single_file));
+  return outputs;
+}
+
+// Every file the run reads.
+std::vector<std::string> inputsOfRun(const std::vector<floodplane::io::InputFile>& files, const Options& options) {
+  std::vector<std::string> inputs;
+  for (const floodplane::io::InputFile& file : files) {
+    if (file.error.empty()) inputs.push_back(file.path);
+  }
+  if (options.poses) inputs.push_back(*options.poses);
+  return inputs;
 }
 
 bool createOutputDirectory(const fs::path& directory) {
@@ -489,7 +560,7 @@ std::size_t segmentAll(const std::vector<floodplane::io::InputFile>& files, cons
 bool writeTrackSummary(const pcd_segment::TrackSummary& summary, const Options& options, bool single_file) {
   const std::string path = pcd_segment::tracksPath(options.output, single_file);
   try {
-    floodplane::io::writeBytesAtomically(path, summary.json().dump(2) + "\n");
+    floodplane::io::writeBytesAtomically(path, floodplane::io::jsonText(summary.json()));
   } catch (const std::exception& error) {
     std::cerr << "pcd_segment: error: " << path << ": " << error.what() << "\n";
     return false;
@@ -560,6 +631,7 @@ int main(int argc, char** argv) {
   }
   try {
     options.camera = floodplane::cli::depthCamera(options.depth);
+    options.up_from_viewpoint = options.up == std::vector<std::string>{"viewpoint"};
     options.up_direction = upDirection(options);
   } catch (const std::invalid_argument& e) {
     return floodplane::cli::usageError(app, e.what());
@@ -587,6 +659,10 @@ int main(int argc, char** argv) {
   if (single_file && files.size() == 1 && sameFile(files.front().path, options.output)) {
     return floodplane::cli::usageError(
         app, "-o " + options.output + " is the input itself; give the " + file_kind + " file another name");
+  }
+  if (const std::optional<std::string> collision = floodplane::cli::outputOverwritingInput(
+          outputsOfRun(files, options, single_file), inputsOfRun(files, options))) {
+    return floodplane::cli::usageError(app, *collision + "; nothing written: give another -o");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;
   if (options.overlay && std::all_of(files.begin(), files.end(), [](const floodplane::io::InputFile& file) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "cli/cli.h"
+#include "cli/interrupt_cleanup.h"
 #include "cli/output_target.h"
 #include "io/atomic_file.h"
 #include "io/label_palette.h"
@@ -124,20 +125,21 @@ double missingFraction(const synth::RenderedFrame& frame) {
 }
 
 // Writes <stem>.pcd (text with --ascii), <stem>.planes.json and, with --png, <stem>.labels.png,
-// each atomically.
+// all or none (an error or an interrupt leaves none of the frame's files).
 void writeFrame(const std::string& stem, const synth::RenderedFrame& frame, const Options& options) {
-  floodplane::io::savePcd(
-      stem + ".pcd", synth::toPointCloud(frame),
-      options.ascii ? floodplane::io::PcdEncoding::ascii : floodplane::io::PcdEncoding::binary_compressed);
-  floodplane::io::writeBytesAtomically(stem + ".planes.json", synth::groundTruthJson(frame));
+  floodplane::io::AtomicFileGroup files;
+  files.add(stem + ".pcd", floodplane::io::encodePcd(synth::toPointCloud(frame),
+                                                     options.ascii ? floodplane::io::PcdEncoding::ascii
+                                                                   : floodplane::io::PcdEncoding::binary_compressed));
+  files.add(stem + ".planes.json", synth::groundTruthJson(frame));
   if (options.png) {
     std::vector<std::uint8_t> has_point;
     has_point.reserve(frame.points.size());
     for (const Eigen::Vector3f& point : frame.points) has_point.push_back(point.allFinite() ? 1 : 0);
-    floodplane::io::writePng(
-        stem + ".labels.png",
-        floodplane::io::labelImage(frame.labels, has_point, frame.intrinsics.width, frame.intrinsics.height));
+    files.add(stem + ".labels.png", floodplane::io::encodePng(floodplane::io::labelImage(
+                                        frame.labels, has_point, frame.intrinsics.width, frame.intrinsics.height)));
   }
+  files.commit();
 }
 
 std::string outputStem(const Options& options, const std::string& scene_name, synth::SensorModel sensor) {
@@ -439,12 +441,16 @@ constexpr const char* kDescription =
     "Renders scene files (JSON, see data/scenes/README.md), or N procedurally generated scenes (--random), "
     "into organized pcl::PointXYZL clouds: the measured point in x y z (NaN for no return) and the "
     "ground-truth plane id in label. Writes <scene>.<sensor>.pcd and <scene>.<sensor>.planes.json per scene "
-    "and sensor model into OUTDIR. Random scene i (from 0) has seed S + i and is named random_<seed, 4 "
+    "and sensor model into OUTDIR, the camera's up (the world's z in the camera frame) in the JSON's \"up\" and, as "
+    "the camera's orientation in the world, in the PCD's VIEWPOINT (pcd_segment --up viewpoint). Random scene i (from "
+    "0) has seed S + i and is named random_<seed, 4 "
     "digits>; the kinect and none frames show a room, the scanner frame blocks on a table (--family boards: "
     "boards_<seed>, 2 cm boards in a bare room, none and kinect only). With --sequence N, "
     "writes N frames of a camera walking through each scene instead: <scene>_f0000.<sensor>.pcd to "
     "<scene>_f<N-1>.<sensor>.pcd (and .planes.json), with one ground-truth id per surface over the whole "
-    "sequence, and <scene>.poses.json with each frame's camera pose.";
+    "sequence, and <scene>.poses.json with each frame's camera pose. A frame's files appear together once all are "
+    "written, or not at all; on Ctrl-C or SIGTERM the unfinished ones are removed and pcd_synth ends by that signal "
+    "(a shell's status 130 or 143).";
 
 // The scenes to render and how: scene files or --random (--family), a walking camera
 // (--sequence), the sensor models, the seed, the resolution, the output directory.
@@ -568,6 +574,8 @@ int reportFailures(const std::vector<std::string>& failed, const Options& option
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before any thread starts (see there): Ctrl-C leaves no temporary file behind.
+  floodplane::cli::removeTemporariesOnInterrupt("pcd_synth");
   Options options;
   CLI::App app{kDescription, "pcd_synth"};
   floodplane::cli::addVersionFlag(app);

@@ -23,6 +23,8 @@ planes are (floor, walls, tables), given the up direction: describe_planes(resul
 Open3D in and out: floodplane.open3d (imported on its own; it needs Open3D).
 """
 
+import os as _os
+
 import numpy as _numpy
 
 from ._floodplane import (
@@ -61,6 +63,7 @@ __all__ = [
     "__version__",
     "depth_to_points",
     "describe_planes",
+    "json_name",
     "label_colors",
     "read_depth_png",
     "read_labels_pcd",
@@ -100,6 +103,15 @@ def segment_file(input, output, *, intrinsics=None, depth_scale=1000.0, **params
     does (the same bytes): a PCD file, or a 16-bit depth PNG with intrinsics ((fx, fy, cx, cy),
     a 3 x 3 K or an Open3D PinholeCameraIntrinsic). Returns {'width', 'height', 'planes', 'ms'}."""
     return Segmenter(**params).segment_file(input, output, intrinsics=intrinsics, depth_scale=depth_scale)
+
+
+def json_name(path):
+    """The file name `path` (str, bytes or os.PathLike) as pcd_segment's and pcd_compare's JSON
+    reports write it: its bytes (os.fsencode) as UTF-8, each ill-formed sequence replaced with
+    U+FFFD, their writers' rule for a name that is not UTF-8. To find a file in their reports,
+    and for the JSON a script writes about files: json.dumps of a name that os.fsdecode made of
+    such bytes writes lone surrogates ("\\udce9"), which strict JSON readers refuse."""
+    return _os.fsencode(path).decode("utf-8", "replace")
 
 
 def label_colors(labels):

@@ -87,8 +87,8 @@ def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0
 
     Returns one dict per input, in the order of `paths`: {'input', 'output', 'planes', 'ms'}
     ('ms': the segmentation call on the worker), or {'input', 'error'} for a file that failed
-    (missing, broken, an output that cannot be written, two inputs of one name, a worker
-    lost); the other files go on. Bad parameters raise TypeError or ValueError here, before
+    (missing, broken, an output that cannot be written, two inputs of one name, an output that
+    is another input, a worker lost); the other files go on. Bad parameters raise TypeError or ValueError here, before
     any work is sent.
     """
     Segmenter(**params)  # checks the parameters in the caller's process
@@ -104,6 +104,15 @@ def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0
     os.makedirs(out_dir, exist_ok=True)
 
     results = [None] * len(inputs)
+    # The inputs by device and inode: an output that is one of them (a.labels.pcd given as an
+    # input beside a.pcd) would destroy it, so that input is refused, as pcd_segment refuses.
+    input_of_file = {}
+    for position, input in enumerate(inputs):
+        try:
+            status = os.stat(input)
+        except OSError:
+            continue
+        input_of_file.setdefault((status.st_dev, status.st_ino), given[position])
     first_of_output = {}
     tasks = []  # (position, absolute input, output)
     for position, input in enumerate(inputs):
@@ -115,6 +124,15 @@ def segment_files(client, paths, out_dir, *, intrinsics=None, depth_scale=1000.0
             }
             continue
         first_of_output[output] = given[position]
+        try:
+            status = os.stat(output)
+            overwritten = input_of_file.get((status.st_dev, status.st_ino))
+        except OSError:
+            overwritten = None
+        if overwritten is not None:
+            results[position] = {"input": given[position],
+                                 "error": f"its output {output} would overwrite the input {overwritten}"}
+            continue
         tasks.append((position, input, output))
 
     batches = [tasks[start:start + batch_size] for start in range(0, len(tasks), batch_size)]

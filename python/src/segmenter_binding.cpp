@@ -12,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "camera_intrinsics.h"
 #include "errors.h"
@@ -62,6 +63,12 @@ py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& 
   const std::string input = input_file.string();
   const std::string output = output_file.string();
   const std::string function = "Segmenter.segment_file";
+  // The same file by device and inode (another spelling, a link): refused before any work, as
+  // pcd_segment refuses an output over an input.
+  if (std::error_code error; std::filesystem::equivalent(input_file, output_file, error) && !error) {
+    throw py::value_error(function + ": the output '" + output + "' would overwrite the input '" + input +
+                          "'; nothing written");
+  }
   std::optional<DepthInput> depth;
   if (!intrinsics.is_none()) {
     const Intrinsics pinhole = intrinsicsFrom(intrinsics, function);

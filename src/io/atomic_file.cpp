@@ -72,8 +72,24 @@ void removeTemporaries(const std::vector<std::string>& temporaries) noexcept {
   }
 }
 
-// Writes all of `bytes` to `fd` and closes it; throws naming `path` and the system's reason
-// (ENOSPC: "No space left on device"), with `fd` closed.
+// Flushes `fd`'s data to the disk and closes it; throws naming `path` and the system's reason,
+// with `fd` closed. Before the rename: a crash or power loss after it then finds the new file
+// whole under the path, never an empty or partial one (the rename can reach the disk before
+// the data otherwise, as on ext4 with delalloc or XFS).
+void syncAndClose(int fd, const std::string& path) {
+  while (::fsync(fd) != 0) {
+    if (errno == EINTR) continue;
+    const int error = errno;
+    ::close(fd);
+    throw writeError(path, systemError(error));
+  }
+  // Some file systems (NFS) report a failed write only here. EINTR: the descriptor is closed
+  // all the same on Linux, and the data was written.
+  if (::close(fd) != 0 && errno != EINTR) throw writeError(path, systemError(errno));
+}
+
+// Writes all of `bytes` to `fd`, flushes them to the disk and closes it; throws naming `path`
+// and the system's reason (ENOSPC: "No space left on device"), with `fd` closed.
 void writeAndClose(int fd, std::string_view bytes, const std::string& path) {
   std::size_t written = 0;
   while (written < bytes.size()) {
@@ -86,9 +102,23 @@ void writeAndClose(int fd, std::string_view bytes, const std::string& path) {
     }
     written += static_cast<std::size_t>(count);
   }
-  // Some file systems (NFS) report a failed write only here. EINTR: the descriptor is closed
-  // all the same on Linux, and the data was written.
-  if (::close(fd) != 0 && errno != EINTR) throw writeError(path, systemError(errno));
+  syncAndClose(fd, path);
+}
+
+// Flushes the directories holding `paths` to the disk, so that the renames into them last
+// too; a directory that cannot be flushed (a file system without it) is left as it is, the
+// files themselves being flushed already.
+void syncDirectoriesOf(const std::vector<std::string>& paths) noexcept {
+  std::unordered_set<std::string> done;
+  for (const std::string& path : paths) {
+    std::string directory = std::filesystem::path(path).parent_path().string();
+    if (directory.empty()) directory = ".";
+    if (!done.insert(directory).second) continue;
+    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) continue;
+    ::fsync(fd);
+    ::close(fd);
+  }
 }
 
 }  // namespace
@@ -151,6 +181,10 @@ void AtomicFileGroup::addWrittenBy(const std::string& path,
   ::close(fd);
   try {
     write(temporary);
+    // Opened again for the flush alone: a writer that failed to write would have thrown.
+    const int written = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
+    if (written < 0) throw writeError(path, systemError(errno));
+    syncAndClose(written, path);
   } catch (...) {
     removeTemporaries({temporary});
     throw;
@@ -159,6 +193,14 @@ void AtomicFileGroup::addWrittenBy(const std::string& path,
 }
 
 void AtomicFileGroup::commit() {
+  std::vector<std::string> paths;
+  for (const Pending& file : pending_) paths.push_back(file.path);
+  renameAll();
+  // Outside the lock: other threads' writes need not wait for these flushes.
+  syncDirectoriesOf(paths);
+}
+
+void AtomicFileGroup::renameAll() {
   std::vector<Pending> pending = std::move(pending_);
   pending_.clear();
   LiveTemporaries& live = liveTemporaries();

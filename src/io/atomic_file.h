@@ -19,8 +19,9 @@ namespace floodplane::io {
 /// exception) removes its temporaries and leaves the paths as they were. If a rename fails
 /// part-way (after the checks commit() makes first, such as a directory at a path), the files
 /// the group already put in place are removed again: nothing of the group is left.
-/// No fsync: the goal is that no partial file ever appears under a path after a failed write,
-/// not durability across a power loss.
+/// Each temporary is flushed to the disk (fsync) before any rename, and the directories after
+/// them: after a crash or a power loss a path holds its previous file or the whole new one,
+/// never an empty or partial file.
 class AtomicFileGroup {
  public:
   AtomicFileGroup() = default;
@@ -53,6 +54,7 @@ class AtomicFileGroup {
     std::string temporary;
   };
   void checkNewPath(const std::string& path) const;
+  void renameAll();
   void discard() noexcept;
   std::vector<Pending> pending_;
 };

@@ -6,9 +6,14 @@
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <locale>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "io/atomic_file.h"
@@ -42,6 +47,87 @@ std::string binaryPcd(const pcl::PointCloud<PointT>& cloud) {
   return bytes;
 }
 
+// One value of a field as PCL's writeASCII writes it: integers as numbers, a float or double
+// with `precision` significant digits, NaN as "nan", and a float field named rgb as the
+// unsigned integer of its bits (several opaque colours are NaNs as floats).
+template <typename T>
+void writeAsciiValue(std::ostringstream& out, const char* data) {
+  T value;
+  std::memcpy(&value, data, sizeof(T));
+  if constexpr (std::is_floating_point_v<T>) {
+    if (std::isnan(value)) {
+      out << "nan";
+      return;
+    }
+    out << value;
+  } else if constexpr (std::is_signed_v<T>) {
+    out << static_cast<std::int64_t>(value);
+  } else {
+    out << static_cast<std::uint64_t>(value);
+  }
+}
+
+// PCL's ASCII layout, as its writeASCII<PointT> writes it with 9 significant digits (every
+// float round-trips exactly; PCL's default is 8), made in memory so that the file is written
+// by writeBytesAtomically, which checks every write.
+template <typename PointT>
+std::string asciiPcd(const pcl::PointCloud<PointT>& cloud) {
+  std::vector<pcl::PCLPointField> fields;
+  pcl::getFields<PointT>(fields);
+  fields.erase(std::remove_if(fields.begin(), fields.end(), [](const auto& field) { return field.name == "_"; }),
+               fields.end());
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.precision(9);
+  out << pcl::PCDWriter::generateHeader<PointT>(cloud) << "DATA ascii\n";
+  for (const PointT& point : cloud) {
+    const char* base = reinterpret_cast<const char*>(&point);
+    bool first = true;
+    for (const pcl::PCLPointField& field : fields) {
+      const std::uint32_t count = std::max<std::uint32_t>(field.count, 1);
+      for (std::uint32_t c = 0; c < count; ++c) {
+        if (!first) out << ' ';
+        first = false;
+        const char* data = base + field.offset + c * static_cast<std::uint32_t>(pcl::getFieldSize(field.datatype));
+        switch (field.datatype) {
+          case pcl::PCLPointField::INT8:
+            writeAsciiValue<std::int8_t>(out, data);
+            break;
+          case pcl::PCLPointField::UINT8:
+            writeAsciiValue<std::uint8_t>(out, data);
+            break;
+          case pcl::PCLPointField::INT16:
+            writeAsciiValue<std::int16_t>(out, data);
+            break;
+          case pcl::PCLPointField::UINT16:
+            writeAsciiValue<std::uint16_t>(out, data);
+            break;
+          case pcl::PCLPointField::INT32:
+            writeAsciiValue<std::int32_t>(out, data);
+            break;
+          case pcl::PCLPointField::UINT32:
+            writeAsciiValue<std::uint32_t>(out, data);
+            break;
+          case pcl::PCLPointField::FLOAT32:
+            if (field.name == "rgb") {
+              writeAsciiValue<std::uint32_t>(out, data);
+            } else {
+              writeAsciiValue<float>(out, data);
+            }
+            break;
+          case pcl::PCLPointField::FLOAT64:
+            writeAsciiValue<double>(out, data);
+            break;
+          default:
+            throw std::runtime_error("cannot encode the PCD data: field " + field.name + " of an unknown type");
+        }
+      }
+    }
+    out << '\n';
+  }
+  return std::move(out).str();
+}
+
 }  // namespace
 
 template <typename PointT>
@@ -64,33 +150,20 @@ std::string encodePcd(const pcl::PointCloud<PointT>& cloud, PcdEncoding encoding
       return std::move(out).str();
     }
     case PcdEncoding::ascii:
-      break;
+      return asciiPcd(cloud);
   }
-  throw std::invalid_argument("encodePcd: ASCII is written by savePcd only");
+  throw std::invalid_argument("encodePcd: unknown encoding");
 }
 
 template <typename PointT>
 void savePcd(const std::string& path, const pcl::PointCloud<PointT>& cloud, PcdEncoding encoding) {
-  if (encoding != PcdEncoding::ascii) {
-    std::string bytes;
-    try {
-      bytes = encodePcd(cloud, encoding);
-    } catch (const std::runtime_error& error) {
-      throw std::runtime_error("cannot write PCD file '" + path + "': " + error.what());
-    }
-    writeBytesAtomically(path, bytes);
-    return;
+  std::string bytes;
+  try {
+    bytes = encodePcd(cloud, encoding);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error("cannot write PCD file '" + path + "': " + error.what());
   }
-  writeFileAtomically(path, [&](const std::string& temporary) {
-    int status = -1;
-    try {
-      // 9 significant digits round-trip every float exactly (PCL's default is 8).
-      status = pcl::PCDWriter().writeASCII(temporary, cloud, 9);
-    } catch (const pcl::IOException& error) {
-      throw std::runtime_error("cannot write PCD file '" + path + "': " + error.what());
-    }
-    if (status != 0) throw std::runtime_error("cannot write PCD file '" + path + "'");
-  });
+  writeBytesAtomically(path, bytes);
 }
 
 #define FLOODPLANE_INSTANTIATE_SAVE_PCD(PointT)                                                   \

@@ -19,18 +19,19 @@ enum class PcdEncoding {
 
 /// Saves `cloud` to `path` atomically, keeping width, height (organized clouds stay
 /// organized), is_dense, sensor_origin_ and sensor_orientation_.
-/// Throws std::runtime_error naming `path` if the file cannot be written: with the system's
-/// reason ("No space left on device") for the binary encodings, which are encoded in memory
-/// (encodePcd) and written by writeBytesAtomically; PCL's ASCII writer writes the file itself.
+/// Throws std::runtime_error naming `path` if the file cannot be written, with the system's
+/// reason ("No space left on device"): every encoding is made in memory (encodePcd) and
+/// written by writeBytesAtomically, which checks each write.
 /// Instantiated for pcl::PointXYZ, PointXYZI, PointXYZL, PointXYZRGB, PointXYZRGBA,
 /// PointXYZRGBL and PointNormal.
 template <typename PointT>
 void savePcd(const std::string& path, const pcl::PointCloud<PointT>& cloud,
              PcdEncoding encoding = PcdEncoding::binary_compressed);
 
-/// The bytes of the PCD file savePcd writes in a binary encoding (binary_compressed or
-/// binary), for writing with others through AtomicFileGroup. Throws std::invalid_argument for
-/// PcdEncoding::ascii, std::runtime_error if PCL cannot encode the cloud.
+/// The bytes of the PCD file savePcd writes, for writing with others through AtomicFileGroup:
+/// the binary encodings as PCL lays them out, ASCII as PCL's writeASCII writes it with 9
+/// significant digits (every float read back exactly; NaN as nan, a float rgb field as the
+/// integer of its bits). Throws std::runtime_error if PCL cannot encode the cloud.
 template <typename PointT>
 std::string encodePcd(const pcl::PointCloud<PointT>& cloud, PcdEncoding encoding = PcdEncoding::binary_compressed);
 

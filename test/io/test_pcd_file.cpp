@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
+#include <sys/resource.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 
@@ -99,6 +102,70 @@ TEST(PcdFileEncoding, IsBinaryCompressedByDefault) {
   const std::string header = firstLines(path, 11);
   fs::remove(path);
   EXPECT_NE(header.find("DATA binary_compressed"), std::string::npos) << header;
+}
+
+std::string fileBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The ASCII encoding made in memory is what PCL's writeASCII writes with 9 digits, byte for
+// byte: floats, NaN, labels, a float rgb field as the integer of its bits, an rgba field.
+template <typename PointT>
+void expectAsciiAsPcl(pcl::PointCloud<PointT> cloud) {
+  cloud.sensor_orientation_ = Eigen::Quaternionf(0.5F, -0.5F, 0.5F, -0.5F);
+  const fs::path path = floodplane::test::uniqueTempPath(".pcd");
+  ASSERT_EQ(pcl::PCDWriter().writeASCII(path.string(), cloud, 9), 0);
+  const std::string written = fileBytes(path);
+  fs::remove(path);
+  EXPECT_EQ(floodplane::io::encodePcd(cloud, floodplane::io::PcdEncoding::ascii), written);
+}
+
+TEST(PcdFileEncoding, AsciiIsWhatPclsAsciiWriterWrites) {
+  expectAsciiAsPcl(smallOrganizedCloud());
+  pcl::PointCloud<pcl::PointXYZRGB> rgb(2, 2);
+  pcl::PointCloud<pcl::PointXYZRGBA> rgba(2, 2);
+  pcl::PointCloud<pcl::PointNormal> normals(2, 2);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const float f = 0.1F * static_cast<float>(i) - 1.0F / 3.0F;
+    rgb[i].x = rgba[i].x = normals[i].x = f;
+    rgb[i].y = rgba[i].y = normals[i].y = -2.0F * f;
+    rgb[i].z = rgba[i].z = normals[i].z = 1e-7F + f;
+    rgb[i].rgba = rgba[i].rgba = 0xFF000000u | (0x123456u * static_cast<std::uint32_t>(i + 1));
+    normals[i].normal_x = normals[i].curvature = f;
+  }
+  rgb[3].x = rgba[3].y = normals[3].normal_z = std::numeric_limits<float>::quiet_NaN();
+  expectAsciiAsPcl(rgb);
+  expectAsciiAsPcl(rgba);
+  expectAsciiAsPcl(normals);
+}
+
+// A write that fails part-way (here the file size limit, as a full disk would) is reported with
+// the system's reason for the ASCII encoding too, and leaves no file: PCL's own ASCII writer
+// did not check its writes.
+TEST(PcdFileEncoding, AsciiWriteThatFailsIsReportedAndLeavesNoFile) {
+  pcl::PointCloud<pcl::PointXYZL> cloud(100, 100);
+  const fs::path path = floodplane::test::uniqueTempPath(".pcd");
+  struct rlimit before {};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &before), 0);
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  struct rlimit small = before;
+  small.rlim_cur = 4096;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    floodplane::io::savePcd(path.string(), cloud, floodplane::io::PcdEncoding::ascii);
+  } catch (const std::runtime_error& error) {
+    message = error.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &before);
+  std::signal(SIGXFSZ, previous);
+  EXPECT_EQ(message, "cannot write '" + path.string() + "': File too large");
+  EXPECT_FALSE(fs::exists(path));
+  const std::string temporary = "." + path.filename().string() + ".tmp.";
+  for (const auto& entry : fs::directory_iterator(path.parent_path())) {
+    EXPECT_NE(entry.path().filename().string().rfind(temporary, 0), 0u) << "a temporary left: " << entry.path();
+  }
 }
 
 TEST(PcdFileEncoding, ReportsAnUnwritableDirectoryAsARuntimeError) {

@@ -3,10 +3,14 @@
 """Reading and writing files from Python: PCD points and labels, 16-bit depth PNGs, and
 segment_file, which must write what pcd_segment writes, byte for byte."""
 
+import json
+import os
+
 import numpy as np
 import pytest
 
 import floodplane
+import floodplane.distributed
 from conftest import real_frames, rendered_scenes, two_plane_scene
 
 
@@ -193,3 +197,42 @@ def test_pcd_segment_keeps_the_colours_read_pcd_reads(tmp_path, pcd_segment):
     completed = pcd_segment(path, "-o", output)
     assert completed.returncode == 0, completed.stderr
     np.testing.assert_array_equal(floodplane.read_pcd(str(output), colors=True)[1], colors)
+
+
+def test_json_name_is_the_name_pcd_segment_writes_for_a_name_that_is_not_utf8(tmp_path, pcd_segment):
+    # Latin-1's e-acute, and a euro sign cut after two of its three bytes.
+    name = b"caf\xe9_\xe2\x82.pcd"
+    input = os.path.join(os.fsencode(tmp_path), name)
+    floodplane.write_labels_pcd(str(tmp_path / "plain.pcd"), two_plane_scene(), np.zeros((120, 160), np.uint32))
+    os.rename(os.fsencode(tmp_path / "plain.pcd"), input)
+    done = pcd_segment(os.fsdecode(input), "-o", tmp_path / "out", "--json", "--quiet")
+    assert done.returncode == 0, done.stderr
+    report = json.loads((tmp_path / "out" / os.fsdecode(b"caf\xe9_\xe2\x82.planes.json")).read_bytes())
+    assert report["input"] == floodplane.json_name(input) == str(tmp_path) + "/caf\ufffd_\ufffd.pcd"
+    assert floodplane.json_name(os.fsdecode(input)) == report["input"]
+    assert floodplane.json_name("plain.pcd") == "plain.pcd"
+
+
+def test_an_output_over_an_input_is_refused_and_the_input_kept(tmp_path):
+    frame = tmp_path / "frame.pcd"
+    floodplane.write_labels_pcd(str(frame), two_plane_scene(), np.zeros((120, 160), np.uint32))
+    labels = tmp_path / "frame.labels.pcd"
+    floodplane.write_labels_pcd(str(labels), two_plane_scene(16, 12), np.ones((12, 16), np.uint32))
+    before = {path: path.read_bytes() for path in (frame, labels)}
+    os.symlink(frame, tmp_path / "link.pcd")
+    for output in (frame, tmp_path / "link.pcd"):
+        with pytest.raises(ValueError, match="segment_file: the output '.*' would overwrite the input"):
+            floodplane.Segmenter().segment_file(str(frame), str(output))
+
+    class LocalClient:  # dask.distributed's map and gather, run here
+        def map(self, function, *iterables, **keywords):
+            keywords.pop("pure")
+            return [function(*arguments, **keywords) for arguments in zip(*iterables)]
+
+        def gather(self, futures):
+            return futures
+
+    results = floodplane.distributed.segment_files(LocalClient(), [frame, labels], tmp_path)
+    assert results[0] == {"input": str(frame), "error": f"its output {labels} would overwrite the input {labels}"}
+    assert "error" not in results[1], results[1]
+    assert {path: path.read_bytes() for path in (frame, labels)} == before

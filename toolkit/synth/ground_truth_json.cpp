@@ -6,6 +6,10 @@
 
 namespace floodplane::synth {
 
+Eigen::Vector3d cameraUp(const RenderedFrame& frame) {
+  return frame.world_from_camera.conjugate() * Eigen::Vector3d::UnitZ();
+}
+
 std::string groundTruthJson(const RenderedFrame& frame) {
   using nlohmann::ordered_json;  // keeps keys in the order written, for human readers
   ordered_json document;
@@ -37,6 +41,8 @@ std::string groundTruthJson(const RenderedFrame& frame) {
   document["camera"] = {{"width", frame.intrinsics.width}, {"height", frame.intrinsics.height},
                         {"fx", frame.intrinsics.fx},       {"fy", frame.intrinsics.fy},
                         {"cx", frame.intrinsics.cx},       {"cy", frame.intrinsics.cy}};
+  const Eigen::Vector3d up = cameraUp(frame);
+  document["up"] = {up.x(), up.y(), up.z()};
   document["plane_equation"] =
       "n . P + d = 0 in the camera frame (x right, y down, z forward, metres); "
       "n has unit length and points towards the camera";
@@ -52,7 +58,8 @@ std::string groundTruthJson(const RenderedFrame& frame) {
                       {"merged_into", plane.merged_into}});
   }
   document["planes"] = std::move(planes);
-  return document.dump(2) + "\n";
+  // A scene named after a file whose name is not UTF-8: replaced as io/json_text.h says.
+  return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace floodplane::synth

@@ -20,7 +20,7 @@ pcl::PointCloud<pcl::PointXYZL> toPointCloud(const RenderedFrame& frame) {
   }
   cloud.is_dense = dense;
   cloud.sensor_origin_ = Eigen::Vector4f::Zero();
-  cloud.sensor_orientation_ = Eigen::Quaternionf::Identity();
+  cloud.sensor_orientation_ = frame.world_from_camera.cast<float>();
   return cloud;
 }
 

@@ -4,6 +4,7 @@
 // What the renderer produces: measured points, ground-truth labels and the plane listing.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -59,6 +60,9 @@ struct RenderedFrame {
   std::uint64_t seed = 0;
   SensorQuirks quirks;
   CameraIntrinsics intrinsics;
+  /// The camera's orientation: the rotation from the camera frame (x right, y down, z forward)
+  /// to the scene's world frame, whose z is up (data/scenes/README.md).
+  Eigen::Quaterniond world_from_camera = Eigen::Quaterniond::Identity();
   /// The measured point in the camera frame (metres); NaN where the ray hits nothing or the
   /// sensor returns nothing.
   std::vector<Eigen::Vector3f> points;

@@ -135,6 +135,7 @@ RenderedFrame renderScene(const Scene& scene, const RenderSettings& settings) {
   frame.seed = settings.seed;
   frame.quirks = quirksInEffect(settings);
   frame.intrinsics = intrinsics;
+  frame.world_from_camera = Eigen::Quaterniond(scene.world_from_camera.linear()).normalized();
   frame.planes = caster.planes();
   const auto pixel_count = static_cast<std::size_t>(intrinsics.width) * static_cast<std::size_t>(intrinsics.height);
   const Eigen::Vector3f no_point = Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN());

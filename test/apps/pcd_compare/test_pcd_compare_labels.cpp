@@ -9,15 +9,20 @@
 #include <pcl/point_types.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io/depth_camera.h"
 #include "io/depth_png.h"
+#include "support/app_process.h"
 #include "support/app_run.h"
 
 namespace floodplane::test {
@@ -236,6 +241,88 @@ TEST_F(PcdCompareLabels, ComparesDepthImagesAndScoresThemAgainstGroundTruthFiles
       compare({path("depth").string(), "--intrinsics", kIntrinsics, "--labels", "mine=" + path("depth").string()});
   EXPECT_EQ(itself.exit_code, 1);
   EXPECT_TRUE(contains(itself.err, "is the input itself")) << itself.err;
+}
+
+// --png's comparison images are named <scene>.png: into the depth images' own folder, or the
+// ground truth's, they would overwrite the frames or their labels. Refused before any work,
+// naming both files; every file stays as it was.
+TEST_F(PcdCompareLabels, RefusesImagesOverTheDepthImagesOrTheGroundTruthItReads) {
+  const DepthScene scene = twoPlaneDepthScene();
+  fs::create_directories(path("depth"));
+  fs::create_directories(path("truth"));
+  floodplane::io::writeDepthPng(path("depth/frame.png").string(), scene.depth);
+  floodplane::io::writeDepthPng(path("truth/frame.png").string(), scene.labels);
+  const std::string depth = readFile(path("depth/frame.png"));
+  const std::string truth = readFile(path("truth/frame.png"));
+  const std::string frame = path("depth/frame.png").string();
+  const Result over_input =
+      compare({path("depth").string(), "--intrinsics", kIntrinsics, "--png", path("depth").string()});
+  expectUsageError(over_input, "pcd_compare", "the output " + frame + " would overwrite the input " + frame);
+  const Result over_truth = compare({path("depth").string(), "--intrinsics", kIntrinsics, "--ground-truth",
+                                     path("truth").string(), "--png3d", path("truth").string()});
+  expectUsageError(over_truth, "pcd_compare",
+                   "the output " + path("truth/frame.png").string() + " would overwrite the input " +
+                       path("truth/frame.png").string());
+  const Result json_over_input =
+      compare({frame, "--intrinsics", kIntrinsics, "--json", path("depth/frame.json").string()});
+  EXPECT_EQ(json_over_input.exit_code, 0) << json_over_input.err;
+  fs::create_symlink(frame, path("report.json"));
+  expectUsageError(compare({frame, "--intrinsics", kIntrinsics, "--json", path("report.json").string()}), "pcd_compare",
+                   "the output " + path("report.json").string() + " would overwrite the input " + frame);
+  EXPECT_TRUE(readFile(path("depth/frame.png")) == depth) << "the depth image changed";
+  EXPECT_TRUE(readFile(path("truth/frame.png")) == truth) << "the ground truth changed";
+  EXPECT_EQ(std::distance(fs::directory_iterator(path("depth")), fs::directory_iterator()), 2)
+      << "frame.png, frame.json";
+}
+
+// A file name that is not UTF-8: --json's report is valid JSON, each ill-formed part of the
+// name written as U+FFFD (io/json_text.h: pcd_segment's rule, and Python's "replace").
+TEST_F(PcdCompareLabels, JsonOfANameThatIsNotUtf8IsValidWithTheBadBytesReplaced) {
+  fs::create_directories(path("depth"));
+  const std::string frame = path("depth/caf\xe9.png").string();
+  floodplane::io::writeDepthPng(frame, twoPlaneDepthScene().depth);
+  const Result result = compare({frame, "--intrinsics", kIntrinsics, "--json", path("report.json").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  nlohmann::json json;
+  ASSERT_NO_THROW(json = report());
+  EXPECT_EQ(json["scenes"][0]["file"], path("depth/caf\xef\xbf\xbd.png").string());
+  EXPECT_EQ(json["scenes"][0]["name"], "caf\xef\xbf\xbd");
+}
+
+// Ctrl-C (SIGINT) or SIGTERM while the comparison images are written: no temporary left, the
+// one-line message, the end by the signal (status 130 or 143), and no report.
+TEST_F(PcdCompareLabels, InterruptRemovesTheTemporariesAndEndsByTheSignal) {
+  fs::create_directories(path("in"));
+  for (int i = 0; i < 60; ++i)
+    fs::create_symlink(scene("tabletop.kinect"), path("in/f" + std::to_string(100 + i) + ".pcd"));
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    const std::string name = signal_number == SIGINT ? "SIGINT" : "SIGTERM";
+    SCOPED_TRACE(name);
+    const fs::path images = path("images_" + name);
+    AppProcess app(PCD_COMPARE_BINARY,
+                   {path("in").string(), "--quiet", "--methods", "floodplane,omps", "--repeat", "0", "--png",
+                    images.string(), "--json", path("report.json").string()},
+                   path("stdout"), path("stderr"));
+    ASSERT_TRUE(app.running());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (app.running() && !fs::exists(images / "f101.png") && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    app.signal(signal_number);
+    const std::optional<int> exit_code = app.waitFor(std::chrono::seconds(60));
+    ASSERT_TRUE(exit_code.has_value()) << "still running 60 s after " << name;
+    EXPECT_EQ(*exit_code, 128 + signal_number);
+    EXPECT_TRUE(app.endedBySignal());
+    EXPECT_EQ(readFile(path("stderr")), "pcd_compare: interrupted by " + name + ": unfinished outputs removed\n");
+    std::size_t written = 0;
+    for (const auto& entry : fs::directory_iterator(images)) {
+      EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+      ++written;
+    }
+    EXPECT_GE(written, 2u);
+    EXPECT_LT(written, 60u) << "the signal came after the run was done";
+    EXPECT_FALSE(fs::exists(path("report.json")));
+  }
 }
 
 TEST_F(PcdCompareLabels, DepthImagesWithoutIntrinsicsAreAUsageError) {

@@ -239,6 +239,24 @@ TEST_F(PcdSegment, JsonAgreesWithThePcdAndPngSitsNextToIt) {
   EXPECT_EQ(be32(20), 120u);
 }
 
+// A file name that is not UTF-8 (Latin-1 bytes, a name cut in a multi-byte character): the
+// report is valid JSON, each ill-formed part of the name written as U+FFFD, the rule of
+// nlohmann's replace and of Python's bytes.decode("utf-8", "replace").
+TEST_F(PcdSegment, JsonOfANameThatIsNotUtf8IsValidWithTheBadBytesReplaced) {
+  fs::create_directory(path("in"));
+  const std::string name = "caf\xe9_\xe2\x82.pcd";  // é in Latin-1; € cut after two of its three bytes
+  const std::string input = writeScene("in/" + name);
+  const Result result = run({path("in").string(), "-o", path("out").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string text = readFile(path("out/caf\xe9_\xe2\x82.planes.json"));
+  ASSERT_FALSE(text.empty());
+  nlohmann::json json;
+  ASSERT_NO_THROW(json = nlohmann::json::parse(text));
+  const std::string replaced = path("in").string() + "/caf\xef\xbf\xbd_\xef\xbf\xbd.pcd";
+  EXPECT_EQ(json.at("input").get<std::string>(), replaced);
+  EXPECT_EQ(json.at("plane_count"), 2);
+}
+
 TEST_F(PcdSegment, KeepsColourWhenTheInputHasIt) {
   const Cloud scene = twoPlaneScene();
   pcl::PointCloud<pcl::PointXYZRGB> coloured;

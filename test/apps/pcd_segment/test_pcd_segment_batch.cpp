@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <thread>
@@ -207,6 +208,57 @@ TEST_F(PcdSegmentBatch, AFullDiskIsReportedWithTheSystemsReasonAndLeavesNoPartia
   EXPECT_TRUE(contains(result.err, "2 of 4 inputs failed")) << result.err;
   EXPECT_EQ(lineCount(result.err), 3u) << result.err;
   EXPECT_EQ(temporariesIn(out), std::vector<std::string>{});
+}
+
+// ---- an output that is an input ----------------------------------------------------------
+
+// What `directory` holds, file by file: name and bytes.
+std::map<std::string, std::string> filesIn(const fs::path& directory) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(directory)) {
+    files[entry.path().filename().string()] = entry.is_regular_file() ? readFile(entry.path()) : "(not a file)";
+  }
+  return files;
+}
+
+// The refusal of an output that is an input: the usage error naming both files, and nothing
+// written or changed in `directory`, whose files were `before`.
+void expectOutputRefused(const Result& result, const std::string& output, const std::string& input,
+                         const fs::path& directory, const std::map<std::string, std::string>& before) {
+  expectUsageError(result, "pcd_segment", "the output " + output + " would overwrite the input " + input);
+  EXPECT_TRUE(result.out.empty()) << result.out;
+  const std::map<std::string, std::string> after = filesIn(directory);
+  EXPECT_TRUE(after == before) << "an input changed or an output was written: " << after.size() << " files, "
+                               << before.size() << " before";
+}
+
+// An input named as another input's output would be (frame.labels.pcd, the name pcd_compare
+// --labels expects beside frame.pcd): the whole run is refused before any write, whether the
+// inputs are given one by one or as their directory, and whether -o names that directory or
+// a link to it (the same file found by device and inode, not by name).
+TEST_F(PcdSegmentBatch, RefusesToWriteAnOutputOverAnotherInput) {
+  fs::create_directory(path("col"));
+  const std::string frame = writeScene("col/frame.pcd");
+  const std::string labels = writeScene("col/frame.labels.pcd", wallAndFloor(80, 60));
+  fs::create_directory_symlink(path("col"), path("alias"));
+  const std::map<std::string, std::string> before = filesIn(path("col"));
+  ASSERT_EQ(before.size(), 2u);
+  expectOutputRefused(run({frame, labels, "-o", path("col").string()}), labels, labels, path("col"), before);
+  expectOutputRefused(run({path("col").string(), "-o", path("col").string(), "--png", "--json"}), labels, labels,
+                      path("col"), before);
+  expectOutputRefused(run({frame, labels, "-o", path("alias").string()}), path("alias/frame.labels.pcd").string(),
+                      labels, path("col"), before);
+  // A side output too: --json's report over an input of that name (a PCD file named so).
+  const std::string report = writeScene("col/frame.planes.json", wallAndFloor(80, 60));
+  const std::map<std::string, std::string> with_report = filesIn(path("col"));
+  expectOutputRefused(run({frame, report, "-o", path("col").string(), "--json"}), report, report, path("col"),
+                      with_report);
+  // Without --json the report is no output, and a file that is not an input of the run is
+  // an earlier output, replaced as usual.
+  const Result replaced = run({frame, report, "-o", path("col").string()});
+  EXPECT_EQ(replaced.exit_code, 0) << replaced.err;
+  EXPECT_TRUE(readFile(report) == with_report.at("frame.planes.json")) << "an input changed";
+  EXPECT_FALSE(readFile(labels) == with_report.at("frame.labels.pcd")) << "the earlier output was not replaced";
 }
 
 // ---- what a directory holds ---------------------------------------------------------------

@@ -125,6 +125,39 @@ TEST_F(PcdSegmentClasses, WithoutUpTheReportHasNoClasses) {
   }
 }
 
+// pcd_synth writes the camera's orientation into the PCD's VIEWPOINT: --up viewpoint takes the
+// scene's up from there, and gives the classes and heights of --up with the scene's own up.
+TEST_F(PcdSegmentClasses, UpViewpointTakesTheUpOfTheRenderedCamera) {
+  const Result result = run({kCloud, "-o", path("viewpoint").string(), "--json", "--up", "viewpoint"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  ASSERT_EQ(run({kCloud, "-o", path("given").string(), "--json", "--up", vectorText(sceneUp())}).exit_code, 0);
+  const Json a = report("viewpoint"), b = report("given");
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(a.at("up")[i].get<double>(), sceneUp()[i], 1e-6);
+  ASSERT_EQ(a["planes"].size(), b["planes"].size());
+  ASSERT_GT(a["planes"].size(), 5u);
+  for (std::size_t k = 0; k < a["planes"].size(); ++k) {
+    EXPECT_EQ(a["planes"][k]["class"], b["planes"][k]["class"]) << "plane " << k + 1;
+    EXPECT_NEAR(a["planes"][k]["height_above_floor"].get<double>(), b["planes"][k]["height_above_floor"].get<double>(),
+                1e-4);
+  }
+}
+
+// A cloud whose VIEWPOINT has no rotation says nothing of up: that input fails with the reason,
+// and writes nothing.
+TEST_F(PcdSegmentClasses, UpViewpointOfACloudWithoutRotationIsAnError) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  ASSERT_EQ(pcl::io::loadPCDFile(kCloud, cloud), 0);
+  cloud.sensor_orientation_ = Eigen::Quaternionf::Identity();
+  const std::string input = path("level.pcd").string();
+  ASSERT_EQ(pcl::io::savePCDFileBinary(input, cloud), 0);
+  const Result result = run({input, "-o", path("out").string(), "--json", "--up", "viewpoint"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.err, "pcd_segment: error: " + input +
+                            ": --up viewpoint: the input has no VIEWPOINT rotation (the identity) to take the up "
+                            "direction from; give --up X,Y,Z\n");
+  EXPECT_TRUE(fs::is_empty(path("out")));
+}
+
 TEST_F(PcdSegmentClasses, RefusesVectorsThatAreNoDirection) {
   const std::string out = path("out").string();
   expectUsageError(run({kCloud, "-o", out, "--json", "--up", "0,0,0"}), "pcd_segment",
@@ -135,7 +168,9 @@ TEST_F(PcdSegmentClasses, RefusesVectorsThatAreNoDirection) {
   expectUsageError(run({kCloud, "-o", out, "--json", "--up", "inf,1,0"}), "pcd_segment", "--up");
   expectUsageError(run({kCloud, "-o", out, "--json", "--up", "0,1"}), "pcd_segment", "--up");
   expectUsageError(run({kCloud, "-o", out, "--json", "--up", "0,1,0,0"}), "pcd_segment", "--up");
-  expectUsageError(run({kCloud, "-o", out, "--json", "--up", "up"}), "pcd_segment", "--up");
+  expectUsageError(run({kCloud, "-o", out, "--json", "--up", "up"}), "pcd_segment",
+                   "--up takes X,Y,Z (three numbers) or viewpoint, not 'up'");
+  expectUsageError(run({kCloud, "-o", out, "--json", "--up", "0,1,x"}), "pcd_segment", "--up");
   expectUsageError(run({kCloud, "-o", out, "--json", "--up", "0,-1,0", "--gravity", "0,1,0"}), "pcd_segment",
                    "--gravity");
   expectUsageError(run({kCloud, "-o", out, "--up", "0,-1,0"}), "pcd_segment", "--json");

@@ -142,6 +142,25 @@ TEST_F(PcdSegmentDepth, OutputPngIsTheLabelImageAndNeverTheInput) {
   EXPECT_EQ(readFile(path("frame.png")), before);
 }
 
+// -o NAME.pcd with --png writes NAME.png beside it: refused when that is the depth image read,
+// before any write, naming both files; the image stays as it was.
+TEST_F(PcdSegmentDepth, RefusesALabelImageOverTheDepthImageItReads) {
+  const std::string input = writeDepth("depth.png");
+  const std::string before = readFile(input);
+  const Result result = run({input, "--intrinsics", kIntrinsics, "-o", path("depth.pcd").string(), "--png", "--json"});
+  expectUsageError(result, "pcd_segment", "the output " + input + " would overwrite the input " + input);
+  EXPECT_TRUE(readFile(input) == before) << "the depth image changed";
+  EXPECT_FALSE(fs::exists(path("depth.pcd")));
+  EXPECT_FALSE(fs::exists(path("depth.json")));
+  // The same image in a folder with -o that folder: its outputs are named apart, and written.
+  fs::create_directory(path("in"));
+  const std::string inside = writeDepth("in/depth.png");
+  const Result beside = run({path("in").string(), "--intrinsics", kIntrinsics, "-o", path("in").string(), "--png"});
+  EXPECT_EQ(beside.exit_code, 0) << beside.err;
+  EXPECT_TRUE(readFile(inside) == before) << "the depth image changed";
+  EXPECT_TRUE(fs::exists(path("in/depth.labels.png")));
+}
+
 TEST_F(PcdSegmentDepth, TheDepthScaleIsUnitsPerMetreAndDefaultsToMillimetres) {
   const std::string input = writeDepth("frame.png");
   ASSERT_EQ(run({input, "-o", path("mm.pcd").string(), "--intrinsics", kIntrinsics}).exit_code, 0);

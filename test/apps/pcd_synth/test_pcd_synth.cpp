@@ -17,16 +17,21 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io/label_palette.h"
+#include "support/app_process.h"
 #include "support/app_run.h"
 #include "support/png_images.h"
 
@@ -333,6 +338,74 @@ TEST_F(PcdSynth, QuirksChangeOnlyTheirSensorsFramesAndTheGroundTruthListsThem) {
 
 // --png draws the ground truth as pcd_segment --png draws labels: a plane's colour where a
 // point is on it, near-black on no plane, white where the sensor saw nothing.
+// The camera's up (the world's z in the camera frame) in planes.json and, as the camera's
+// orientation in the world, in the PCD's VIEWPOINT: the floor's ground-truth normal (towards the
+// camera above it) is that up, and the VIEWPOINT's rotation turns it back onto the world's z.
+TEST_F(PcdSynth, WritesTheCamerasUpInThePlanesJsonAndThePcdsViewpoint) {
+  const std::string scene = std::string(FLOODPLANE_SOURCE_DIR) + "/data/scenes/tabletop.json";
+  ASSERT_EQ(run({scene, "--sensor", "none", "--quiet", "-o", path("out").string()}).exit_code, 0);
+  const nlohmann::json listing = nlohmann::json::parse(readFile(path("out/tabletop.none.planes.json")));
+  const Eigen::Vector3d up(listing.at("up")[0].get<double>(), listing.at("up")[1].get<double>(),
+                           listing.at("up")[2].get<double>());
+  EXPECT_NEAR(up.norm(), 1.0, 1e-12);
+  bool floor = false;
+  for (const nlohmann::json& plane : listing.at("planes")) {
+    if (plane.at("primitive") != "floor" || plane.at("pixels").get<int>() == 0) continue;
+    floor = true;
+    const Eigen::Vector3d normal(plane["normal"][0].get<double>(), plane["normal"][1].get<double>(),
+                                 plane["normal"][2].get<double>());
+    EXPECT_GT(normal.dot(up), 1.0 - 1e-9) << listing.dump();
+  }
+  EXPECT_TRUE(floor) << "the floor is in view";
+  EXPECT_LT(up.y(), -0.5) << "the camera looks down at the table: up is mostly -y, tilted";
+  EXPECT_GT(std::abs(up.z()), 0.2);
+  pcl::PointCloud<pcl::PointXYZL> cloud;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/tabletop.none.pcd").string(), cloud), 0);
+  EXPECT_TRUE(cloud.sensor_origin_.isZero()) << "the points stay in the camera's frame";
+  const Eigen::Vector3d world_up = cloud.sensor_orientation_.cast<double>() * up;
+  EXPECT_NEAR(world_up.z(), 1.0, 1e-6) << world_up.transpose();
+}
+
+// Ctrl-C (SIGINT) or SIGTERM while frames are written: no temporary left, each frame's files
+// all there or none, the one-line message, and the end by the signal (status 130 or 143).
+TEST_F(PcdSynth, InterruptRemovesTheTemporariesAndEndsByTheSignal) {
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    const std::string name = signal_number == SIGINT ? "SIGINT" : "SIGTERM";
+    SCOPED_TRACE(name);
+    const fs::path out = path("out_" + name);
+    AppProcess app(PCD_SYNTH_BINARY, {"--random", "500", "--sensor", "kinect", "--png", "--quiet", "-o", out.string()},
+                   path("stdout"), path("stderr"));
+    ASSERT_TRUE(app.running());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (app.running() && !fs::exists(out / "random_0002.kinect.pcd") &&
+           std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    app.signal(signal_number);
+    const std::optional<int> exit_code = app.waitFor(std::chrono::seconds(30));
+    ASSERT_TRUE(exit_code.has_value()) << "still running 30 s after " << name;
+    EXPECT_EQ(*exit_code, 128 + signal_number);
+    EXPECT_TRUE(app.endedBySignal());
+    EXPECT_EQ(readFile(path("stderr")), "pcd_synth: interrupted by " + name + ": unfinished outputs removed\n");
+    std::size_t frames = 0;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      const std::string file = entry.path().filename().string();
+      EXPECT_EQ(file.find(".tmp."), std::string::npos) << "a temporary left: " << file;
+      const std::string suffix = ".kinect.pcd";
+      if (file.size() < suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
+        continue;
+      ++frames;
+      const std::string stem = file.substr(0, file.size() - 4);
+      EXPECT_TRUE(fs::exists(out / (stem + ".planes.json"))) << stem;
+      EXPECT_TRUE(fs::exists(out / (stem + ".labels.png"))) << stem;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), static_cast<long>(3 * frames))
+        << "a file without the rest of its frame";
+    EXPECT_GE(frames, 2u);
+    EXPECT_LT(frames, 500u) << "the signal came after the run was done";
+  }
+}
+
 TEST_F(PcdSynth, LabelPngShowsTheGroundTruthWithHolesWhite) {
   const Result result = run({std::string(FLOODPLANE_SOURCE_DIR) + "/data/scenes/tabletop.json", "--sensor", "kinect",
                              "--width", "160", "--height", "120", "--png", "-q", "-o", path("out").string()});

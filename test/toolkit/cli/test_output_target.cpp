@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "support/app_run.h"
 
@@ -57,6 +59,30 @@ TEST_F(OutputTarget, RefusesAnyOtherExtensionNamingTheFlagAndTheValue) {
 TEST_F(OutputTarget, NamesDirectoriesOnlyWhenTheOptionWritesNoFile) {
   EXPECT_EQ(outputKind("--png", "pictures", {}, "--png names a directory"), OutputKind::directory);
   EXPECT_THROW(outputKind("--png", "pictures.png", {}, "--png names a directory"), std::invalid_argument);
+}
+
+// An output is an input when it is the same file, however it is named: the same path, another
+// spelling of it, a symbolic or a hard link, a folder reached through a link. An output that
+// does not exist yet, or another file, is none.
+TEST_F(OutputTarget, FindsAnOutputThatIsAnInputByDeviceAndInode) {
+  using cli::outputOverwritingInput;
+  namespace fs = std::filesystem;
+  fs::create_directory(path("in"));
+  writeFile(path("in/a.pcd"), "a");
+  writeFile(path("in/b.pcd"), "b");
+  fs::create_hard_link(path("in/a.pcd"), path("hard.pcd"));
+  fs::create_symlink(path("in/a.pcd"), path("soft.pcd"));
+  fs::create_directory_symlink(path("in"), path("alias"));
+  const std::vector<std::string> inputs = {path("in/b.pcd").string(), path("in/a.pcd").string()};
+  const std::string a = path("in/a.pcd").string();
+  for (const std::string& output : {a, path("in/../in/a.pcd").string(), path("hard.pcd").string(),
+                                    path("soft.pcd").string(), path("alias/a.pcd").string()}) {
+    EXPECT_EQ(outputOverwritingInput({path("new.pcd").string(), output}, inputs),
+              "the output " + output + " would overwrite the input " + a);
+  }
+  EXPECT_EQ(outputOverwritingInput({path("new.pcd").string(), path("in/c.pcd").string()}, inputs), std::nullopt);
+  EXPECT_EQ(outputOverwritingInput({a}, {path("missing.pcd").string()}), std::nullopt);
+  EXPECT_EQ(outputOverwritingInput({}, inputs), std::nullopt);
 }
 
 }  // namespace
