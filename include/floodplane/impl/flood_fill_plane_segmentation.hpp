@@ -199,6 +199,10 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
   for (std::size_t i = 0; i < size && counts_agree;) {
     const std::uint32_t label = labels[i];
     std::size_t run_end = i + 1;
+    // Four labels a step while they all match (runs are long), then one at a time.
+    while (run_end + 4 <= size && ((labels[run_end] ^ label) | (labels[run_end + 1] ^ label) |
+                                   (labels[run_end + 2] ^ label) | (labels[run_end + 3] ^ label)) == 0)
+      run_end += 4;
     while (run_end < size && labels[run_end] == label) ++run_end;
     const std::size_t n = run_end - i;
     if (label != 0) {
