@@ -58,15 +58,16 @@ const std::vector<std::string>& sceneNames() {
   return names;
 }
 
-const Frame& renderedFrame(const std::string& scene_name, int width, int height) {
+const Frame& renderedFrame(const std::string& scene_name, int width, int height, bool exact) {
   static std::map<std::string, Frame> cache;
-  const std::string key = scene_name + "@" + std::to_string(width) + "x" + std::to_string(height);
+  const std::string key =
+      scene_name + "@" + std::to_string(width) + "x" + std::to_string(height) + (exact ? "/exact" : "");
   auto found = cache.find(key);
   if (found != cache.end()) return found->second;
   synth::Scene scene = synth::loadScene(std::string(FLOODPLANE_SCENE_DIR) + "/" + scene_name + ".json");
   scene.intrinsics = scene.intrinsics.scaledTo(width, height);
   synth::RenderSettings settings;
-  settings.sensor = synth::SensorModel::kinect;
+  settings.sensor = exact ? synth::SensorModel::none : synth::SensorModel::kinect;
   settings.seed = 1;
   const pcl::PointCloud<pcl::PointXYZL> labelled = synth::toPointCloud(synth::renderScene(scene, settings));
   Frame frame{key, pcl::PointCloud<pcl::PointXYZ>::Ptr(new pcl::PointCloud<pcl::PointXYZ>)};

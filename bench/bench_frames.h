@@ -25,17 +25,18 @@ struct Frame {
 /// The real frames, sorted by name; empty when the folder is absent.
 const std::vector<Frame>& realFrames();
 
-/// Scene `scene` (a file stem in data/scenes) rendered with the Kinect noise model at
-/// width x height (the intrinsics scaled with the image), cached.
-const Frame& renderedFrame(const std::string& scene, int width, int height);
+/// Scene `scene` (a file stem in data/scenes) rendered with the Kinect noise model (`exact`:
+/// without noise, pcd_synth's sensor none) at width x height (the intrinsics scaled with the
+/// image), cached.
+const Frame& renderedFrame(const std::string& scene, int width, int height, bool exact = false);
 
 /// A frame produced when a benchmark first needs it.
 using FrameSource = std::function<const Frame&()>;
 inline FrameSource real(const Frame& frame) {
   return [&frame]() -> const Frame& { return frame; };
 }
-inline FrameSource rendered(const std::string& scene, int width, int height) {
-  return [=]() -> const Frame& { return renderedFrame(scene, width, height); };
+inline FrameSource rendered(const std::string& scene, int width, int height, bool exact = false) {
+  return [=]() -> const Frame& { return renderedFrame(scene, width, height, exact); };
 }
 
 /// The frame sizes (width, height) of the size series (floodplane/s1/size, noise/size): cost

@@ -101,13 +101,21 @@ void registerFloodplane() {
     const std::string size = std::to_string(w) + "x" + std::to_string(h);
     add("floodplane/s1/size:" + size, rendered("boxes_on_floor", w, h), 1);
   }
-  // Fig. 5: time per phase (measuring adds a few clock reads per seed).
+  // Fig. 5: time per phase (measuring adds a few clock reads per seed): floodplane/phases<s>/<set>,
+  // s = 1 without a number; the real frames, the bundled scenes with Kinect noise (scene) and
+  // exact (exact). The phase table of bench/README.md (update_figures.py --phases) reads s = 1
+  // and 4.
   for (const Frame& frame : realFrames()) add("floodplane/phases/real:" + frame.name, real(frame), 1, true);
   for (int s : {2, 4})
     for (const Frame& frame : realFrames())
       add("floodplane/phases" + std::to_string(s) + "/real:" + frame.name, real(frame), s, true);
-  for (const std::string& scene : sceneNames())
-    add("floodplane/phases/scene:" + scene, rendered(scene, 640, 480), 1, true);
+  for (int s : {1, 4}) {
+    const std::string prefix = "floodplane/phases" + (s == 1 ? std::string() : std::to_string(s));
+    for (const std::string& scene : sceneNames()) {
+      add(prefix + "/scene:" + scene, rendered(scene, 640, 480), s, true);
+      add(prefix + "/exact:" + scene, rendered(scene, 640, 480, true), s, true);
+    }
+  }
 }
 
 }  // namespace floodplane::bench

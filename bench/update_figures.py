@@ -15,6 +15,10 @@ Inputs:
                    fraction per factor and sensor model).
   --quirks JSON    the same on the report split rendered with the sensor quirks; fills
                    "accuracy-quirks".
+  --phases JSON    bench_segmentation --benchmark_filter='^floodplane/phases4?/(real|scene|exact):'
+                   --benchmark_out=JSON (may be the --speed run's file, one run for both);
+                   fills "phases": ms and share per phase, the default and s = 1, on the real
+                   frames and the bundled scenes (Kinect noise and exact).
   --resolution JSON  bench/resolution_sweep.py --json (boxes_on_floor at 320x240 to 2560x1920,
                    s = 1 and the default s = 4, each benchmark in a process of its own); fills
                    "resolution" (time, time per pixel, memory added against the cloud's size).
@@ -130,6 +134,73 @@ def speed_sentence(medians):
             f"faster than OMPS with its normals, in the same run), {medians['s2_ms']:.1f} ms at sub-sampling 2 and "
             f"{medians['s1_ms']:.1f} ms at sub-sampling 1 ({medians['omps_per_s1']:.1f}x OMPS; figures from "
             "`bench/README.md`)")
+
+
+# Phases --------------------------------------------------------------------------------------
+
+PHASE_SETS = [("real", "real frames"), ("scene", "scenes, Kinect"), ("exact", "scenes, exact")]
+PHASE_FACTORS = [("phases4", "default"), ("phases", "s = 1")]
+# (row, the counters it adds up): the PCL glue is the class's own conversion and whatever of the
+# call no phase holds.
+PHASE_ROWS = [("preparation", ["prep_ms"]), ("seed selection", ["seed_ms"]), ("flood fill", ["flood_ms"]),
+              ("relabelling", ["relabel_ms"]), ("merging", ["merge_ms"]), ("region output", ["output_ms"]),
+              ("PCL glue", ["pcl_ms", "outside_ms"])]
+PHASE_COUNTERS = sorted({c for _, counters in PHASE_ROWS for c in counters})
+
+
+def read_phases(path):
+    """(set, factor) -> frame -> counters of the floodplane/phases benchmarks, and the run's date."""
+    try:
+        text = pathlib.Path(path).read_text(encoding="utf-8")
+        start = re.search(r"^\{", text, re.MULTILINE)
+        run = json.loads(text[start.start():] if start else text)
+    except (OSError, ValueError) as error:
+        raise Unusable(f"{path}: {error}") from error
+    runs = {}
+    for entry in run.get("benchmarks", []) if isinstance(run, dict) else []:
+        name = entry.get("name", "")
+        match = re.match(r"floodplane/(phases4?)/(real|scene|exact):([^/]+)$", name)
+        if not match or entry.get("run_type", "iteration") != "iteration":
+            continue
+        missing = [c for c in PHASE_COUNTERS + ["real_time", "cpu_time"] if not isinstance(entry.get(c), (int, float))]
+        if missing:
+            raise Unusable(f"{path}: {name} has no {', '.join(missing)}")
+        if entry.get("time_unit", "ms") != "ms":
+            raise Unusable(f"{path}: {name} is not in ms")
+        runs.setdefault((match.group(2), match.group(1)), {})[match.group(3)] = entry
+    wanted = [(s, f) for s, _ in PHASE_SETS for f, _ in PHASE_FACTORS]
+    if not any(key in runs for key in wanted):
+        raise Unusable(f"{path}: no floodplane/phases4?/(real|scene|exact):<frame> benchmark (run with "
+                       "--benchmark_filter='^floodplane/phases4?/(real|scene|exact):' --benchmark_out=FILE)")
+    run_date = str(run.get("context", {}).get("date", ""))[:16].replace("T", " ") or "unknown date"
+    return runs, run_date
+
+
+def phase_table(runs, run_date):
+    columns = [(s, f, f"{set_name}, {factor_name}") for s, set_name in PHASE_SETS for f, factor_name in PHASE_FACTORS
+               if (s, f) in runs]
+    out = (f"Run {stamp(run_date)}, phase timers on (`setMeasurePhases`); per phase the median over the "
+           "frames of its ms a frame, and in brackets its share of all the frames' time; the PCL glue is "
+           "the class's conversion and whatever of the call no phase holds. The phases are timed on the "
+           "wall clock; the call's CPU time (last row) is what it took of the processor, less than the "
+           "wall clock where other processes had the machine:\n\n"
+           "| phase | " + " | ".join(title for _, _, title in columns) + " |\n"
+           "|---|" + "---:|" * len(columns) + "\n")
+    rows = PHASE_ROWS + [("**whole call**", "real_time"), ("CPU time of the call", "cpu_time")]
+    for row, counters in rows:
+        cells = []
+        for s, f, _ in columns:
+            frames = runs[(s, f)].values()
+            calls = sum(e["real_time"] for e in frames)
+            if isinstance(counters, str):
+                median = statistics.median(e[counters] for e in frames)
+                cells.append(f"**{median:.2f}**" if counters == "real_time" else f"{median:.2f}")
+                continue
+            values = [sum(max(0.0, e[c]) for c in counters) for e in frames]
+            cells.append(f"{statistics.median(values):.2f} ({100.0 * sum(values) / calls:.0f} %)")
+        out += f"| {row} | " + " | ".join(cells) + " |\n"
+    counts = ", ".join(f"{title}: {len(runs[(s, f)])}" for s, f, title in columns)
+    return out + f"\nFrames per column: {counts}.\n"
 
 
 # Accuracy ------------------------------------------------------------------------------------
@@ -261,6 +332,7 @@ def main():
     parser.add_argument("--speed", help="Google Benchmark JSON of interleaved/real")
     parser.add_argument("--report", help="pcd_compare JSON of the report split")
     parser.add_argument("--quirks", help="pcd_compare JSON of the report split with the sensor quirks")
+    parser.add_argument("--phases", help="Google Benchmark JSON of floodplane/phases4?/(real|scene|exact)")
     parser.add_argument("--resolution", help="bench/resolution_sweep.py --json of the resolution sweep")
     parser.add_argument("--chart", help="draw the speed-against-accuracy chart into this PNG "
                                         "(bench/figures/speed_accuracy.png)")
@@ -273,8 +345,8 @@ def main():
     args = parser.parse_args()
     if args.chart_run and not args.chart:
         parser.error("--chart-run gives a panel of the chart: give --chart PNG too")
-    if not (args.speed or args.report or args.quirks or args.resolution or args.chart or args.objects):
-        parser.error("give at least one of --speed, --report, --quirks, --resolution, --chart, --objects")
+    if not (args.speed or args.phases or args.report or args.quirks or args.resolution or args.chart or args.objects):
+        parser.error("give at least one of --speed, --phases, --report, --quirks, --resolution, --chart, --objects")
     if args.chart and not chart_runs(args):
         parser.error("--chart needs a pcd_compare run: --chart-run TITLE=JSON, --report or --quirks")
     try:
@@ -283,6 +355,8 @@ def main():
             frames, run_date = read_speed(args.speed)
             bench_parts["speed"], medians = speed_table(frames, run_date)
             readme_parts["speed"] = speed_sentence(medians)
+        if args.phases:
+            bench_parts["phases"] = phase_table(*read_phases(args.phases))
         if args.report:
             bench_parts["accuracy"] = accuracy_table(args.report, "Report split (seeds 101-200, never tuned on)")
         if args.quirks:

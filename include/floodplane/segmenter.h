@@ -19,7 +19,8 @@ namespace floodplane {
 struct PhaseTimes {
   double preparation = 0.0;     ///< noise estimation, hole filling, smoothing, sub-sampling
   double seed_selection = 0.0;  ///< scanning for seeds and testing them (Sec. III-C)
-  double flood_fill = 0.0;      ///< growing segments (Sec. III-A, III-B)
+  double flood_fill = 0.0;      ///< growing segments (Sec. III-A, III-B); at s > 1 also the coarse planes claimed
+                                ///< into the fine pass
   double relabelling = 0.0;     ///< connected components after Eq. 4 reassignments
   double merging = 0.0;         ///< agglomerative plane merging (Sec. III-D)
   double region_output = 0.0;   ///< labels at full resolution, refinement, plane fits

@@ -165,17 +165,25 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     frame = ws.prepare(full, params_, reuse_noise, result_.noise);
   }
   if (frame.blocks) {
-    ws.coarse.begin(frame.coarse, params_);
+    {
+      PhaseTimer timer(timed, result_.phases.flood_fill);
+      ws.coarse.begin(frame.coarse, params_);
+    }
     ws.coarse.seedAndFlood(timed, result_.stats, result_.phases);
     PhaseTimer timer(timed, result_.phases.merging);
     ws.coarse.relabel();
     const MergedSegments clusters = ws.coarse.merge(MergeCriterion(params_, frame.coarse.tolerances));
     ws.coarse_planes.find(*frame.blocks, frame.coarse, ws.coarse, clusters, params_, frame.measured_tolerances);
   }
-  ws.fine.begin(ws.fine_grid, params_);
-  if (frame.blocks)
-    ws.coarse_planes.claim(*frame.blocks, frame.grid, *frame.holes, frame.tolerances, frame.pitch, ws.fine,
-                           result_.stats);
+  {
+    // The fine pass starts with the coarse planes' inner blocks claimed and flooded on from
+    // their edges: flood work.
+    PhaseTimer timer(timed, result_.phases.flood_fill);
+    ws.fine.begin(ws.fine_grid, params_);
+    if (frame.blocks)
+      ws.coarse_planes.claim(*frame.blocks, frame.grid, *frame.holes, frame.tolerances, frame.pitch, ws.fine,
+                             result_.stats);
+  }
   ws.fine.seedAndFlood(timed, result_.stats, result_.phases);
   {
     PhaseTimer timer(timed, result_.phases.relabelling);

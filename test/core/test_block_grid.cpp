@@ -162,6 +162,29 @@ TEST(BlockGrid, KeepsTheSurfaceOfTheFirstPixelWhereABlockStraddlesAStep) {
   for (std::size_t i = 0; i < blocks.means().size(); ++i) EXPECT_FALSE(blocks.split(i)) << i;
 }
 
+TEST(BlockGrid, JoinsABlocksPixelsThroughAnyPathOfSmallSteps) {
+  // Exact data at 2 m, pixels 0.01 rad apart: one surface steps up to 8 cm between neighbours.
+  // One block of 4 x 4: rows 0-1 flat, rows 2-3 rising to the left in steps of 5 cm, 15 cm
+  // above row 1 in column 0. Each row is one surface and column 0 is cut between rows 1 and 2,
+  // but column 3 joins them: one surface.
+  const auto joined = [](int u, int v) { return v < 2 ? 2.0 : 2.0 + 0.05 * (3 - u); };
+  const Grid grid(4, 4, joined, 4);
+  BlockGrid blocks;
+  blocks.read(grid.grid(), 4);
+  NoiseModel noise;
+  blocks.separateSurfaces(grid.grid(), noise, static_cast<float>(1.0 / test::kPinholeFocal));
+  EXPECT_FALSE(blocks.split(0));
+  EXPECT_EQ(blocks.count(0), 16u);
+  // The same rows with column 3 cut as well (rows 2-3 15 cm up everywhere): two surfaces.
+  const Grid cut(
+      4, 4, [](int, int v) { return v < 2 ? 2.0 : 2.15; }, 4);
+  blocks.read(cut.grid(), 4);
+  blocks.separateSurfaces(cut.grid(), noise, static_cast<float>(1.0 / test::kPinholeFocal));
+  EXPECT_TRUE(blocks.split(0));
+  EXPECT_EQ(blocks.count(0), 8u);
+  EXPECT_NEAR(blocks.means().point(0)[2], 2.0, 1e-6);
+}
+
 TEST(BlockGrid, LeavesANoisySurfaceWhole) {
   // Depth noise of 5 mm at 2 m: within what two neighbouring pixels of one surface can differ.
   const auto depth = [](int u, int v) { return 2.0 + 0.005 * std::sin(u * 12.9898 + v * 78.233); };

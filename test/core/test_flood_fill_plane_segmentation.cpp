@@ -417,6 +417,50 @@ pcl::PointCloud<pcl::PointXYZ>::Ptr withoutPlane(const test::RenderedGrid& scene
   return cloud;
 }
 
+// Outputs passed again to the next call are written over in place (they keep their storage):
+// what a call leaves must be what fresh outputs get, whatever the last call left in them.
+TEST(FloodFillPlaneSegmentation, WritesOverTheOutputsOfTheLastCallAsIfTheyWereNew) {
+  const test::RenderedGrid scene = test::render(kinect(), test::roomCorner(), 0.004, 5);
+  const auto full = toCloud<pcl::PointXYZ>(scene);
+  const auto fewer = withoutPlane(scene, 1);
+  const auto small = toCloud<pcl::PointXYZ>(test::render(test::kinectView(320, 240), test::roomCorner(), 0.004, 6));
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  AllOutputs<pcl::PointXYZ> reused;
+  for (const auto& cloud : {full, fewer, small, full}) {
+    seg.setInputCloud(cloud);
+    seg.segmentAndRefine(reused.regions, reused.coefficients, reused.inliers, reused.labels, reused.label_indices,
+                         reused.boundaries);
+    const AllOutputs<pcl::PointXYZ> fresh = segmentAndRefine(seg);
+    ASSERT_FALSE(fresh.regions.empty());
+    ASSERT_EQ(reused.regions.size(), fresh.regions.size());
+    for (std::size_t k = 0; k < fresh.regions.size(); ++k) {
+      EXPECT_EQ(reused.regions[k].getCount(), fresh.regions[k].getCount());
+      EXPECT_EQ(reused.regions[k].getCentroid(), fresh.regions[k].getCentroid());
+      EXPECT_EQ(reused.regions[k].getCovariance(), fresh.regions[k].getCovariance());
+      EXPECT_EQ(reused.regions[k].getCoefficients(), fresh.regions[k].getCoefficients());
+      const auto& a = reused.regions[k].getContour();
+      const auto& b = fresh.regions[k].getContour();
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t j = 0; j < a.size(); ++j) ASSERT_EQ(a[j].getVector3fMap(), b[j].getVector3fMap());
+    }
+    ASSERT_EQ(reused.coefficients.size(), fresh.coefficients.size());
+    for (std::size_t k = 0; k < fresh.coefficients.size(); ++k)
+      EXPECT_EQ(reused.coefficients[k].values, fresh.coefficients[k].values);
+    const auto same_indices = [](const std::vector<pcl::PointIndices>& a, const std::vector<pcl::PointIndices>& b) {
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k].indices, b[k].indices) << "list " << k;
+    };
+    same_indices(reused.inliers, fresh.inliers);
+    same_indices(reused.label_indices, fresh.label_indices);
+    same_indices(reused.boundaries, fresh.boundaries);
+    ASSERT_EQ(reused.labels->width, cloud->width);
+    ASSERT_EQ(reused.labels->height, cloud->height);
+    ASSERT_EQ(reused.labels->size(), fresh.labels->size());
+    for (std::size_t i = 0; i < fresh.labels->size(); ++i)
+      ASSERT_EQ((*reused.labels)[i].label, (*fresh.labels)[i].label);
+  }
+}
+
 TEST(FloodFillPlaneSegmentation, GivesTheSameTrackIdsWhenTheSameCloudIsSegmentedTwice) {
   const auto cloud = toCloud<pcl::PointXYZ>(test::render(kinect(), test::roomCorner(), 0.004, 3));
   FloodFillPlaneSegmentation<pcl::PointXYZ> seg;

@@ -30,6 +30,8 @@ middle
 <!-- figures:objects end -->
 <!-- figures:resolution begin -->
 <!-- figures:resolution end -->
+<!-- figures:phases begin -->
+<!-- figures:phases end -->
 after
 """
 README_PAGE = "A frame <!-- figures:speed begin -->old<!-- figures:speed end -->; more.\n"
@@ -146,7 +148,7 @@ def test_refuses_a_page_without_its_markers_and_writes_neither_page(pages):
 
 def test_the_real_pages_carry_every_marker_the_script_fills():
     bench = (SOURCE / "bench/README.md").read_text()
-    for name in ("speed", "accuracy", "accuracy-quirks", "chart", "objects"):
+    for name in ("speed", "accuracy", "accuracy-quirks", "chart", "objects", "phases"):
         assert bench.count(f"<!-- figures:{name} begin -->") == 1, name
         assert bench.count(f"<!-- figures:{name} end -->") == 1, name
     readme = (SOURCE / "README.md").read_text()
@@ -175,7 +177,7 @@ def test_writes_the_resolution_sweep_with_time_per_pixel_against_640x480(pages):
             if line.startswith("| 2560x1920")]
     assert rows == [["2560x1920", "1", "157.3", "32.0", "0.80", "188", "75", "2.50"],
                     ["2560x1920", "4", "63.9", "13.0", "1.30", "188", "75", "2.50"]]
-    assert page.endswith("<!-- figures:resolution end -->\nafter\n")
+    assert page.endswith("<!-- figures:phases end -->\nafter\n")
 
 
 def test_a_resolution_run_without_every_size_is_refused_and_nothing_is_written(pages):
@@ -224,3 +226,45 @@ def test_refuses_an_objects_run_without_scores(pages):
     done = run(pages, "--objects", pages / "objects.json")
     assert done.returncode == 1
     assert "not the JSON of pcd_compare --objects" in done.stderr
+
+
+def phases(name, prep, output, pcl, outside, call):
+    return {"name": name, "run_type": "iteration", "time_unit": "ms", "real_time": call, "cpu_time": call / 2,
+            "prep_ms": prep,
+            "seed_ms": 1.0, "flood_ms": 1.0, "relabel_ms": 0.5, "merge_ms": 0.5, "output_ms": output, "pcl_ms": pcl,
+            "outside_ms": outside}
+
+
+def test_writes_each_phase_s_median_and_share_per_set_and_factor(pages):
+    run_json = {"context": {"date": "2026-12-06T13:00:00+00:00"}, "benchmarks": [
+        # The real frames at the default: preparation 2, 4, 6 ms of calls of 10, 10, 20 ms.
+        phases("floodplane/phases4/real:a", 2.0, 1.0, 0.5, 0.25, 10.0),
+        phases("floodplane/phases4/real:b", 4.0, 1.0, 0.5, -0.01, 10.0),
+        phases("floodplane/phases4/real:c", 6.0, 3.0, 1.0, 0.0, 20.0),
+        phases("floodplane/phases/real:a", 1.0, 2.0, 0.5, 0.0, 8.0),
+        phases("floodplane/phases/exact:tabletop", 1.0, 2.0, 0.5, 0.0, 8.0),
+        phases("floodplane/s1/real:a", 9.0, 9.0, 9.0, 9.0, 99.0)]}
+    (pages / "phases.json").write_text(json.dumps(run_json))
+    done = run(pages, "--phases", pages / "phases.json")
+    assert done.returncode == 0, done.stderr
+    page = (pages / "bench.md").read_text()
+    assert "old speed" in page and "2026-12-06 13:00" in page
+    lines = [line for line in page.splitlines() if line.startswith("| ")]
+    assert lines[0] == "| phase | real frames, default | real frames, s = 1 | scenes, exact, s = 1 |"
+    rows = {line.split("|")[1].strip(): [cell.strip() for cell in line.strip().strip("|").split("|")[1:]]
+            for line in lines}
+    # Median 4 ms; share 12 of the 40 ms of the three calls.
+    assert rows["preparation"] == ["4.00 (30 %)", "1.00 (12 %)", "1.00 (12 %)"]
+    # Glue: the conversion and the time outside every phase (a negative rest counts as 0).
+    assert rows["PCL glue"][0] == "0.75 (6 %)"
+    assert rows["**whole call**"] == ["**10.00**", "**8.00**", "**8.00**"]
+    assert rows["CPU time of the call"] == ["5.00", "4.00", "4.00"]
+    assert (pages / "README.md").read_text() == README_PAGE
+
+
+def test_refuses_a_phase_run_without_phase_benchmarks_and_writes_nothing(pages):
+    (pages / "phases.json").write_text(json.dumps(speed_run()))
+    done = run(pages, "--phases", pages / "phases.json")
+    assert done.returncode == 1
+    assert "no floodplane/phases" in done.stderr
+    assert (pages / "bench.md").read_text() == BENCH_PAGE

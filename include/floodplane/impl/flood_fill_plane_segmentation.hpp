@@ -68,16 +68,15 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
   planes_.clear();
   track_ids_.clear();
   phases_ = PhaseTimes();
-  const std::string name = getClassName();
   if (!input_) {
-    PCL_ERROR("[floodplane::%s::%s] No input cloud: call setInputCloud first.\n", name.c_str(), method);
+    PCL_ERROR("[floodplane::%s::%s] No input cloud: call setInputCloud first.\n", getClassName().c_str(), method);
     return false;
   }
   if (!input_->isOrganized() || input_->size() != static_cast<std::size_t>(input_->width) * input_->height) {
     PCL_ERROR(
         "[floodplane::%s::%s] This method needs an organized point cloud (height > 1); got %u x %u "
         "with %zu points.\n",
-        name.c_str(), method, input_->width, input_->height, static_cast<std::size_t>(input_->size()));
+        getClassName().c_str(), method, input_->width, input_->height, static_cast<std::size_t>(input_->size()));
     return false;
   }
 
@@ -154,11 +153,17 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillCoefficients(
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::PointIndices>& inlier_indices,
                                                               std::vector<pcl::PointIndices>* label_indices) const {
+  // Every list is sized before the one pass over the labels writes it (a plane's inlier count
+  // is the count of its label in the image) and keeps the storage of the last call: a camera
+  // loop that passes the same outputs allocates nothing once they have grown.
   const std::vector<std::uint32_t>& labels = last_->labels;
+  const std::size_t size = labels.size();
   inlier_indices.resize(planes_.size());
+  std::size_t labelled = 0;
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     inlier_indices[k].header = input_->header;
-    inlier_indices[k].indices.clear();
+    inlier_indices[k].indices.resize(last_->planes[k].inlier_count);
+    labelled += last_->planes[k].inlier_count;
   }
   pcl::PointIndices* unlabelled = nullptr;
   if (label_indices) {
@@ -171,90 +176,124 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillIndices(std::vector<pcl::P
       entry.header = input_->header;
       entry.indices.clear();
     }
+    for (std::size_t k = 0; k < planes_.size(); ++k)
+      (*label_indices)[outputLabel(k)].indices.resize(last_->planes[k].inlier_count);
     unlabelled = &(*label_indices)[0];
+    // At most the pixels no plane holds; cut to the finite ones after the pass.
+    unlabelled->indices.resize(labelled <= size ? size - labelled : 0);
   }
   // One pass over the labels, a run of one label at a time (a label image is mostly long
-  // runs); `add_inliers(k, i, n)` files pixels i .. i + n - 1 under plane k + 1.
-  const auto collect = [&](auto&& add_inliers) {
-    const std::size_t size = labels.size();
-    for (std::size_t i = 0; i < size;) {
-      const std::uint32_t k = labels[i];
-      std::size_t end = i + 1;
-      while (end < size && labels[end] == k) ++end;
-      if (k != 0) {
-        if (!add_inliers(k - 1, i, end - i)) return false;
-      } else if (unlabelled) {
-        for (std::size_t j = i; j < end; ++j)
-          if (pcl::isXYZFinite((*input_)[j])) unlabelled->indices.push_back(static_cast<int>(j));
-      }
-      i = end;
-    }
-    return true;
-  };
-  // Each plane's indices go through a cursor into storage of its inlier count (the count of
-  // its label in the image), rather than one push_back at a time.
-  std::vector<int*> cursor(planes_.size());
+  // runs). Each plane's indices go through a cursor into their storage, into the inlier list
+  // and, with label_indices, its entry there.
+  std::vector<int*> cursor(planes_.size()), label_cursor(label_indices ? planes_.size() : 0);
   std::vector<int*> end(planes_.size());
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     std::vector<int>& indices = inlier_indices[k].indices;
-    indices.resize(last_->planes[k].inlier_count);
     cursor[k] = indices.data();
     end[k] = indices.data() + indices.size();
+    if (label_indices) label_cursor[k] = (*label_indices)[outputLabel(k)].indices.data();
   }
-  bool counts_agree = collect([&](std::size_t k, std::size_t first, std::size_t n) {
-    if (static_cast<std::size_t>(end[k] - cursor[k]) < n) return false;
-    std::iota(cursor[k], cursor[k] + n, static_cast<int>(first));
-    cursor[k] += n;
-    return true;
-  });
+  int* unlabelled_cursor = unlabelled ? unlabelled->indices.data() : nullptr;
+  int* const unlabelled_end = unlabelled ? unlabelled_cursor + unlabelled->indices.size() : nullptr;
+  bool counts_agree = true;
+  for (std::size_t i = 0; i < size && counts_agree;) {
+    const std::uint32_t label = labels[i];
+    std::size_t run_end = i + 1;
+    // Four labels a step while they all match (runs are long), then one at a time.
+    while (run_end + 4 <= size && ((labels[run_end] ^ label) | (labels[run_end + 1] ^ label) |
+                                   (labels[run_end + 2] ^ label) | (labels[run_end + 3] ^ label)) == 0)
+      run_end += 4;
+    while (run_end < size && labels[run_end] == label) ++run_end;
+    const std::size_t n = run_end - i;
+    if (label != 0) {
+      const std::size_t k = label - 1;
+      if (k >= planes_.size() || static_cast<std::size_t>(end[k] - cursor[k]) < n) {
+        counts_agree = false;
+        break;
+      }
+      std::iota(cursor[k], cursor[k] + n, static_cast<int>(i));
+      if (label_indices) {
+        std::copy(cursor[k], cursor[k] + n, label_cursor[k]);
+        label_cursor[k] += n;
+      }
+      cursor[k] += n;
+    } else if (unlabelled) {
+      for (std::size_t j = i; j < run_end; ++j) {
+        if (!pcl::isXYZFinite((*input_)[j])) continue;
+        if (unlabelled_cursor == unlabelled_end) {
+          counts_agree = false;
+          break;
+        }
+        *unlabelled_cursor++ = static_cast<int>(j);
+      }
+    }
+    i = run_end;
+  }
   for (std::size_t k = 0; counts_agree && k < planes_.size(); ++k) counts_agree = cursor[k] == end[k];
-  if (!counts_agree) {
-    // Cannot happen (the core counts what it labels, and its tests check that); if it did,
-    // the indices are still right, only slower to make.
-    if (unlabelled) unlabelled->indices.clear();
-    for (pcl::PointIndices& plane : inlier_indices) plane.indices.clear();
-    collect([&](std::size_t k, std::size_t first, std::size_t n) {
-      for (std::size_t i = first; i < first + n; ++i) inlier_indices[k].indices.push_back(static_cast<int>(i));
-      return true;
-    });
+  if (counts_agree) {
+    if (unlabelled)
+      unlabelled->indices.resize(static_cast<std::size_t>(unlabelled_cursor - unlabelled->indices.data()));
+    return;
   }
-  if (label_indices) {
-    for (std::size_t k = 0; k < planes_.size(); ++k) (*label_indices)[outputLabel(k)] = inlier_indices[k];
+  // Cannot happen (the core counts what it labels, and its tests check that); if it did,
+  // the indices are still right, only slower to make.
+  for (pcl::PointIndices& plane : inlier_indices) plane.indices.clear();
+  if (label_indices)
+    for (pcl::PointIndices& entry : *label_indices) entry.indices.clear();
+  for (std::size_t i = 0; i < size; ++i) {
+    const std::uint32_t label = labels[i];
+    if (label != 0 && label - 1 < planes_.size()) {
+      inlier_indices[label - 1].indices.push_back(static_cast<int>(i));
+      if (label_indices) (*label_indices)[outputLabel(label - 1)].indices.push_back(static_cast<int>(i));
+    } else if (unlabelled && pcl::isXYZFinite((*input_)[i])) {
+      unlabelled->indices.push_back(static_cast<int>(i));
+    }
   }
 }
 
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::fillLabels(pcl::PointCloud<PointLT>& labels) const {
   labels.header = input_->header;
-  labels.resize(input_->width, input_->height);  // sets width, height and size
+  // Sets width, height and size; a cloud of the frame's size already (the last call's) keeps
+  // its points, each written once below.
+  labels.resize(input_->width, input_->height);
   labels.is_dense = true;
   labels.sensor_origin_ = input_->sensor_origin_;
   labels.sensor_orientation_ = input_->sensor_orientation_;
+  const std::uint32_t* core = last_->labels.data();
+  const std::size_t size = last_->labels.size();
   if (!tracking_) {
-    for (std::size_t i = 0; i < last_->labels.size(); ++i) labels[i].label = last_->labels[i];
+    for (std::size_t i = 0; i < size; ++i) labels[i].label = core[i];
     return;
   }
   std::vector<std::uint32_t> label_of_rank(planes_.size() + 1, 0);  // [core label]; 0 stays 0
   for (std::size_t k = 0; k < planes_.size(); ++k) label_of_rank[k + 1] = outputLabel(k);
-  for (std::size_t i = 0; i < last_->labels.size(); ++i) labels[i].label = label_of_rank[last_->labels[i]];
+  for (std::size_t i = 0; i < size; ++i) labels[i].label = label_of_rank[core[i]];
 }
 
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
                                                               std::vector<pcl::PointIndices>* boundary_indices) {
+  // The regions (and boundary lists) of the last call are written over in place: their
+  // contours keep their storage, and each contour point is written once.
   regions.resize(planes_.size());
   if (boundary_indices) boundary_indices->resize(planes_.size());
   const Eigen::Vector3f viewpoint = input_->sensor_origin_.template head<3>();
+  const typename PointCloud::VectorType no_contour;
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     contour_.clear();
     last_->boundary(k, contour_);
     const CloudPlane& plane = planes_[k];
-    typename PointCloud::VectorType contour(contour_.size());
+    // Copy-assigning a region of an empty contour keeps the old contour's storage.
+    regions[k] = pcl::PlanarRegion<PointT>(plane.centroid.template head<3>(), plane.covariance,
+                                           last_->planes[k].inlier_count, no_contour, plane.coefficients);
+    typename PointCloud::VectorType& contour = regions[k].getContour();
+    contour.resize(contour_.size());
+    const Eigen::Vector3f n = plane.coefficients.template head<3>();
     for (std::size_t j = 0; j < contour_.size(); ++j) {
       contour[j] = (*input_)[contour_[j]];
       if (project_points_) {
         // Along the viewing ray from the viewpoint onto the plane, as OMPS.
-        const Eigen::Vector3f n = plane.coefficients.template head<3>();
         const Eigen::Vector3f ray = contour[j].getVector3fMap() - viewpoint;
         const float denominator = n.dot(ray);
         if (std::abs(denominator) > 1e-12f) {
@@ -267,8 +306,6 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::fillRegions(Regions& regions,
       (*boundary_indices)[k].header = input_->header;
       (*boundary_indices)[k].indices.assign(contour_.begin(), contour_.end());
     }
-    regions[k] = pcl::PlanarRegion<PointT>(plane.centroid.template head<3>(), plane.covariance,
-                                           last_->planes[k].inlier_count, contour, plane.coefficients);
   }
 }
 
@@ -287,12 +324,16 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::clearOutputs(std::vector<pcl::
 }
 
 // ---- the OMPS-compatible entry points ----------------------------------------------------
+// The outputs are cleared when there is nothing to segment; otherwise they are written over,
+// keeping their storage (see fillIndices).
 
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::ModelCoefficients>& model_coefficients,
                                                           std::vector<pcl::PointIndices>& inlier_indices) {
-  clearOutputs(model_coefficients, inlier_indices);
-  if (!run(false, "segment")) return;
+  if (!run(false, "segment")) {
+    clearOutputs(model_coefficients, inlier_indices);
+    return;
+  }
   fillCoefficients(model_coefficients);
   fillIndices(inlier_indices, nullptr);
   finishPhases();
@@ -304,12 +345,14 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::Model
                                                           Centroids& centroids, Covariances& covariances,
                                                           pcl::PointCloud<PointLT>& labels,
                                                           std::vector<pcl::PointIndices>& label_indices) {
-  clearOutputs(model_coefficients, inlier_indices);
   centroids.clear();
   covariances.clear();
-  labels.clear();
-  label_indices.clear();
-  if (!run(false, "segment")) return;
+  if (!run(false, "segment")) {
+    clearOutputs(model_coefficients, inlier_indices);
+    labels.clear();
+    label_indices.clear();
+    return;
+  }
   fillCoefficients(model_coefficients);
   fillIndices(inlier_indices, &label_indices);
   fillLabels(labels);
@@ -322,16 +365,20 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segment(std::vector<pcl::Model
 
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::segment(Regions& regions) {
-  regions.clear();
-  if (!run(false, "segment")) return;
+  if (!run(false, "segment")) {
+    regions.clear();
+    return;
+  }
   fillRegions(regions, nullptr);
   finishPhases();
 }
 
 template <typename PointT, typename PointLT>
 void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(Regions& regions) {
-  regions.clear();
-  if (!run(true, "segmentAndRefine")) return;
+  if (!run(true, "segmentAndRefine")) {
+    regions.clear();
+    return;
+  }
   fillRegions(regions, nullptr);
   finishPhases();
 }
@@ -341,13 +388,15 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(
     Regions& regions, std::vector<pcl::ModelCoefficients>& model_coefficients,
     std::vector<pcl::PointIndices>& inlier_indices, PointCloudLPtr& labels,
     std::vector<pcl::PointIndices>& label_indices, std::vector<pcl::PointIndices>& boundary_indices) {
-  regions.clear();
-  clearOutputs(model_coefficients, inlier_indices);
   if (!labels) labels.reset(new PointCloudL);
-  labels->clear();
-  label_indices.clear();
-  boundary_indices.clear();
-  if (!run(true, "segmentAndRefine")) return;
+  if (!run(true, "segmentAndRefine")) {
+    regions.clear();
+    clearOutputs(model_coefficients, inlier_indices);
+    labels->clear();
+    label_indices.clear();
+    boundary_indices.clear();
+    return;
+  }
   fillCoefficients(model_coefficients);
   fillIndices(inlier_indices, &label_indices);
   fillLabels(*labels);
