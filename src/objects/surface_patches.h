@@ -1,0 +1,62 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "floodplane/noise_model.h"
+#include "floodplane/point_grid.h"
+#include "util/union_find.h"
+
+namespace floodplane {
+
+/// When two neighbouring points are on one surface: at most
+///   3 sqrt(2) sigma(r) + q(r) + footprints * pitch * r
+/// apart, r the nearer one's range (the difference of two noisy depths, the depth lattice's
+/// step, and a surface seen obliquely, whose neighbouring points lie several footprints apart).
+struct SurfaceStep {
+  NoiseModel noise;
+  double pitch = 0.0;       ///< the angle between neighbouring viewing rays [rad]
+  double footprints = 4.0;  ///< ObjectOptions::max_step_footprints
+  double tolerance(double range) const;
+};
+
+/// The angle between neighbouring viewing rays [rad]: the median over finite horizontal
+/// neighbours of a few rows (0 when there are none).
+double angularPitch(const PointGrid& grid);
+
+/// A small piece of surface: its size, centroid and normal (towards the sensor).
+struct SurfacePatch {
+  std::uint32_t pixels = 0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< zero when its points span no plane
+};
+
+/// Two patches that touch on the grid (first < second) and how many neighbouring pixel pairs
+/// join them.
+struct PatchContact {
+  std::int32_t first = 0;
+  std::int32_t second = 0;
+  std::uint32_t pairs = 0;
+};
+
+/// The object points cut into patches that are each one piece of surface: the pixels of one
+/// plane of the segmentation, and the pixels on no plane within one `side` x `side` square of
+/// the grid, each split where neighbours are not on one surface (SurfaceStep). Their contacts
+/// are the neighbouring pixel pairs (4-neighbours) on one surface across two patches.
+struct SurfacePatches {
+  std::vector<std::int32_t> patch_of_pixel;  ///< -1: not an object point
+  std::vector<SurfacePatch> patches;
+  std::vector<PatchContact> contacts;  ///< sorted by (first, second)
+};
+
+/// Builds the patches of the pixels with `candidate` set; `plane_labels` is the segmentation's
+/// label image (0: no plane). `union_find` is a workspace.
+void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
+                         const std::vector<std::uint8_t>& candidate, const SurfaceStep& step, int side,
+                         UnionFind& union_find, SurfacePatches& out);
+
+}  // namespace floodplane
