@@ -101,13 +101,15 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   SurfacePatches patches;
   buildSurfacePatches(grid, planes.labels, candidate, step, options.local_patch_pixels, union_find, patches);
   joinConvexPatches(patches, options.concavity_tolerance_rad, union_find);
+  absorbFragments(patches, options.min_object_pixels, union_find);
 
   // The objects: the joined patches, largest first (ties in raster order of their first
-  // pixel), those below the smallest size dropped.
+  // pixel), those still below the smallest size (touching no object) dropped.
   const std::size_t patch_count = patches.patches.size();
   std::vector<std::uint32_t> pixels_of_root(patch_count, 0);
   for (std::size_t k = 0; k < patch_count; ++k) {
-    pixels_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))] += patches.patches[k].pixels;
+    pixels_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))] +=
+        patches.patches[k].pixels;
   }
   std::vector<std::int32_t> roots;
   for (std::size_t k = 0; k < patch_count; ++k) {

@@ -14,9 +14,9 @@ namespace floodplane {
 
 /// One supporting surface: a large plane with the smaller planes in its plane (its pieces).
 struct SupportSurface {
-  std::uint32_t label = 0;                         ///< the large plane's label (k for planes[k - 1])
+  std::uint32_t label = 0;                            ///< the large plane's label (k for planes[k - 1])
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, towards the sensor
-  double offset = 0.0;                             ///< n . P + d = 0
+  double offset = 0.0;                                ///< n . P + d = 0
   /// The signed height of a point above the surface, positive on the sensor's side [m].
   double height(const Eigen::Vector3d& point) const { return normal.dot(point) + offset; }
 };

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "models/depth_noise.h"
 
@@ -68,11 +69,10 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     const double tolerance = step.tolerance(range);
     return (p - q).squaredNorm() <= tolerance * tolerance;
   };
-  // Two neighbours on one surface are in one patch when they share a plane, or are both on
-  // none within one square.
+  // Two neighbours on one surface are in one patch when they share a plane (or both are on
+  // none) within one square.
   auto samePatch = [&](std::size_t a, int xa, int ya, std::size_t b, int xb, int yb) {
-    if (plane_labels[a] != plane_labels[b]) return false;
-    return plane_labels[a] != 0 || (xa / side == xb / side && ya / side == yb / side);
+    return plane_labels[a] == plane_labels[b] && xa / side == xb / side && ya / side == yb / side;
   };
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -80,12 +80,14 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
       if (!candidate[i]) continue;
       if (x + 1 < width && candidate[i + 1] && onOneSurface(i, i + 1)) {
         links[i] |= kRight;
-        if (samePatch(i, x, y, i + 1, x + 1, y)) union_find.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(i + 1));
+        if (samePatch(i, x, y, i + 1, x + 1, y))
+          union_find.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(i + 1));
       }
       const std::size_t below = i + static_cast<std::size_t>(width);
       if (y + 1 < height && candidate[below] && onOneSurface(i, below)) {
         links[i] |= kDown;
-        if (samePatch(i, x, y, below, x, y + 1)) union_find.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(below));
+        if (samePatch(i, x, y, below, x, y + 1))
+          union_find.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(below));
       }
     }
   }
@@ -108,22 +110,43 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     out.patch_of_pixel[i] = index;
     const Eigen::Vector3d p = pointAt(grid, i);
     out.patches[static_cast<std::size_t>(index)].pixels += 1;
+    out.patches[static_cast<std::size_t>(index)].plane = plane_labels[i];
     sums[static_cast<std::size_t>(index)] += p;
     squares[static_cast<std::size_t>(index)] += p * p.transpose();
   }
+  // The normal of a patch on no plane is its own; a plane's patches share the plane's (the
+  // fit over all of them, steadier than a square's).
+  auto normalOf = [](const Eigen::Vector3d& sum, const Eigen::Matrix3d& square, double count) -> Eigen::Vector3d {
+    if (count < 3) return Eigen::Vector3d::Zero();
+    const Eigen::Vector3d centroid = sum / count;
+    const Eigen::Matrix3d covariance = square / count - centroid * centroid.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    // A line of points (or a single point repeated) spans no plane.
+    if (!(solver.eigenvalues()[1] > 1e-12)) return Eigen::Vector3d::Zero();
+    Eigen::Vector3d normal = solver.eigenvectors().col(0);
+    return normal.dot(centroid) > 0.0 ? Eigen::Vector3d(-normal) : normal;
+  };
+  std::uint32_t largest_plane = 0;
+  for (const SurfacePatch& patch : out.patches) largest_plane = std::max(largest_plane, patch.plane);
+  std::vector<Eigen::Vector3d> plane_sums(largest_plane + 1, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Matrix3d> plane_squares(largest_plane + 1, Eigen::Matrix3d::Zero());
+  std::vector<double> plane_counts(largest_plane + 1, 0.0);
+  for (std::size_t k = 0; k < out.patches.size(); ++k) {
+    const std::uint32_t plane = out.patches[k].plane;
+    if (plane == 0) continue;
+    plane_sums[plane] += sums[k];
+    plane_squares[plane] += squares[k];
+    plane_counts[plane] += out.patches[k].pixels;
+  }
+  std::vector<Eigen::Vector3d> plane_normals(largest_plane + 1, Eigen::Vector3d::Zero());
+  for (std::uint32_t plane = 1; plane <= largest_plane; ++plane) {
+    if (plane_counts[plane] > 0)
+      plane_normals[plane] = normalOf(plane_sums[plane], plane_squares[plane], plane_counts[plane]);
+  }
   for (std::size_t k = 0; k < out.patches.size(); ++k) {
     SurfacePatch& patch = out.patches[k];
-    const double count = patch.pixels;
-    patch.centroid = sums[k] / count;
-    if (patch.pixels < 3) continue;
-    const Eigen::Matrix3d covariance = squares[k] / count - patch.centroid * patch.centroid.transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    const Eigen::Vector3d values = solver.eigenvalues();
-    // A line of points (or a single point repeated) spans no plane.
-    if (!(values[1] > 1e-12)) continue;
-    Eigen::Vector3d normal = solver.eigenvectors().col(0);
-    if (normal.dot(patch.centroid) > 0.0) normal = -normal;
-    patch.normal = normal;
+    patch.centroid = sums[k] / static_cast<double>(patch.pixels);
+    patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels);
   }
   // The contacts: pixel pairs on one surface across two patches, counted per pair of patches.
   std::vector<std::uint64_t> keys;

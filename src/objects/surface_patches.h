@@ -28,11 +28,13 @@ struct SurfaceStep {
 /// neighbours of a few rows (0 when there are none).
 double angularPitch(const PointGrid& grid);
 
-/// A small piece of surface: its size, centroid and normal (towards the sensor).
+/// A small piece of surface: its size, plane, centroid and normal (towards the sensor).
 struct SurfacePatch {
   std::uint32_t pixels = 0;
+  std::uint32_t plane = 0;  ///< the plane it is part of (the segmentation's label), 0: none
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< zero when its points span no plane
+  /// The plane's normal, or on no plane its own; zero when its points span no plane.
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 };
 
 /// Two patches that touch on the grid (first < second) and how many neighbouring pixel pairs
@@ -43,9 +45,11 @@ struct PatchContact {
   std::uint32_t pairs = 0;
 };
 
-/// The object points cut into patches that are each one piece of surface: the pixels of one
-/// plane of the segmentation, and the pixels on no plane within one `side` x `side` square of
-/// the grid, each split where neighbours are not on one surface (SurfaceStep). Their contacts
+/// The object points cut into patches that are each one small piece of surface: the pixels of
+/// one plane of the segmentation (or of none) within one `side` x `side` square of the grid,
+/// split where neighbours are not on one surface (SurfaceStep). Small, so that the convexity
+/// test between two touching patches looks at the surfaces where they meet, not at the far
+/// side of a large plane (whose centroid can lie anywhere: a strip around a box). Their contacts
 /// are the neighbouring pixel pairs (4-neighbours) on one surface across two patches.
 struct SurfacePatches {
   std::vector<std::int32_t> patch_of_pixel;  ///< -1: not an object point

@@ -8,11 +8,11 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -161,8 +161,8 @@ TEST(ObjectSegmentation, DepthStepSplitsTwoTouchingBoxes) {
 }
 
 // A roof (the ridge towards the camera: convex) or a valley (concave) over pixels 20..59 x
-// 22..37 (each face 30 x 27 cm: no support), its two faces planes 2 and 3, 5 mm of depth per pixel from the middle column
-// (normals about 37 degrees apart).
+// 22..37 (each face 30 x 27 cm: no support), its two faces planes 2 and 3, 5 mm of depth per pixel from the middle
+// column (normals about 37 degrees apart).
 Scene ridge(bool convex) {
   return {[convex](int u, int v) {
             if (!inBox(u, v, 20, 22, 60, 38)) return kTable;
@@ -212,12 +212,9 @@ TEST(ObjectSegmentation, SmallFringesAreDropped) {
   ObjectOptions options;
   options.min_object_pixels = 50;
   // A box of 7 x 7 pixels (49) is below the limit, one of 8 x 8 (64) is not.
-  const Made made = make({[](int u, int v) {
-                            return inBox(u, v, 10, 10, 17, 17) || inBox(u, v, 50, 30, 58, 38) ? kTable - 0.1 : kTable;
-                          },
-                          [](int u, int v) {
-                            return inBox(u, v, 10, 10, 17, 17) || inBox(u, v, 50, 30, 58, 38) ? 0u : 1u;
-                          }});
+  const Made made = make(
+      {[](int u, int v) { return inBox(u, v, 10, 10, 17, 17) || inBox(u, v, 50, 30, 58, 38) ? kTable - 0.1 : kTable; },
+       [](int u, int v) { return inBox(u, v, 10, 10, 17, 17) || inBox(u, v, 50, 30, 58, 38) ? 0u : 1u; }});
   const ObjectSegmentation objects = segmentObjects(made.grid.grid(), made.planes, options);
   ASSERT_EQ(objects.objects.size(), 1u);
   EXPECT_EQ(objects.objects[0].pixel_count, 64u);
@@ -225,14 +222,13 @@ TEST(ObjectSegmentation, SmallFringesAreDropped) {
 }
 
 TEST(ObjectSegmentation, LargestObjectFirst) {
-  const Made made = make({[](int u, int v) {
-                            return inBox(u, v, 5, 5, 15, 15) || inBox(u, v, 40, 20, 60, 40) ? kTable - 0.1 : kTable;
-                          },
-                          [](int u, int v) {
-                            if (inBox(u, v, 5, 5, 15, 15)) return 3u;
-                            if (inBox(u, v, 40, 20, 60, 40)) return 2u;
-                            return 1u;
-                          }});
+  const Made made = make(
+      {[](int u, int v) { return inBox(u, v, 5, 5, 15, 15) || inBox(u, v, 40, 20, 60, 40) ? kTable - 0.1 : kTable; },
+       [](int u, int v) {
+         if (inBox(u, v, 5, 5, 15, 15)) return 3u;
+         if (inBox(u, v, 40, 20, 60, 40)) return 2u;
+         return 1u;
+       }});
   const ObjectSegmentation objects = segmentObjects(made.grid.grid(), made.planes);
   ASSERT_EQ(objects.objects.size(), 2u);
   EXPECT_EQ(objects.objects[0].pixel_count, 400u);
@@ -244,10 +240,9 @@ TEST(ObjectSegmentation, LargestObjectFirst) {
 TEST(ObjectSegmentation, NoSupportMeansEverySurfaceIsAnObject) {
   // A small board (40 x 30 cm at 2 m: 0.12 m^2, below the support area) alone: no support,
   // so it is an object of its own standing on nothing.
-  const Made made = make({[](int u, int v) {
-                            return inBox(u, v, 30, 20, 50, 35) ? kTable : std::numeric_limits<double>::quiet_NaN();
-                          },
-                          [](int u, int v) { return inBox(u, v, 30, 20, 50, 35) ? 1u : 0u; }});
+  const Made made = make(
+      {[](int u, int v) { return inBox(u, v, 30, 20, 50, 35) ? kTable : std::numeric_limits<double>::quiet_NaN(); },
+       [](int u, int v) { return inBox(u, v, 30, 20, 50, 35) ? 1u : 0u; }});
   const ObjectSegmentation objects = segmentObjects(made.grid.grid(), made.planes);
   EXPECT_TRUE(objects.supports.empty());
   ASSERT_EQ(objects.objects.size(), 1u);
@@ -358,11 +353,13 @@ TEST(SurfacePatches, PlanesAndSquaresWithTheirContacts) {
   buildSurfacePatches(stepped.grid(), labels, candidate, step, 8, union_find, patches);
   EXPECT_EQ(patches.patches.size(), 2u);
   EXPECT_TRUE(patches.contacts.empty());
-  // One plane label over both squares makes one patch.
+  // A plane over both squares: still a patch per square, each with the plane's normal.
   std::vector<std::uint32_t> one_plane(16 * 8, 4);
   buildSurfacePatches(flat.grid(), one_plane, candidate, step, 8, union_find, patches);
-  EXPECT_EQ(patches.patches.size(), 1u);
-  EXPECT_EQ(patches.patches[0].pixels, 128u);
+  ASSERT_EQ(patches.patches.size(), 2u);
+  EXPECT_EQ(patches.patches[0].plane, 4u);
+  EXPECT_EQ(patches.patches[1].pixels, 64u);
+  EXPECT_NEAR(patches.patches[1].normal.z(), -1.0, 1e-6);
 }
 
 }  // namespace
