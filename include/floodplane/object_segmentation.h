@@ -54,8 +54,8 @@ struct ObjectOptions {
 
 /// One object found on the supports.
 struct SegmentedObject {
-  std::uint32_t id = 0;           ///< 1..K, its label; the largest object is 1
-  std::uint32_t pixel_count = 0;  ///< its pixels at full resolution
+  std::uint32_t id = 0;                                ///< 1..K, its label; the largest object is 1
+  std::uint32_t pixel_count = 0;                       ///< its pixels at full resolution
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of its points (sensor frame) [m]
   Eigen::Vector3d min = Eigen::Vector3d::Zero();       ///< axis-aligned bounding box, sensor frame [m]
   Eigen::Vector3d max = Eigen::Vector3d::Zero();
