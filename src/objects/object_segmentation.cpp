@@ -50,18 +50,19 @@ void checkOptions(const ObjectOptions& options) {
 
 // The object points: finite, on no support, and above every support by the clearance and
 // three noise deviations at their range.
-std::vector<std::uint8_t> objectPoints(const PointGrid& grid, const Segmentation& planes, const Supports& supports,
-                                       const ObjectOptions& options) {
-  std::vector<std::uint8_t> candidate(grid.size(), 0);
+void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const Supports& supports,
+                      const ObjectOptions& options, ObjectPoints& points) {
+  points.clear();
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const std::uint32_t label = planes.labels[i];
     if (label < supports.is_support.size() && supports.is_support[label]) continue;
     if (!grid.isFinite(i)) continue;
     const float* p = grid.point(i);
     const Eigen::Vector3d point(p[0], p[1], p[2]);
-    const double range = point.norm();
-    const double clearance =
-        options.support_clearance_m + kPointDeviations * planes.noise.sigma(range) + planes.noise.step(range);
+    // The noise model needs r^2 alone; the range itself only for the points kept.
+    const double range_sq = point.squaredNorm();
+    const double clearance = options.support_clearance_m + noiseDeviations(planes.noise, kPointDeviations, range_sq) +
+                             planes.noise.step_constant + planes.noise.step_quadratic * range_sq;
     bool above = true;
     for (const SupportSurface& surface : supports.surfaces) {
       if (surface.height(point) <= clearance) {
@@ -69,9 +70,11 @@ std::vector<std::uint8_t> objectPoints(const PointGrid& grid, const Segmentation
         break;
       }
     }
-    candidate[i] = above ? 1 : 0;
+    if (above) {
+      points.pixels.push_back(i);
+      points.ranges.push_back(static_cast<float>(std::sqrt(range_sq)));
+    }
   }
-  return candidate;
 }
 
 }  // namespace
@@ -91,7 +94,8 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
 
   const Supports supports = findSupports(planes.planes, options);
   for (const SupportSurface& surface : supports.surfaces) result.supports.push_back(surface.label);
-  const std::vector<std::uint8_t> candidate = objectPoints(grid, planes, supports, options);
+  ObjectPoints points;
+  findObjectPoints(grid, planes, supports, options, points);
 
   SurfaceStep step;
   step.noise = planes.noise;
@@ -99,7 +103,7 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   step.footprints = options.max_step_footprints;
   UnionFind union_find;
   SurfacePatches patches;
-  buildSurfacePatches(grid, planes.labels, candidate, step, options.local_patch_pixels, union_find, patches);
+  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, union_find, patches);
   joinConvexPatches(patches, options.concavity_tolerance_rad, union_find);
   absorbFragments(patches, options.min_object_pixels, union_find);
 
@@ -132,9 +136,8 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   }
   std::vector<double> lowest(roots.size(), std::numeric_limits<double>::infinity());
   std::vector<std::uint32_t> support_of(roots.size(), 0);
-  for (std::size_t i = 0; i < grid.size(); ++i) {
+  for (const std::size_t i : points.pixels) {
     const std::int32_t patch = patches.patch_of_pixel[i];
-    if (patch < 0) continue;
     const std::uint32_t id = id_of_root[static_cast<std::size_t>(union_find.find(patch))];
     if (id == 0) continue;
     result.labels[i] = id;

@@ -16,6 +16,12 @@ double SurfaceStep::tolerance(double range) const {
   return kDifferenceDeviations * noise.sigma(range) + noise.step(range) + footprints * pitch * range;
 }
 
+void ObjectPoints::add(const PointGrid& grid, std::size_t index) {
+  const float* p = grid.point(index);
+  pixels.push_back(index);
+  ranges.push_back(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+}
+
 double angularPitch(const PointGrid& grid) {
   std::vector<double> angles;
   const int rows = std::min(grid.height, 9);
@@ -42,11 +48,6 @@ double angularPitch(const PointGrid& grid) {
 
 namespace {
 
-Eigen::Vector3d pointAt(const PointGrid& grid, std::size_t index) {
-  const float* p = grid.point(index);
-  return Eigen::Vector3d(p[0], p[1], p[2]);
-}
-
 // Bits of SurfacePatches' pixel links: joined to the right and to the lower neighbour.
 constexpr std::uint8_t kRight = 1;
 constexpr std::uint8_t kDown = 2;
@@ -54,72 +55,122 @@ constexpr std::uint8_t kDown = 2;
 }  // namespace
 
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const std::vector<std::uint8_t>& candidate, const SurfaceStep& step, int side,
-                         UnionFind& union_find, SurfacePatches& out) {
+                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
+                         SurfacePatches& out) {
   const int width = grid.width;
   const int height = grid.height;
   const std::size_t n = grid.size();
   side = std::max(side, 1);
-  union_find.reset(n);
-  std::vector<std::uint8_t> links(n, 0);
-  auto onOneSurface = [&](std::size_t a, std::size_t b) {
-    const Eigen::Vector3d p = pointAt(grid, a);
-    const Eigen::Vector3d q = pointAt(grid, b);
-    const double range = std::min(p.norm(), q.norm());
-    const double tolerance = step.tolerance(range);
-    return (p - q).squaredNorm() <= tolerance * tolerance;
+  // The object points numbered compactly (patch_of_pixel holds the numbers until the patches
+  // replace them), each with its tolerance: the work and memory follow the object points, not
+  // the frame.
+  out.patch_of_pixel.assign(n, -1);
+  std::vector<std::int32_t>& number = out.patch_of_pixel;
+  const std::vector<std::size_t>& pixel_of = points.pixels;
+  const std::size_t count = pixel_of.size();
+  std::vector<float> tolerance_of(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    number[pixel_of[k]] = static_cast<std::int32_t>(k);
+    tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
+  }
+  union_find.reset(count);
+  std::vector<std::uint8_t> links(count, 0);
+  // Neighbours on one surface: within the tolerance at the nearer one's range (the tolerance
+  // grows with the range).
+  auto onOneSurface = [&](std::size_t a, std::size_t b, std::int32_t na, std::int32_t nb) {
+    const float* p = grid.point(a);
+    const float* q = grid.point(b);
+    const float dx = p[0] - q[0];
+    const float dy = p[1] - q[1];
+    const float dz = p[2] - q[2];
+    const float tolerance =
+        std::min(tolerance_of[static_cast<std::size_t>(na)], tolerance_of[static_cast<std::size_t>(nb)]);
+    return dx * dx + dy * dy + dz * dz <= tolerance * tolerance;
   };
   // Two neighbours on one surface are in one patch when they share a plane (or both are on
   // none) within one square.
-  auto samePatch = [&](std::size_t a, int xa, int ya, std::size_t b, int xb, int yb) {
-    return plane_labels[a] == plane_labels[b] && xa / side == xb / side && ya / side == yb / side;
-  };
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x;
-      if (!candidate[i]) continue;
-      if (x + 1 < width && candidate[i + 1] && onOneSurface(i, i + 1)) {
-        links[i] |= kRight;
-        if (samePatch(i, x, y, i + 1, x + 1, y))
-          union_find.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(i + 1));
-      }
-      const std::size_t below = i + static_cast<std::size_t>(width);
-      if (y + 1 < height && candidate[below] && onOneSurface(i, below)) {
-        links[i] |= kDown;
-        if (samePatch(i, x, y, below, x, y + 1))
-          union_find.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(below));
-      }
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = pixel_of[k];
+    const int x = static_cast<int>(i % static_cast<std::size_t>(width));
+    const int y = static_cast<int>(i / static_cast<std::size_t>(width));
+    const auto self = static_cast<std::int32_t>(k);
+    if (x + 1 < width && number[i + 1] >= 0 && onOneSurface(i, i + 1, self, number[i + 1])) {
+      links[k] |= kRight;
+      if (plane_labels[i] == plane_labels[i + 1] && x / side == (x + 1) / side) union_find.unite(self, number[i + 1]);
+    }
+    const std::size_t below = i + static_cast<std::size_t>(width);
+    if (y + 1 < height && number[below] >= 0 && onOneSurface(i, below, self, number[below])) {
+      links[k] |= kDown;
+      if (plane_labels[i] == plane_labels[below] && y / side == (y + 1) / side) union_find.unite(self, number[below]);
     }
   }
   // Number the patches in raster order of their first pixel and sum their points.
-  out.patch_of_pixel.assign(n, -1);
   out.patches.clear();
-  std::vector<std::int32_t> index_of_root(n, -1);
+  std::vector<std::int32_t> patch_of(count, -1);
+  std::vector<std::int32_t> index_of_root(count, -1);
   std::vector<Eigen::Vector3d> sums;
   std::vector<Eigen::Matrix3d> squares;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!candidate[i]) continue;
-    const std::int32_t root = union_find.find(static_cast<std::int32_t>(i));
+  // A run of pixels of one patch (up to a square's side along a row) is summed in registers and
+  // added to the patch's sums once.
+  std::int32_t run = -1;
+  std::uint32_t run_pixels = 0;
+  Eigen::Vector3d run_sum = Eigen::Vector3d::Zero();
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+  const auto flush = [&] {
+    if (run < 0) return;
+    const auto r = static_cast<std::size_t>(run);
+    out.patches[r].pixels += run_pixels;
+    sums[r] += run_sum;
+    Eigen::Matrix3d& m = squares[r];
+    m(0, 0) += xx;
+    m(0, 1) += xy;
+    m(0, 2) += xz;
+    m(1, 1) += yy;
+    m(1, 2) += yz;
+    m(2, 2) += zz;
+    run_pixels = 0;
+    run_sum.setZero();
+    xx = xy = xz = yy = yz = zz = 0;
+  };
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = pixel_of[k];
+    const std::int32_t root = union_find.find(static_cast<std::int32_t>(k));
     std::int32_t& index = index_of_root[static_cast<std::size_t>(root)];
     if (index < 0) {
       index = static_cast<std::int32_t>(out.patches.size());
       out.patches.emplace_back();
+      out.patches.back().plane = plane_labels[i];
       sums.push_back(Eigen::Vector3d::Zero());
       squares.push_back(Eigen::Matrix3d::Zero());
     }
-    out.patch_of_pixel[i] = index;
-    const Eigen::Vector3d p = pointAt(grid, i);
-    out.patches[static_cast<std::size_t>(index)].pixels += 1;
-    out.patches[static_cast<std::size_t>(index)].plane = plane_labels[i];
-    sums[static_cast<std::size_t>(index)] += p;
-    squares[static_cast<std::size_t>(index)] += p * p.transpose();
+    patch_of[k] = index;
+    if (index != run) {
+      flush();
+      run = index;
+    }
+    const float* p = grid.point(i);
+    const double x = p[0];
+    const double y = p[1];
+    const double z = p[2];
+    run_pixels += 1;
+    run_sum += Eigen::Vector3d(x, y, z);
+    xx += x * x;
+    xy += x * y;
+    xz += x * z;
+    yy += y * y;
+    yz += y * z;
+    zz += z * z;
   }
+  flush();
+  for (Eigen::Matrix3d& m : squares)
+    m.triangularView<Eigen::StrictlyLower>() = m.transpose().triangularView<Eigen::StrictlyLower>();
+  for (std::size_t k = 0; k < count; ++k) number[pixel_of[k]] = patch_of[k];
   // The normal of a patch on no plane is its own; a plane's patches share the plane's (the
   // fit over all of them, steadier than a square's).
-  auto normalOf = [](const Eigen::Vector3d& sum, const Eigen::Matrix3d& square, double count) -> Eigen::Vector3d {
-    if (count < 3) return Eigen::Vector3d::Zero();
-    const Eigen::Vector3d centroid = sum / count;
-    const Eigen::Matrix3d covariance = square / count - centroid * centroid.transpose();
+  auto normalOf = [](const Eigen::Vector3d& sum, const Eigen::Matrix3d& square, double pixels) -> Eigen::Vector3d {
+    if (pixels < 3) return Eigen::Vector3d::Zero();
+    const Eigen::Vector3d centroid = sum / pixels;
+    const Eigen::Matrix3d covariance = square / pixels - centroid * centroid.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
     // A line of points (or a single point repeated) spans no plane.
     if (!(solver.eigenvalues()[1] > 1e-12)) return Eigen::Vector3d::Zero();
@@ -157,9 +208,10 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     if (pb < pa) std::swap(pa, pb);
     keys.push_back((static_cast<std::uint64_t>(pa) << 32) | static_cast<std::uint32_t>(pb));
   };
-  for (std::size_t i = 0; i < n; ++i) {
-    if (links[i] & kRight) addContact(i, i + 1);
-    if (links[i] & kDown) addContact(i, i + static_cast<std::size_t>(width));
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = pixel_of[k];
+    if (links[k] & kRight) addContact(i, i + 1);
+    if (links[k] & kDown) addContact(i, i + static_cast<std::size_t>(width));
   }
   std::sort(keys.begin(), keys.end());
   out.contacts.clear();

@@ -28,6 +28,18 @@ struct SurfaceStep {
 /// neighbours of a few rows (0 when there are none).
 double angularPitch(const PointGrid& grid);
 
+/// The object points: their pixels in raster order and their ranges [m].
+struct ObjectPoints {
+  std::vector<std::size_t> pixels;
+  std::vector<float> ranges;
+  void clear() {
+    pixels.clear();
+    ranges.clear();
+  }
+  /// Adds pixel `index` of `grid` (after those before it in raster order).
+  void add(const PointGrid& grid, std::size_t index);
+};
+
 /// A small piece of surface: its size, plane, centroid and normal (towards the sensor).
 struct SurfacePatch {
   std::uint32_t pixels = 0;
@@ -57,10 +69,11 @@ struct SurfacePatches {
   std::vector<PatchContact> contacts;  ///< sorted by (first, second)
 };
 
-/// Builds the patches of the pixels with `candidate` set; `plane_labels` is the segmentation's
-/// label image (0: no plane). `union_find` is a workspace.
+/// Builds the patches of `points`; `plane_labels` is the segmentation's label image (0: no
+/// plane). `union_find` is a workspace. Costs a pass over the object points and one to mark
+/// them in the frame's grid.
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const std::vector<std::uint8_t>& candidate, const SurfaceStep& step, int side,
-                         UnionFind& union_find, SurfacePatches& out);
+                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
+                         SurfacePatches& out);
 
 }  // namespace floodplane

@@ -337,7 +337,8 @@ TEST(SurfacePatches, PlanesAndSquaresWithTheirContacts) {
   // over 8 pixel pairs; then a step of 10 cm splits the right square from its neighbours.
   PinholeGrid flat(16, 8, [](int, int) { return 1.0; });
   std::vector<std::uint32_t> labels(16 * 8, 0);
-  std::vector<std::uint8_t> candidate(16 * 8, 1);
+  ObjectPoints candidate;
+  for (std::size_t i = 0; i < 16 * 8; ++i) candidate.add(flat.grid(), i);
   SurfaceStep step;
   step.noise.sigma_constant = 0.001;
   step.pitch = angularPitch(flat.grid());
