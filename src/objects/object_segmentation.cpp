@@ -136,8 +136,9 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   }
   std::vector<double> lowest(roots.size(), std::numeric_limits<double>::infinity());
   std::vector<std::uint32_t> support_of(roots.size(), 0);
-  for (const std::size_t i : points.pixels) {
-    const std::int32_t patch = patches.patch_of_pixel[i];
+  for (std::size_t k = 0; k < points.pixels.size(); ++k) {
+    const std::size_t i = points.pixels[k];
+    const std::int32_t patch = patches.patch_of_point[k];
     const std::uint32_t id = id_of_root[static_cast<std::size_t>(union_find.find(patch))];
     if (id == 0) continue;
     result.labels[i] = id;

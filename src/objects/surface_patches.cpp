@@ -46,62 +46,54 @@ double angularPitch(const PointGrid& grid) {
   return *middle;
 }
 
-namespace {
-
-// Bits of SurfacePatches' pixel links: joined to the right and to the lower neighbour.
-constexpr std::uint8_t kRight = 1;
-constexpr std::uint8_t kDown = 2;
-
-}  // namespace
-
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
                          const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
                          SurfacePatches& out) {
   const int width = grid.width;
   const int height = grid.height;
-  const std::size_t n = grid.size();
   side = std::max(side, 1);
-  // The object points numbered compactly (patch_of_pixel holds the numbers until the patches
-  // replace them), each with its tolerance: the work and memory follow the object points, not
-  // the frame.
-  out.patch_of_pixel.assign(n, -1);
-  std::vector<std::int32_t>& number = out.patch_of_pixel;
+  // The object points by their number k (raster order), each with its tolerance: the work and
+  // memory follow the object points, not the frame.
   const std::vector<std::size_t>& pixel_of = points.pixels;
   const std::size_t count = pixel_of.size();
   std::vector<float> tolerance_of(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    number[pixel_of[k]] = static_cast<std::int32_t>(k);
-    tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
-  }
+  for (std::size_t k = 0; k < count; ++k) tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
   union_find.reset(count);
-  std::vector<std::uint8_t> links(count, 0);
+  // The numbers of the right and lower neighbours each point is on one surface with (-1: none).
+  std::vector<std::int32_t> right_of(count, -1);
+  std::vector<std::int32_t> below_of(count, -1);
   // Neighbours on one surface: within the tolerance at the nearer one's range (the tolerance
   // grows with the range).
-  auto onOneSurface = [&](std::size_t a, std::size_t b, std::int32_t na, std::int32_t nb) {
-    const float* p = grid.point(a);
-    const float* q = grid.point(b);
+  auto onOneSurface = [&](std::size_t a, std::size_t b) {
+    const float* p = grid.point(pixel_of[a]);
+    const float* q = grid.point(pixel_of[b]);
     const float dx = p[0] - q[0];
     const float dy = p[1] - q[1];
     const float dz = p[2] - q[2];
-    const float tolerance =
-        std::min(tolerance_of[static_cast<std::size_t>(na)], tolerance_of[static_cast<std::size_t>(nb)]);
+    const float tolerance = std::min(tolerance_of[a], tolerance_of[b]);
     return dx * dx + dy * dy + dz * dz <= tolerance * tolerance;
   };
   // Two neighbours on one surface are in one patch when they share a plane (or both are on
-  // none) within one square.
+  // none) within one square. The lower neighbour is found by a second cursor a row ahead.
+  std::size_t cursor = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = pixel_of[k];
     const int x = static_cast<int>(i % static_cast<std::size_t>(width));
     const int y = static_cast<int>(i / static_cast<std::size_t>(width));
     const auto self = static_cast<std::int32_t>(k);
-    if (x + 1 < width && number[i + 1] >= 0 && onOneSurface(i, i + 1, self, number[i + 1])) {
-      links[k] |= kRight;
-      if (plane_labels[i] == plane_labels[i + 1] && x / side == (x + 1) / side) union_find.unite(self, number[i + 1]);
+    if (x + 1 < width && k + 1 < count && pixel_of[k + 1] == i + 1 && onOneSurface(k, k + 1)) {
+      right_of[k] = self + 1;
+      if (plane_labels[i] == plane_labels[i + 1] && x / side == (x + 1) / side) union_find.unite(self, self + 1);
     }
     const std::size_t below = i + static_cast<std::size_t>(width);
-    if (y + 1 < height && number[below] >= 0 && onOneSurface(i, below, self, number[below])) {
-      links[k] |= kDown;
-      if (plane_labels[i] == plane_labels[below] && y / side == (y + 1) / side) union_find.unite(self, number[below]);
+    if (y + 1 >= height) continue;
+    cursor = std::max(cursor, k);
+    while (cursor < count && pixel_of[cursor] < below) ++cursor;
+    if (cursor < count && pixel_of[cursor] == below && onOneSurface(k, cursor)) {
+      below_of[k] = static_cast<std::int32_t>(cursor);
+      if (plane_labels[i] == plane_labels[below] && y / side == (y + 1) / side) {
+        union_find.unite(self, static_cast<std::int32_t>(cursor));
+      }
     }
   }
   // Number the patches in raster order of their first pixel and sum their points.
@@ -164,7 +156,7 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   flush();
   for (Eigen::Matrix3d& m : squares)
     m.triangularView<Eigen::StrictlyLower>() = m.transpose().triangularView<Eigen::StrictlyLower>();
-  for (std::size_t k = 0; k < count; ++k) number[pixel_of[k]] = patch_of[k];
+  out.patch_of_point = std::move(patch_of);
   // The normal of a patch on no plane is its own; a plane's patches share the plane's (the
   // fit over all of them, steadier than a square's).
   auto normalOf = [](const Eigen::Vector3d& sum, const Eigen::Matrix3d& square, double pixels) -> Eigen::Vector3d {
@@ -199,31 +191,40 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     patch.centroid = sums[k] / static_cast<double>(patch.pixels);
     patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels);
   }
-  // The contacts: pixel pairs on one surface across two patches, counted per pair of patches.
-  std::vector<std::uint64_t> keys;
+  // The contacts: pixel pairs on one surface across two patches, counted per pair of patches
+  // (a run of equal pairs, along a row where two squares meet, counted at once).
+  struct Key {
+    std::uint64_t key;
+    std::uint32_t pairs;
+  };
+  std::vector<Key> keys;
   auto addContact = [&](std::size_t a, std::size_t b) {
-    std::int32_t pa = out.patch_of_pixel[a];
-    std::int32_t pb = out.patch_of_pixel[b];
+    std::int32_t pa = out.patch_of_point[a];
+    std::int32_t pb = out.patch_of_point[b];
     if (pa == pb) return;
     if (pb < pa) std::swap(pa, pb);
-    keys.push_back((static_cast<std::uint64_t>(pa) << 32) | static_cast<std::uint32_t>(pb));
+    const std::uint64_t key = (static_cast<std::uint64_t>(pa) << 32) | static_cast<std::uint32_t>(pb);
+    if (!keys.empty() && keys.back().key == key) {
+      ++keys.back().pairs;
+    } else {
+      keys.push_back({key, 1});
+    }
   };
   for (std::size_t k = 0; k < count; ++k) {
-    const std::size_t i = pixel_of[k];
-    if (links[k] & kRight) addContact(i, i + 1);
-    if (links[k] & kDown) addContact(i, i + static_cast<std::size_t>(width));
+    if (below_of[k] >= 0) addContact(k, static_cast<std::size_t>(below_of[k]));
   }
-  std::sort(keys.begin(), keys.end());
+  for (std::size_t k = 0; k < count; ++k) {
+    if (right_of[k] >= 0) addContact(k, static_cast<std::size_t>(right_of[k]));
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) { return x.key < y.key; });
   out.contacts.clear();
   for (std::size_t k = 0; k < keys.size();) {
-    std::size_t end = k;
-    while (end < keys.size() && keys[end] == keys[k]) ++end;
+    const std::uint64_t key = keys[k].key;
     PatchContact contact;
-    contact.first = static_cast<std::int32_t>(keys[k] >> 32);
-    contact.second = static_cast<std::int32_t>(keys[k] & 0xffffffffu);
-    contact.pairs = static_cast<std::uint32_t>(end - k);
+    contact.first = static_cast<std::int32_t>(key >> 32);
+    contact.second = static_cast<std::int32_t>(key & 0xffffffffu);
+    for (; k < keys.size() && keys[k].key == key; ++k) contact.pairs += keys[k].pairs;
     out.contacts.push_back(contact);
-    k = end;
   }
 }
 

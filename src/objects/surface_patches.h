@@ -64,7 +64,7 @@ struct PatchContact {
 /// side of a large plane (whose centroid can lie anywhere: a strip around a box). Their contacts
 /// are the neighbouring pixel pairs (4-neighbours) on one surface across two patches.
 struct SurfacePatches {
-  std::vector<std::int32_t> patch_of_pixel;  ///< -1: not an object point
+  std::vector<std::int32_t> patch_of_point;  ///< the patch of each object point (ObjectPoints' order)
   std::vector<SurfacePatch> patches;
   std::vector<PatchContact> contacts;  ///< sorted by (first, second)
 };
