@@ -74,24 +74,52 @@ void joinConvexPatches(const SurfacePatches& patches, double concavity_tolerance
     std::int32_t patch_b;
   };
   std::vector<Vote> votes;
+  // Two patches with normals that touch, directly or across a patch with none (a strip along
+  // a crease), weighing `pairs` pixel pairs.
+  const auto judge = [&](std::int32_t first, std::int32_t second, std::uint32_t pairs) {
+    const std::int64_t sa = surface(first);
+    const std::int64_t sb = surface(second);
+    if (sa == sb) return;
+    const SurfacePatch& a = patches.patches[static_cast<std::size_t>(first)];
+    const SurfacePatch& b = patches.patches[static_cast<std::size_t>(second)];
+    const bool convex = convexContact(a, b, concavity_tolerance_rad);
+    if (a.plane == 0 && b.plane == 0) {
+      if (convex) objects.unite(first, second);
+      return;
+    }
+    const std::int64_t weight = convex ? pairs : -static_cast<std::int64_t>(pairs);
+    votes.push_back({std::min(sa, sb), std::max(sa, sb), weight, first, second});
+  };
+  // The neighbours with normals of each patch without one.
+  struct Across {
+    std::int32_t middle;
+    std::int32_t other;
+    std::uint32_t pairs;
+  };
+  std::vector<Across> across;
   for (const PatchContact& contact : patches.contacts) {
     const SurfacePatch& a = patches.patches[static_cast<std::size_t>(contact.first)];
     const SurfacePatch& b = patches.patches[static_cast<std::size_t>(contact.second)];
     if (a.normal.isZero() || b.normal.isZero()) {
       if (a.normal.isZero()) offer(contact.first, contact.second, contact.pairs);
       if (b.normal.isZero()) offer(contact.second, contact.first, contact.pairs);
+      if (a.normal.isZero() && !b.normal.isZero()) across.push_back({contact.first, contact.second, contact.pairs});
+      if (b.normal.isZero() && !a.normal.isZero()) across.push_back({contact.second, contact.first, contact.pairs});
       continue;
     }
-    const std::int64_t sa = surface(contact.first);
-    const std::int64_t sb = surface(contact.second);
-    if (sa == sb) continue;
-    const bool convex = convexContact(a, b, concavity_tolerance_rad);
-    if (a.plane == 0 && b.plane == 0) {
-      if (convex) objects.unite(contact.first, contact.second);
-      continue;
+    judge(contact.first, contact.second, contact.pairs);
+  }
+  std::sort(across.begin(), across.end(), [](const Across& x, const Across& y) { return x.middle < y.middle; });
+  for (std::size_t k = 0; k < across.size();) {
+    std::size_t end = k;
+    while (end < across.size() && across[end].middle == across[k].middle) ++end;
+    for (std::size_t i = k; i < end; ++i) {
+      for (std::size_t j = i + 1; j < end; ++j) {
+        judge(std::min(across[i].other, across[j].other), std::max(across[i].other, across[j].other),
+              std::min(across[i].pairs, across[j].pairs));
+      }
     }
-    const std::int64_t pairs = convex ? contact.pairs : -static_cast<std::int64_t>(contact.pairs);
-    votes.push_back({std::min(sa, sb), std::max(sa, sb), pairs, contact.first, contact.second});
+    k = end;
   }
   std::sort(votes.begin(), votes.end(),
             [](const Vote& x, const Vote& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });

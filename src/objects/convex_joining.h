@@ -22,7 +22,10 @@ bool convexContact(const SurfacePatch& a, const SurfacePatch& b, double concavit
 /// no plane whose contact passes convexContact; two planes, or a plane and a patch on none,
 /// when more of the pixel pairs where they touch are in convex contacts than in concave ones
 /// (the test is local, patch by patch, along their border). A patch with no normal (too few
-/// points to span a plane) joins the patch it shares the most pixel pairs with.
+/// points to span a plane, or a strip too narrow) joins the patch it shares the most pixel
+/// pairs with; the patches with normals around such a patch (a strip along a crease the
+/// planes left out) are judged as touching across it (one patch wide: judging across longer
+/// chains pits far patches against each other).
 void joinConvexPatches(const SurfacePatches& patches, double concavity_tolerance_rad, UnionFind& objects);
 
 /// Joins each group of `objects` smaller than `min_pixels` (a fringe the convexity test cut

@@ -159,13 +159,20 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   out.patch_of_point = std::move(patch_of);
   // The normal of a patch on no plane is its own; a plane's patches share the plane's (the
   // fit over all of them, steadier than a square's).
-  auto normalOf = [](const Eigen::Vector3d& sum, const Eigen::Matrix3d& square, double pixels) -> Eigen::Vector3d {
+  // A patch on no plane must be at least a pixel footprint wide across (the spread of its
+  // points' narrower direction) for its own normal to mean anything: a strip one or two pixels
+  // wide along a crease (between a box's top and its front) has none, and joins the patch it
+  // shares the most pixel pairs with instead.
+  auto normalOf = [&step](const Eigen::Vector3d& sum, const Eigen::Matrix3d& square, double pixels,
+                          bool own) -> Eigen::Vector3d {
     if (pixels < 3) return Eigen::Vector3d::Zero();
     const Eigen::Vector3d centroid = sum / pixels;
     const Eigen::Matrix3d covariance = square / pixels - centroid * centroid.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    const double footprint = step.pitch * centroid.norm();
+    const double least = own ? footprint * footprint : 1e-12;
     // A line of points (or a single point repeated) spans no plane.
-    if (!(solver.eigenvalues()[1] > 1e-12)) return Eigen::Vector3d::Zero();
+    if (!(solver.eigenvalues()[1] > least)) return Eigen::Vector3d::Zero();
     Eigen::Vector3d normal = solver.eigenvectors().col(0);
     return normal.dot(centroid) > 0.0 ? Eigen::Vector3d(-normal) : normal;
   };
@@ -184,12 +191,12 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   std::vector<Eigen::Vector3d> plane_normals(largest_plane + 1, Eigen::Vector3d::Zero());
   for (std::uint32_t plane = 1; plane <= largest_plane; ++plane) {
     if (plane_counts[plane] > 0)
-      plane_normals[plane] = normalOf(plane_sums[plane], plane_squares[plane], plane_counts[plane]);
+      plane_normals[plane] = normalOf(plane_sums[plane], plane_squares[plane], plane_counts[plane], false);
   }
   for (std::size_t k = 0; k < out.patches.size(); ++k) {
     SurfacePatch& patch = out.patches[k];
     patch.centroid = sums[k] / static_cast<double>(patch.pixels);
-    patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels);
+    patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels, true);
   }
   // The contacts: pixel pairs on one surface across two patches, counted per pair of patches
   // (a run of equal pairs, along a row where two squares meet, counted at once).

@@ -193,6 +193,31 @@ TEST(ObjectSegmentation, ConcaveValleySplitsIntoTwo) {
   EXPECT_NE(*left.begin(), *right.begin());
 }
 
+// The ridge and the valley with two columns beside their crease on no plane (as the segmenter
+// leaves a crease), within one square: a strip too narrow for a normal of its own, across
+// which the faces are judged.
+Scene creasedRidge(bool convex) {
+  Scene scene = ridge(convex);
+  const auto plane = scene.plane;
+  scene.plane = [plane](int u, int v) {
+    return (u == 38 || u == 39) && inBox(u, v, 20, 22, 60, 38) ? 0u : plane(u, v);
+  };
+  return scene;
+}
+
+TEST(ObjectSegmentation, FacesJoinAcrossAStripOnNoPlaneWhenConvex) {
+  const Made convex = make(creasedRidge(true));
+  const ObjectSegmentation one = segmentObjects(convex.grid.grid(), convex.planes);
+  ASSERT_EQ(one.objects.size(), 1u);
+  EXPECT_EQ(idsIn(one, 20, 22, 60, 38), std::set<std::uint32_t>{1});
+  const Made concave = make(creasedRidge(false));
+  const ObjectSegmentation two = segmentObjects(concave.grid.grid(), concave.planes);
+  ASSERT_EQ(two.objects.size(), 2u);
+  EXPECT_EQ(idsIn(two, 20, 22, 38, 38).size(), 1u);
+  EXPECT_EQ(idsIn(two, 40, 22, 60, 38).size(), 1u);
+  EXPECT_NE(*idsIn(two, 20, 22, 38, 38).begin(), *idsIn(two, 40, 22, 60, 38).begin());
+}
+
 TEST(ObjectSegmentation, CurvedBodyOnNoPlaneIsOneObject) {
   // A lying cylinder of 20 cm radius whose axis runs along v, on no plane: the small local
   // patches over it all meet convexly.
