@@ -168,7 +168,8 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     if (pixels < 3) return Eigen::Vector3d::Zero();
     const Eigen::Vector3d centroid = sum / pixels;
     const Eigen::Matrix3d covariance = square / pixels - centroid * centroid.transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(covariance);
     const double footprint = step.pitch * centroid.norm();
     const double least = own ? footprint * footprint : 1e-12;
     // A line of points (or a single point repeated) spans no plane.
