@@ -28,11 +28,12 @@ struct ObjectOptions {
   double support_piece_angle_rad = 0.1;
   /// ... and their centroids within this distance of its plane [m].
   double support_piece_distance_m = 0.02;
-  /// A point belongs to an object only when it lies at least this much above every support
-  /// (on the side the camera sees) [m], in addition to three depth noise deviations at its
-  /// range (from the frame's noise model): the support's own points, wherever the plane left
-  /// them out, are never in objects.
-  double support_clearance_m = 0.005;
+  /// A point belongs to an object only when it lies above every support (on the side the
+  /// camera sees) by more than three depth noise deviations and the depth step at its range
+  /// (the frame's noise model), plus this margin [m]: the support's own points, wherever the
+  /// plane left them out, are never in objects. 0: the noise alone (on the mOSD frames no
+  /// table pixel is then in an object; a margin only cuts the objects' feet).
+  double support_clearance_m = 0.0;
   /// Neighbouring pixels are on one surface when their points are at most this many pixel
   /// footprints apart (the footprint: the angle between neighbouring viewing rays times the
   /// range), in addition to the difference of two noisy depths (3 sqrt(2) sigma(r) and the
