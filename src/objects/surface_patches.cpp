@@ -28,7 +28,8 @@ double angularPitch(const PointGrid& grid) {
   for (int k = 0; k < rows; ++k) {
     const int y = (k + 1) * grid.height / (rows + 1);
     for (int x = 0; x + 1 < grid.width; x += 2) {
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + x;
+      const std::size_t i =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(x);
       if (!grid.isFinite(i) || !grid.isFinite(i + 1)) continue;
       const float* p = grid.point(i);
       const float* q = grid.point(i + 1);
