@@ -37,23 +37,21 @@ bool convexContact(const SurfacePatch& a, const SurfacePatch& b, double concavit
 void joinConvexPatches(const SurfacePatches& patches, double concavity_tolerance_rad, UnionFind& objects) {
   const std::size_t count = patches.patches.size();
   objects.reset(count);
-  // The patches of one plane are one surface.
-  std::vector<std::int32_t> first_of_plane;
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::uint32_t plane = patches.patches[k].plane;
-    if (plane == 0) continue;
-    if (plane >= first_of_plane.size()) first_of_plane.resize(plane + 1, -1);
-    if (first_of_plane[plane] < 0) {
-      first_of_plane[plane] = static_cast<std::int32_t>(k);
-    } else {
-      objects.unite(first_of_plane[plane], static_cast<std::int32_t>(k));
+  // The touching patches of one plane are one surface: a plane seen in two parts (a box's top
+  // on either side of what stands before it) is two, as the image shows them.
+  for (const PatchContact& contact : patches.contacts) {
+    const std::uint32_t plane = patches.patches[static_cast<std::size_t>(contact.first)].plane;
+    if (plane != 0 && plane == patches.patches[static_cast<std::size_t>(contact.second)].plane) {
+      objects.unite(contact.first, contact.second);
     }
   }
-  // The surface a patch is part of: its plane, or itself on none.
-  const auto surface = [&](std::int32_t patch) -> std::int64_t {
-    const std::uint32_t plane = patches.patches[static_cast<std::size_t>(patch)].plane;
-    return plane != 0 ? -static_cast<std::int64_t>(plane) : static_cast<std::int64_t>(patch);
-  };
+  // The surface a patch is part of: its plane's part (as a negative number), or itself on none.
+  std::vector<std::int64_t> surface_of(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto patch = static_cast<std::int32_t>(k);
+    surface_of[k] = patches.patches[k].plane != 0 ? -1 - static_cast<std::int64_t>(objects.find(patch)) : patch;
+  }
+  const auto surface = [&](std::int32_t patch) { return surface_of[static_cast<std::size_t>(patch)]; };
   // The contact with the most pixel pairs of each patch that spans no plane.
   std::vector<std::int32_t> best(count, -1);
   std::vector<std::uint32_t> best_pairs(count, 0);

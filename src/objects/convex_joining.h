@@ -18,7 +18,8 @@ namespace floodplane {
 /// within that angle, not two parallel surfaces at a step. False when either has no normal.
 bool convexContact(const SurfacePatch& a, const SurfacePatch& b, double concavity_tolerance_rad);
 
-/// Joins, in `objects` (reset to the patches' count): the patches of one plane; two patches on
+/// Joins, in `objects` (reset to the patches' count): the touching patches of one plane; two
+/// patches on
 /// no plane whose contact passes convexContact; two planes, or a plane and a patch on none,
 /// when more of the pixel pairs where they touch are in convex contacts than in concave ones
 /// (the test is local, patch by patch, along their border). A patch with no normal (too few

@@ -137,6 +137,29 @@ TEST(ObjectSegmentation, PointsOnNoPlaneNearTheTableAreNoObject) {
   EXPECT_EQ(objects.supports, std::vector<std::uint32_t>{1});
 }
 
+TEST(ObjectSegmentation, APlaneSeenInTwoPartsIsTwoObjects) {
+  // A box's top (plane 2) cut in two by a post 30 cm nearer before it (plane 3): as the image
+  // shows them, three objects, though both parts of the top are one plane.
+  const Made made = make({[](int u, int v) {
+                            if (inBox(u, v, 38, 10, 42, 50)) return kTable - 0.5;
+                            return inBox(u, v, 30, 20, 50, 40) ? kTable - 0.2 : kTable;
+                          },
+                          [](int u, int v) {
+                            if (inBox(u, v, 38, 10, 42, 50)) return 3u;
+                            return inBox(u, v, 30, 20, 50, 40) ? 2u : 1u;
+                          }});
+  const ObjectSegmentation objects = segmentObjects(made.grid.grid(), made.planes);
+  ASSERT_EQ(objects.objects.size(), 3u);
+  const std::set<std::uint32_t> left = idsIn(objects, 30, 20, 38, 40);
+  const std::set<std::uint32_t> right = idsIn(objects, 42, 20, 50, 40);
+  const std::set<std::uint32_t> post = idsIn(objects, 38, 10, 42, 50);
+  ASSERT_EQ(left.size(), 1u);
+  ASSERT_EQ(right.size(), 1u);
+  ASSERT_EQ(post.size(), 1u);
+  EXPECT_EQ((std::set<std::uint32_t>{*left.begin(), *right.begin(), *post.begin()}),
+            (std::set<std::uint32_t>{1, 2, 3}));
+}
+
 TEST(ObjectSegmentation, DepthStepSplitsTwoTouchingBoxes) {
   // Two boxes side by side, touching in the image, tops 30 and 10 cm high: a 20 cm step.
   const Made made = make({[](int u, int v) {
