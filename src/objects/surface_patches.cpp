@@ -76,23 +76,38 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   };
   // Two neighbours on one surface are in one patch when they share a plane (or both are on
   // none) within one square. The lower neighbour is found by a second cursor a row ahead.
+  // Whether a column (row) and the next are in one square, looked up: no division per point.
+  const auto sameSquareAsNext = [side](int length) {
+    std::vector<std::uint8_t> same(static_cast<std::size_t>(std::max(length, 0)));
+    for (int c = 0; c < length; ++c) same[static_cast<std::size_t>(c)] = (c + 1) % side != 0;
+    return same;
+  };
+  const std::vector<std::uint8_t> column_joins = sameSquareAsNext(width);
+  const std::vector<std::uint8_t> row_joins = sameSquareAsNext(height);
   std::size_t cursor = 0;
+  std::size_t row_start = 0;
+  int row = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = pixel_of[k];
-    const int x = static_cast<int>(i % static_cast<std::size_t>(width));
-    const int y = static_cast<int>(i / static_cast<std::size_t>(width));
+    while (i >= row_start + static_cast<std::size_t>(width)) {
+      row_start += static_cast<std::size_t>(width);
+      ++row;
+    }
+    const int x = static_cast<int>(i - row_start);
     const auto self = static_cast<std::int32_t>(k);
     if (x + 1 < width && k + 1 < count && pixel_of[k + 1] == i + 1 && onOneSurface(k, k + 1)) {
       right_of[k] = self + 1;
-      if (plane_labels[i] == plane_labels[i + 1] && x / side == (x + 1) / side) union_find.unite(self, self + 1);
+      if (plane_labels[i] == plane_labels[i + 1] && column_joins[static_cast<std::size_t>(x)]) {
+        union_find.unite(self, self + 1);
+      }
     }
     const std::size_t below = i + static_cast<std::size_t>(width);
-    if (y + 1 >= height) continue;
+    if (row + 1 >= height) continue;
     cursor = std::max(cursor, k);
     while (cursor < count && pixel_of[cursor] < below) ++cursor;
     if (cursor < count && pixel_of[cursor] == below && onOneSurface(k, cursor)) {
       below_of[k] = static_cast<std::int32_t>(cursor);
-      if (plane_labels[i] == plane_labels[below] && y / side == (y + 1) / side) {
+      if (plane_labels[i] == plane_labels[below] && row_joins[static_cast<std::size_t>(row)]) {
         union_find.unite(self, static_cast<std::int32_t>(cursor));
       }
     }
@@ -201,40 +216,60 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels, true);
   }
   // The contacts: pixel pairs on one surface across two patches, counted per pair of patches
-  // (a run of equal pairs, along a row where two squares meet, counted at once).
-  struct Key {
-    std::uint64_t key;
-    std::uint32_t pairs;
-  };
-  std::vector<Key> keys;
-  auto addContact = [&](std::size_t a, std::size_t b) {
+  // in an open-addressing table (a pair of squares meets along up to a side's pixels, so the
+  // pairs are many and the contacts few), then sorted.
+  std::size_t slots = 64;
+  while (slots < 8 * out.patches.size()) slots *= 2;
+  constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::uint64_t> table_keys(slots, kEmpty);
+  std::vector<std::uint32_t> table_pairs(slots, 0);
+  std::size_t used = 0;
+  const auto addContact = [&](std::size_t a, std::size_t b) {
     std::int32_t pa = out.patch_of_point[a];
     std::int32_t pb = out.patch_of_point[b];
     if (pa == pb) return;
     if (pb < pa) std::swap(pa, pb);
     const std::uint64_t key = (static_cast<std::uint64_t>(pa) << 32) | static_cast<std::uint32_t>(pb);
-    if (!keys.empty() && keys.back().key == key) {
-      ++keys.back().pairs;
-    } else {
-      keys.push_back({key, 1});
+    std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & (slots - 1);
+    while (table_keys[slot] != key && table_keys[slot] != kEmpty) slot = (slot + 1) & (slots - 1);
+    if (table_keys[slot] == kEmpty) {
+      table_keys[slot] = key;
+      ++used;
     }
+    ++table_pairs[slot];
   };
   for (std::size_t k = 0; k < count; ++k) {
     if (below_of[k] >= 0) addContact(k, static_cast<std::size_t>(below_of[k]));
-  }
-  for (std::size_t k = 0; k < count; ++k) {
     if (right_of[k] >= 0) addContact(k, static_cast<std::size_t>(right_of[k]));
+    // Keep the table at most half full (a frame whose patches touch more than usual).
+    if (2 * used > slots) {
+      std::vector<std::uint64_t> old_keys(2 * slots, kEmpty);
+      std::vector<std::uint32_t> old_pairs(2 * slots, 0);
+      old_keys.swap(table_keys);
+      old_pairs.swap(table_pairs);
+      slots *= 2;
+      for (std::size_t j = 0; j < old_keys.size(); ++j) {
+        if (old_keys[j] == kEmpty) continue;
+        std::size_t slot = static_cast<std::size_t>((old_keys[j] * 0x9E3779B97F4A7C15ull) >> 40) & (slots - 1);
+        while (table_keys[slot] != kEmpty) slot = (slot + 1) & (slots - 1);
+        table_keys[slot] = old_keys[j];
+        table_pairs[slot] = old_pairs[j];
+      }
+    }
   }
-  std::sort(keys.begin(), keys.end(), [](const Key& x, const Key& y) { return x.key < y.key; });
   out.contacts.clear();
-  for (std::size_t k = 0; k < keys.size();) {
-    const std::uint64_t key = keys[k].key;
+  out.contacts.reserve(used);
+  for (std::size_t j = 0; j < slots; ++j) {
+    if (table_keys[j] == kEmpty) continue;
     PatchContact contact;
-    contact.first = static_cast<std::int32_t>(key >> 32);
-    contact.second = static_cast<std::int32_t>(key & 0xffffffffu);
-    for (; k < keys.size() && keys[k].key == key; ++k) contact.pairs += keys[k].pairs;
+    contact.first = static_cast<std::int32_t>(table_keys[j] >> 32);
+    contact.second = static_cast<std::int32_t>(table_keys[j] & 0xffffffffu);
+    contact.pairs = table_pairs[j];
     out.contacts.push_back(contact);
   }
+  std::sort(out.contacts.begin(), out.contacts.end(), [](const PatchContact& x, const PatchContact& z) {
+    return x.first != z.first ? x.first < z.first : x.second < z.second;
+  });
 }
 
 }  // namespace floodplane
