@@ -134,12 +134,15 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
     object.min.setConstant(std::numeric_limits<double>::infinity());
     object.max.setConstant(-std::numeric_limits<double>::infinity());
   }
+  std::vector<std::uint32_t> id_of_patch(patch_count);
+  for (std::size_t k = 0; k < patch_count; ++k) {
+    id_of_patch[k] = id_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))];
+  }
   std::vector<double> lowest(roots.size(), std::numeric_limits<double>::infinity());
   std::vector<std::uint32_t> support_of(roots.size(), 0);
   for (std::size_t k = 0; k < points.pixels.size(); ++k) {
     const std::size_t i = points.pixels[k];
-    const std::int32_t patch = patches.patch_of_point[k];
-    const std::uint32_t id = id_of_root[static_cast<std::size_t>(union_find.find(patch))];
+    const std::uint32_t id = id_of_patch[static_cast<std::size_t>(patches.patch_of_point[k])];
     if (id == 0) continue;
     result.labels[i] = id;
     SegmentedObject& object = result.objects[id - 1];
