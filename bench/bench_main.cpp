@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   floodplane::bench::registerSoak();
   floodplane::bench::registerSmoothing();
   floodplane::bench::registerNoiseEstimation();
+  floodplane::bench::registerObjects();
   floodplane::bench::registerTracking();
   floodplane::bench::registerHeadStart();
   floodplane::bench::registerMemoryFloor();

@@ -19,6 +19,8 @@ void registerSoak();
 void registerSmoothing();
 /// The noise estimation alone: a fixed cost per call, whatever the frame's size.
 void registerNoiseEstimation();
+/// Planes then objects (segmentObjects) on the real and mOSD frames, each timed (issue 59).
+void registerObjects();
 /// PlaneTracker::update and relabel on the three consecutive real frames (issue 28).
 void registerTracking();
 /// Cold starts against head starts, interleaved, on a rendered walk (issue 28).

@@ -10,7 +10,7 @@
 #   <- coarse/ (the coarse planes, s > 1) and regions/ (the planes a user gets), neither
 #      including the other
 #   <- segmenter/ (Segmenter::segment calling them in order; floodplane/segmenter.h)
-#   <- tracking/, semantics/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
+#   <- tracking/, semantics/, objects/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
 # params/ sits beside util/ (it needs the API's params.h alone). A public header includes
 # nothing of src/ or toolkit/. toolkit/ (what the programs, tests and benchmarks share) sits on
 # top: it includes the API, io/ and params/ and its own folders, never the pipeline's internals.
@@ -33,6 +33,7 @@ declare -A allowed=(
   [segmenter]="^(util/|models/|frame/|seeds/|flood/|coarse/|regions/|segmenter/|${types}|floodplane/segmenter\.h)"
   [tracking]="^(util/|models/|tracking/|floodplane/)"
   [semantics]="^(util/|models/|semantics/|floodplane/)"
+  [objects]="^(util/|models/|objects/|floodplane/)"
   [io]="^(util/|models/|params/|io/|floodplane/)"
   [pcl_interface]="^(floodplane/)"
 )

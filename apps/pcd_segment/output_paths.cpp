@@ -26,12 +26,15 @@ OutputPaths outputPaths(const std::string& input_path, const std::string& output
   if (single_file) {
     // "out/scene.pcd" -> "out/scene.png", "out/scene.json": the name the user chose.
     const std::string stem = output.substr(0, output.size() - 4);
-    if (namesLabelImage(output)) return {"", output, stem + ".json", stem + ".overlay.png", stem + ".snapshot.png"};
-    return {output, stem + ".png", stem + ".json", stem + ".overlay.png", stem + ".snapshot.png"};
+    if (namesLabelImage(output)) {
+      return {"", output, stem + ".json", stem + ".overlay.png", stem + ".snapshot.png", stem + ".objects.pcd"};
+    }
+    return {
+        output, stem + ".png", stem + ".json", stem + ".overlay.png", stem + ".snapshot.png", stem + ".objects.pcd"};
   }
   const std::string base = (fs::path(output) / outputName(input_path)).string();
-  return {base + ".labels.pcd", base + ".labels.png", base + ".planes.json", base + ".overlay.png",
-          base + ".snapshot.png"};
+  return {base + ".labels.pcd",  base + ".labels.png",   base + ".planes.json",
+          base + ".overlay.png", base + ".snapshot.png", base + ".objects.pcd"};
 }
 
 std::string tracksPath(const std::string& output, bool single_file) {

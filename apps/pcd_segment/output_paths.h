@@ -18,6 +18,7 @@ struct OutputPaths {
   std::string json;
   std::string overlay;   ///< --overlay: the labels over the input's colours
   std::string snapshot;  ///< the 3-D image of --snapshot given without a file name
+  std::string objects;   ///< --objects: the object labels (x y z label, 0 = no object)
 };
 
 /// Whether the file `output` names is the label image (it ends in .png, in any case) rather
@@ -27,9 +28,9 @@ bool namesLabelImage(const std::string& output);
 /// The outputs for `input_path`. With `single_file` (one input and -o naming a file) that file
 /// is `output` itself, the labelled cloud (.pcd) or the label image alone (.png: no cloud), and
 /// the other outputs sit next to it with the same stem (<stem>.png, <stem>.json,
-/// <stem>.overlay.png, <stem>.snapshot.png); otherwise `output` is a directory receiving
-/// <name>.labels.pcd, <name>.labels.png, <name>.planes.json, <name>.overlay.png,
-/// <name>.snapshot.png.
+/// <stem>.overlay.png, <stem>.snapshot.png, <stem>.objects.pcd); otherwise `output` is a
+/// directory receiving <name>.labels.pcd, <name>.labels.png, <name>.planes.json,
+/// <name>.overlay.png, <name>.snapshot.png, <name>.objects.pcd.
 OutputPaths outputPaths(const std::string& input_path, const std::string& output, bool single_file);
 
 /// Where --track --json writes its summary of the tracks: OUT/tracks.json, or <stem>.tracks.json

@@ -77,6 +77,7 @@ struct Options {
   bool png = false;
   bool overlay = false;
   bool json = false;
+  bool objects = false;                         ///< --objects: the objects on the planes too
   std::vector<std::string> up;                  ///< --up X,Y,Z or --up viewpoint, or empty
   bool up_from_viewpoint = false;               ///< --up viewpoint: each input's own
   std::vector<double> gravity;                  ///< --gravity X,Y,Z, or empty
@@ -118,6 +119,11 @@ void addOutputFlags(CLI::App& app, Options& options) {
                "blended half over its pixels, white where there is no point. An input without colour (no rgb "
                "field) gets a note instead; depth images have none");
   app.add_flag("--json", options.json, "Also write <name>.planes.json (planes, parameters, time)");
+  app.add_flag("--objects", options.objects,
+               "Also find the objects standing on the planes (floodplane::segmentObjects) and write "
+               "<name>.objects.pcd (x y z label: object ids 1..K, largest first, 0 no object; <stem>.objects.pcd "
+               "beside a single output file); with --json, each object's size, centroid, bounding box and "
+               "supporting plane in <name>.planes.json's \"objects\"");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
   app.add_flag("--track", options.track,
                "The inputs are one sequence of frames, in the order given (a directory's files sorted by name): "
@@ -274,9 +280,11 @@ struct Segmented {
   floodplane::NoiseModel noise;
   bool head_start = false;  // continued from the previous frame (--track)
   double segmentation_ms = 0.0;
+  std::optional<floodplane::ObjectSegmentation> objects;  // --objects
+  double objects_ms = 0.0;                                // segmentObjects alone
 };
 
-Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
+Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points, bool objects) {
   Segmented out;
   segmentation.setInputCloud(points);
   const auto start = std::chrono::steady_clock::now();
@@ -289,6 +297,15 @@ Segmented segment(Segmentation& segmentation, const Cloud::ConstPtr& points) {
   if (!out.labels || out.labels->size() != points->size()) {
     // The loader only passes organized clouds, so this is a library failure, not bad data.
     throw std::runtime_error("the segmentation returned no labels");
+  }
+  if (objects) {
+    pcl::PointCloud<pcl::Label> object_labels;
+    std::vector<pcl::PointIndices> object_indices;
+    const auto objects_start = std::chrono::steady_clock::now();
+    segmentation.segmentObjects(object_labels, object_indices);
+    const std::chrono::duration<double, std::milli> objects_elapsed = std::chrono::steady_clock::now() - objects_start;
+    out.objects_ms = objects_elapsed.count();
+    out.objects = segmentation.getLastObjects();
   }
   return out;
 }
@@ -307,6 +324,17 @@ std::string reportText(const std::string& input, const Cloud& points, const floo
   report.noise = segmented.noise;
   report.head_start = segmented.head_start;
   report.segmentation_ms = segmented.segmentation_ms;
+  if (segmented.objects) {
+    // In the cloud's frame, as the planes' figures: the core measured from the sensor origin.
+    const Eigen::Vector3d origin = points.sensor_origin_.head<3>().cast<double>();
+    report.objects = segmented.objects->objects;
+    for (floodplane::SegmentedObject& object : *report.objects) {
+      object.centroid += origin;
+      object.min += origin;
+      object.max += origin;
+    }
+    report.objects_ms = segmented.objects_ms;
+  }
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);
   for (std::size_t k = 0; k < track_ids.size() && k < report.planes.size(); ++k) report.planes[k].track = track_ids[k];
@@ -344,7 +372,7 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
   if (motions) {
     if (const std::optional<Eigen::Matrix4d> motion = motions->motionTo(index)) segmentation.setCameraMotion(*motion);
   }
-  const Segmented segmented = segment(segmentation, points);
+  const Segmented segmented = segment(segmentation, points, options.objects);
   if (motions && segmentation.getTracker().frameCount() > frames_taken) motions->taken(index);
   std::vector<std::uint32_t> track_labels;
   if (segmentation.getTracking()) {
@@ -365,6 +393,11 @@ FileResult segmentFile(const std::string& input, std::size_t index, const pcd_se
   } else {
     outputs.add(paths.pcd, pcd_segment::labelPcdBytes(floodplane::io::labelledCloud<pcl::PointXYZL>(*points, labels),
                                                       options.ascii));
+  }
+  if (segmented.objects) {
+    outputs.add(paths.objects,
+                pcd_segment::labelPcdBytes(
+                    floodplane::io::labelledCloud<pcl::PointXYZL>(*points, segmented.objects->labels), options.ascii));
   }
   const std::vector<std::uint8_t> has_point = floodplane::io::finitePoints(*points);
   if (options.png || paths.pcd.empty()) {
@@ -418,6 +451,7 @@ std::vector<std::string> outputsOfRun(const std::vector<floodplane::io::InputFil
     if (options.png || paths.pcd.empty()) outputs.push_back(paths.png);
     if (options.json) outputs.push_back(paths.json);
     if (options.overlay) outputs.push_back(paths.overlay);
+    if (options.objects) outputs.push_back(paths.objects);
     if (options.snapshot) outputs.push_back(options.snapshot->empty() ? paths.snapshot : *options.snapshot);
   }
   if (options.track && options.json) outputs.push_back(pcd_segment::tracksPath(options.output, single_file));

@@ -97,6 +97,20 @@ nlohmann::ordered_json reportJson(const Report& report) {
   if (report.up) json["up"] = {report.up->x(), report.up->y(), report.up->z()};
   json["plane_count"] = report.planes.size();
   json["planes"] = std::move(planes);
+  if (report.objects) {
+    nlohmann::ordered_json objects = nlohmann::ordered_json::array();
+    for (const floodplane::SegmentedObject& object : *report.objects) {
+      objects.push_back({{"id", object.id},
+                         {"pixels", object.pixel_count},
+                         {"centroid", {object.centroid.x(), object.centroid.y(), object.centroid.z()}},
+                         {"min", {object.min.x(), object.min.y(), object.min.z()}},
+                         {"max", {object.max.x(), object.max.y(), object.max.z()}},
+                         {"support", object.support}});
+    }
+    json["objects_ms"] = report.objects_ms;
+    json["object_count"] = report.objects->size();
+    json["objects"] = std::move(objects);
+  }
   return json;
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/object_segmentation.h"
 #include "floodplane/params.h"
 #include "floodplane/plane_classes.h"
 #include "floodplane/segmenter.h"
@@ -70,11 +71,16 @@ struct Report {
   /// The up direction the planes were classed by, unit (--up, --gravity).
   std::optional<Eigen::Vector3d> up;
   std::vector<PlaneRecord> planes;
+  /// With --objects: the objects on the planes, and the time segmentObjects took.
+  std::optional<std::vector<floodplane::SegmentedObject>> objects;
+  double objects_ms = 0.0;
 };
 
 /// The report, keys in reading order (input, size, parameters, noise, time, [up,] planes);
 /// with an up direction, each plane's "class" (floodplane::planeClassName) and
-/// "height_above_floor" [m] (null when no floor was found).
+/// "height_above_floor" [m] (null when no floor was found); with objects, "objects_ms",
+/// "object_count" and "objects" (each object's id, pixels, centroid, bounding box min and max
+/// [m] and "support": the id of the plane it stands on, 0 for none).
 nlohmann::ordered_json reportJson(const Report& report);
 
 }  // namespace pcd_segment

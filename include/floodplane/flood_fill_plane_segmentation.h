@@ -16,6 +16,7 @@
 #include <pcl/point_types.h>
 #include <pcl/segmentation/planar_region.h>
 
+#include "floodplane/object_segmentation.h"
 #include "floodplane/params.h"
 #include "floodplane/plane_tracker.h"
 #include "floodplane/segmenter.h"
@@ -54,6 +55,10 @@ namespace detail {
 ///
 /// Over a stream of clouds, setTracking(true) gives the planes ids that persist from cloud to
 /// cloud (floodplane::PlaneTracker); the labels then carry those ids instead of size ranks.
+///
+/// After the planes, segmentObjects() gives the objects standing on them (the tabletop
+/// pipeline of OrganizedMultiPlaneSegmentation + OrganizedConnectedComponentSegmentation in
+/// one class; floodplane/object_segmentation.h).
 ///
 /// Bad parameter values throw std::invalid_argument from the setter, naming it.
 /// Not thread-safe; use one instance per thread. Buffers are reused between calls.
@@ -198,6 +203,22 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
                         std::vector<pcl::PointIndices>& label_indices,
                         std::vector<pcl::PointIndices>& boundary_indices);
 
+  // ---- the objects on the planes (floodplane/object_segmentation.h) -----------------------
+  /// The objects standing on the planes of the last segment() or segmentAndRefine() call
+  /// (floodplane::segmentObjects over the same cloud), as OrganizedConnectedComponentSegmentation
+  /// gives its clusters: `labels` an organized cloud of the input's size holding object ids
+  /// 1..K (largest object first; 0: no object), `object_indices[k - 1]` the points of object
+  /// k. The planes' own labels (size ranks) decide the supports, also while tracking. Without
+  /// a successful segmentation before it (none yet, or the last call failed), a PCL_ERROR and
+  /// empty outputs. Throws std::invalid_argument when an option is out of range (naming it).
+  void segmentObjects(pcl::PointCloud<PointLT>& labels, std::vector<pcl::PointIndices>& object_indices,
+                      const ObjectOptions& options = ObjectOptions());
+  /// The last segmentObjects() result as the core produced it: labels, each object's size,
+  /// centroid, bounding box (relative to the sensor origin, axes as the cloud's) and
+  /// supporting plane (its size rank, as getLastSegmentation() numbers the planes). Valid until
+  /// the next call.
+  const ObjectSegmentation& getLastObjects() const { return objects_; }
+
   /// The last result as the core produced it: labels, and planes relative to the sensor origin (axes as the cloud's),
   /// the time per phase and statistics. Valid until the next call.
   const Segmentation& getLastSegmentation() const { return *last_; }
@@ -263,6 +284,10 @@ class FloodFillPlaneSegmentation : public pcl::PCLBase<PointT> {
   std::chrono::steady_clock::time_point conversion_start_;  // when run() handed over
   const Segmentation* last_ = &empty_;
   Segmentation empty_;
+  // The grid of the last successful run and the cloud it reads (kept alive for segmentObjects).
+  PointGrid last_grid_;
+  PointCloudConstPtr last_input_;
+  ObjectSegmentation objects_;
 };
 
 }  // namespace floodplane

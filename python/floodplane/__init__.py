@@ -30,6 +30,7 @@ import numpy as _numpy
 from ._floodplane import (
     PARAMETER_NAMES,
     NoiseModel,
+    Object,
     PhaseTimes,
     Plane,
     PlaneDescription,
@@ -52,6 +53,7 @@ from ._floodplane import (
 __all__ = [
     "PARAMETER_NAMES",
     "NoiseModel",
+    "Object",
     "PhaseTimes",
     "Plane",
     "PlaneDescription",
@@ -76,33 +78,39 @@ __all__ = [
 ]
 
 
-def segment(points, *, zero_is_hole=True, **params):
+def segment(points, *, zero_is_hole=True, objects=False, **params):
     """Segments points, (H, W, 3) x y z in metres (camera at the origin, NaN = no return), with a
     new Segmenter(**params). points is anything numpy.asarray makes an array of real numbers of:
     float32 is read in place, other floats, integers and nested lists or tuples of numbers are
     converted. Points at exactly (0, 0, 0) are no return too unless zero_is_hole=False.
     Returns a Segmentation. A frame with no finite point (all NaN, all zero) or fewer than
     three is valid: its Segmentation has no planes and labels all 0 (not an error). To segment
-    a sequence of frames, keep one Segmenter: it reuses its buffers."""
-    return Segmenter(**params).segment(points, zero_is_hole=zero_is_hole)
+    a sequence of frames, keep one Segmenter: it reuses its buffers. objects=True also finds the
+    objects standing on the planes (the result's object_labels and objects; None without)."""
+    return Segmenter(**params).segment(points, zero_is_hole=zero_is_hole, objects=objects)
 
 
-def segment_depth(depth, intrinsics, fy=None, cx=None, cy=None, depth_scale=None, **params):
+def segment_depth(depth, intrinsics, fy=None, cx=None, cy=None, depth_scale=None, *, objects=False, **params):
     """Segments a depth image: segment_depth(depth, fx, fy, cx, cy) or segment_depth(depth, K).
     depth is (H, W) or (H, W, 1), any array or nested list numpy.asarray makes one of: integer
     units (millimetres: Kinect, RealSense, ROS 16UC1; a list of ints is int64, so units too)
     or float (metres: Open3D, ROS 32FC1); depth_scale is units per metre (default 1000 for
     integers, 1 for floats; 5000 for the TUM RGB-D benchmark's PNG files); 0, NaN and
     infinity are no return. intrinsics: fx, fy, cx, cy [pixels], a 3 x 3 matrix K or an Open3D
-    PinholeCameraIntrinsic. The same as segment(depth_to_points(...), **params)."""
-    return segment(depth_to_points(depth, intrinsics, fy, cx, cy, depth_scale), **params)
+    PinholeCameraIntrinsic. The same as segment(depth_to_points(...), objects=objects, **params)."""
+    return segment(depth_to_points(depth, intrinsics, fy, cx, cy, depth_scale), objects=objects, **params)
 
 
-def segment_file(input, output, *, intrinsics=None, depth_scale=1000.0, **params):
+def segment_file(input, output, *, intrinsics=None, depth_scale=1000.0, objects_output=None, **params):
     """Segments the file `input` and writes its labelled cloud to `output`, as pcd_segment
     does (the same bytes): a PCD file, or a 16-bit depth PNG with intrinsics ((fx, fy, cx, cy),
-    a 3 x 3 K or an Open3D PinholeCameraIntrinsic). Returns {'width', 'height', 'planes', 'ms'}."""
-    return Segmenter(**params).segment_file(input, output, intrinsics=intrinsics, depth_scale=depth_scale)
+    a 3 x 3 K or an Open3D PinholeCameraIntrinsic). With objects_output, also writes the objects
+    standing on the planes there, as pcd_segment --objects does (x y z label: object ids 1..K,
+    0 none). Returns {'width', 'height', 'planes', 'ms'} and, with objects_output, 'objects'
+    (how many)."""
+    return Segmenter(**params).segment_file(
+        input, output, intrinsics=intrinsics, depth_scale=depth_scale, objects_output=objects_output
+    )
 
 
 def json_name(path):

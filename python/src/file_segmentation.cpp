@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/object_segmentation.h"
 #include "io/input_frame.h"
 #include "io/labelled_cloud.h"
 #include "io/pcd_file.h"
@@ -41,7 +42,7 @@ PointGrid sensorFrameGrid(const pcl::PointCloud<pcl::PointXYZ>& cloud, std::vect
 }  // namespace
 
 FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const std::string& output,
-                        const std::optional<DepthInput>& depth) {
+                        const std::optional<DepthInput>& depth, const std::string& objects_output) {
   std::optional<io::DepthCamera> camera;
   if (depth) camera = depth->camera;
   if (camera && !camera->problem().empty()) throw std::invalid_argument(camera->problem());
@@ -65,16 +66,21 @@ FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const st
   const auto start = std::chrono::steady_clock::now();
   const Segmentation& result = segmenter.segment(grid, options);
   const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+  std::optional<ObjectSegmentation> objects;
+  if (!objects_output.empty()) objects = segmentObjects(grid, result);
   try {
     if (frame.xyzrgb) {
       io::savePcd(output, io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, result.labels));
     } else {
       io::savePcd(output, io::labelledCloud<pcl::PointXYZL>(frame.xyz, result.labels));
     }
+    if (objects) io::savePcd(objects_output, io::labelledCloud<pcl::PointXYZL>(frame.xyz, objects->labels));
   } catch (const std::runtime_error& error) {
     throw OutputFileError(error.what());
   }
-  return {result.width, result.height, result.planes.size(), elapsed.count()};
+  FileSummary summary{result.width, result.height, result.planes.size(), elapsed.count(), std::nullopt};
+  if (objects) summary.objects = objects->objects.size();
+  return summary;
 }
 
 }  // namespace floodplane::python

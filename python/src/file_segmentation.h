@@ -18,7 +18,8 @@ struct FileSummary {
   int width = 0;
   int height = 0;
   std::size_t planes = 0;
-  double ms = 0.0;  ///< the segmentation call alone
+  double ms = 0.0;                     ///< the segmentation call alone
+  std::optional<std::size_t> objects;  ///< the objects found, when asked for
 };
 
 /// How to read a depth image: its camera and, when known, the image size it was made for.
@@ -38,10 +39,11 @@ struct OutputFileError : std::runtime_error {
 };
 
 /// Reads `input` (PCD, or a depth PNG with `depth`), segments it with `segmenter` and writes
-/// `output`. Plain C++ (no Python), so that it runs without the GIL. Throws InputFileError
-/// (also for a depth image of another size than `depth` was made for), OutputFileError,
+/// `output`, and with a non-empty `objects_output` the objects on the planes there
+/// (x y z label, as pcd_segment --objects). Plain C++ (no Python), so that it runs without the GIL. Throws
+/// InputFileError (also for a depth image of another size than `depth` was made for), OutputFileError,
 /// std::invalid_argument for a camera with a problem().
 FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const std::string& output,
-                        const std::optional<DepthInput>& depth);
+                        const std::optional<DepthInput>& depth, const std::string& objects_output = "");
 
 }  // namespace floodplane::python

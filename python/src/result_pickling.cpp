@@ -165,6 +165,18 @@ const auto segmentedPlaneFields = [](auto& p, auto&& visit) { return visit(p.fit
 const auto planeFields = [](auto& p, auto&& visit) {
   return visit(p.plane.fit, p.plane.inlier_count, p.plane.first_pixel, p.label);
 };
+// An ObjectSegmentation holds its objects' states without the format number.
+const auto objectFields = [](auto& o, auto&& visit) {
+  return visit(o.id, o.pixel_count, o.centroid, o.min, o.max, o.support);
+};
+// An ObjectSegmentation's fields: its labels (an array), supports and objects (lists), checked
+// against each other and the segmentation's size once read.
+struct ObjectsFields {
+  py::object labels;
+  std::vector<std::uint32_t> supports;
+  py::list objects;
+};
+const auto objectsFields = [](auto& o, auto&& visit) { return visit(o.labels, o.supports, o.objects); };
 const auto trackFields = [](auto& t, auto&& visit) {
   return visit(t.id, t.first_frame, t.last_frame, t.frames_seen, t.plane, t.inlier_count, t.normal, t.offset,
                t.centroid, t.smoothed_normal, t.smoothed_offset, t.best_inlier_count, t.best_normal, t.best_offset,
@@ -248,6 +260,31 @@ SegmentationResult segmentationFromState(const py::tuple& state) {
   result.segmentation = std::move(s);
   result.ms = fields.ms;
   return result;
+}
+
+py::tuple objectsState(const ObjectSegmentation& objects) {
+  ObjectsFields fields{arrayCopy(objects.labels, {objects.height, objects.width}), objects.supports, py::list()};
+  for (const SegmentedObject& object : objects.objects) fields.objects.append(fieldsState(object, objectFields));
+  return plainState(fields, objectsFields);
+}
+
+ObjectSegmentation objectsFromState(const py::tuple& state, int width, int height) {
+  const auto fields = plainFromState<ObjectsFields>(state, "Segmentation.objects", objectsFields);
+  const std::string where = "cannot unpickle floodplane.Segmentation: ";
+  ObjectSegmentation out;
+  out.width = width;
+  out.height = height;
+  out.labels = unsignedGrid(fields.labels, height, width, fields.objects.size(), where + "object labels");
+  out.supports = fields.supports;
+  for (const py::handle object : fields.objects) {
+    if (!py::isinstance<py::tuple>(object)) raiseValueError(where + "an object's state must be a tuple");
+    SegmentedObject& added = out.objects.emplace_back();
+    StateReader reader(withFormat(py::reinterpret_borrow<py::tuple>(object)), "Segmentation.objects",
+                       fieldCount(added, objectFields));
+    readFields(reader, added, objectFields);
+    if (added.id != out.objects.size()) raiseValueError(where + "the objects' ids must be 1, 2, ... in order");
+  }
+  return out;
 }
 
 py::tuple trackState(const PlaneTrack& track) { return plainState(track, trackFields); }

@@ -30,6 +30,12 @@ PlaneResult planeFromState(const pybind11::tuple& state);
 pybind11::tuple segmentationState(const SegmentationResult& result);
 SegmentationResult segmentationFromState(const pybind11::tuple& state);
 
+/// The objects of a segmentation: (format, labels (H, W), supports, objects as tuples of id,
+/// pixels, centroid, min, max, support). objectsFromState checks the labels against the
+/// segmentation's size and the ids against the objects.
+pybind11::tuple objectsState(const ObjectSegmentation& objects);
+ObjectSegmentation objectsFromState(const pybind11::tuple& state, int width, int height);
+
 pybind11::tuple trackState(const PlaneTrack& track);
 PlaneTrack trackFromState(const pybind11::tuple& state);
 

@@ -119,6 +119,60 @@ void bindPlane(py::module_& m) {
       });
 }
 
+void bindObject(py::module_& m) {
+  py::class_<SegmentedObject>(m, "Object",
+                              "One object standing on the planes (floodplane::segmentObjects), in the camera frame.")
+      .def_readonly("id", &SegmentedObject::id, "its label in Segmentation.object_labels (1 = the largest)")
+      .def_readonly("pixels", &SegmentedObject::pixel_count, "number of pixels labelled with it")
+      .def_property_readonly(
+          "centroid", [](const SegmentedObject& o) -> Eigen::Vector3d { return o.centroid; },
+          "mean of its points (3,) [m]")
+      .def_property_readonly(
+          "min", [](const SegmentedObject& o) -> Eigen::Vector3d { return o.min; },
+          "axis-aligned bounding box's lower corner (3,) [m]")
+      .def_property_readonly(
+          "max", [](const SegmentedObject& o) -> Eigen::Vector3d { return o.max; },
+          "axis-aligned bounding box's upper corner (3,) [m]")
+      .def_readonly("support", &SegmentedObject::support,
+                    "the label of the plane it stands on (Segmentation.labels' numbering), 0 for none")
+      .def("__repr__", [](const SegmentedObject& o) {
+        return "Object(id=" + std::to_string(o.id) + ", pixels=" + std::to_string(o.pixel_count) + ", centroid=[" +
+               fixed(o.centroid.x(), 4) + ", " + fixed(o.centroid.y(), 4) + ", " + fixed(o.centroid.z(), 4) +
+               "], support=" + std::to_string(o.support) + ")";
+      });
+}
+
+py::object objectLabelsView(const py::object& self) {
+  const auto& result = self.cast<const SegmentationResult&>();
+  if (!result.objects) return py::none();
+  const ObjectSegmentation& o = *result.objects;
+  py::array_t<std::uint32_t> labels({py::ssize_t{o.height}, py::ssize_t{o.width}}, o.labels.data(), self);
+  labels.attr("setflags")(py::arg("write") = false);
+  return std::move(labels);
+}
+
+py::object objectList(const SegmentationResult& result) {
+  if (!result.objects) return py::none();
+  return py::cast(result.objects->objects);
+}
+
+// The pickle state: the planes' state alone (the format without objects), or with objects a
+// pair (the planes' state, the objects' state).
+py::tuple resultState(const SegmentationResult& result) {
+  if (!result.objects) return segmentationState(result);
+  return py::make_tuple(segmentationState(result), objectsState(*result.objects));
+}
+
+SegmentationResult resultFromState(const py::tuple& state) {
+  if (state.size() == 2 && py::isinstance<py::tuple>(state[0])) {
+    SegmentationResult result = segmentationFromState(state[0].cast<py::tuple>());
+    result.objects = std::make_shared<ObjectSegmentation>(
+        objectsFromState(state[1].cast<py::tuple>(), result.segmentation->width, result.segmentation->height));
+    return result;
+  }
+  return segmentationFromState(state);
+}
+
 py::object labelsView(const py::object& self) {
   const auto& result = self.cast<const SegmentationResult&>();
   const Segmentation& s = *result.segmentation;
@@ -157,6 +211,7 @@ void bindSegmentationResult(py::module_& m) {
   bindPhaseTimes(m);
   bindStats(m);
   bindPlane(m);
+  bindObject(m);
   py::class_<SegmentationResult>(m, "Segmentation",
                                  "The planes found in one frame. Pickles (with its planes, labels, noise, stats), "
                                  "so that Dask and multiprocessing can move it.")
@@ -175,10 +230,16 @@ void bindSegmentationResult(py::module_& m) {
           "stats", [](const SegmentationResult& r) { return r.segmentation->stats; },
           "seeds, segments, merges (SegmentationStats)")
       .def_readonly("ms", &SegmentationResult::ms, "wall time of the segmentation itself [ms]")
+      .def_property_readonly("object_labels", &objectLabelsView,
+                             "uint32 (H, W), read-only: 0 no object, k = objects[k - 1] (largest first); None "
+                             "unless segmented with objects=True")
+      .def_property_readonly("objects", &objectList,
+                             "the objects standing on the planes, largest first (list of Object); None unless "
+                             "segmented with objects=True")
       .def("boundary", &boundary, py::arg("plane"),
            "The outer boundary of planes[plane]: pixel indices (row * W + column), clockwise on screen, "
            "8-connected, starting at the plane's first pixel.")
-      .def(py::pickle(&segmentationState, &segmentationFromState))
+      .def(py::pickle(&resultState, &resultFromState))
       .def("__repr__", [](const SegmentationResult& r) {
         const Segmentation& s = *r.segmentation;
         return "<floodplane.Segmentation " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +

@@ -9,6 +9,7 @@
 
 #include <memory>
 
+#include "floodplane/object_segmentation.h"
 #include "floodplane/segmenter.h"
 
 namespace floodplane::python {
@@ -16,6 +17,8 @@ namespace floodplane::python {
 struct SegmentationResult {
   std::shared_ptr<const Segmentation> segmentation;
   double ms = 0.0;  ///< wall time of the core's segment call
+  /// The objects on the planes, when asked for (segment(..., objects=True)); null otherwise.
+  std::shared_ptr<const ObjectSegmentation> objects;
 };
 
 /// One plane: the core's SegmentedPlane and its label (its index + 1).
@@ -24,7 +27,7 @@ struct PlaneResult {
   std::uint32_t label = 0;
 };
 
-/// Registers Segmentation, Plane, NoiseModel, PhaseTimes and SegmentationStats.
+/// Registers Segmentation, Plane, Object, NoiseModel, PhaseTimes and SegmentationStats.
 void bindSegmentationResult(pybind11::module_& module);
 
 }  // namespace floodplane::python

@@ -17,6 +17,7 @@
 #include "camera_intrinsics.h"
 #include "errors.h"
 #include "file_segmentation.h"
+#include "floodplane/object_segmentation.h"
 #include "floodplane/segmenter.h"
 #include "params/params_table.h"
 #include "params_kwargs.h"
@@ -37,7 +38,7 @@ struct SharedSegmenter {
 };
 
 SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool refine, bool measure_phases,
-                                bool head_start, bool zero_is_hole) {
+                                bool head_start, bool zero_is_hole, bool objects) {
   const GridArray input = gridFromArray(points, "Segmenter.segment: points", zero_is_hole);
   auto copy = std::make_shared<Segmentation>();
   SegmentationResult result;
@@ -53,15 +54,18 @@ SegmentationResult segmentArray(SharedSegmenter& self, py::handle points, bool r
     const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
     result.ms = elapsed.count();
     *copy = segmentation;  // the next call overwrites the core's result
+    if (objects) result.objects = std::make_shared<ObjectSegmentation>(segmentObjects(input.grid, segmentation));
   }
   result.segmentation = std::move(copy);
   return result;
 }
 
 py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& input_file,
-                            const std::filesystem::path& output_file, py::handle intrinsics, double depth_scale) {
+                            const std::filesystem::path& output_file, py::handle intrinsics, double depth_scale,
+                            const std::optional<std::filesystem::path>& objects_file) {
   const std::string input = input_file.string();
   const std::string output = output_file.string();
+  const std::string objects_output = objects_file ? objects_file->string() : std::string();
   const std::string function = "Segmenter.segment_file";
   // The same file by device and inode (another spelling, a link): refused before any work, as
   // pcd_segment refuses an output over an input.
@@ -81,7 +85,7 @@ py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& 
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(self.mutex);
     try {
-      summary = segmentFile(self.core, input, output, depth);
+      summary = segmentFile(self.core, input, output, depth, objects_output);
     } catch (const OutputFileError& error) {
       write_error = error.what();
     } catch (const InputFileError& error) {
@@ -95,6 +99,7 @@ py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& 
   out["height"] = summary.height;
   out["planes"] = summary.planes;
   out["ms"] = summary.ms;
+  if (summary.objects) out["objects"] = *summary.objects;
   return out;
 }
 
@@ -131,6 +136,7 @@ void bindSegmenter(py::module_& m) {
           "every parameter as a dict (None: derived from the frame)")
       .def("segment", &segmentArray, py::arg("points"), py::kw_only(), py::arg("refine") = true,
            py::arg("measure_phases") = false, py::arg("head_start") = false, py::arg("zero_is_hole") = true,
+           py::arg("objects") = false,
            "Segments `points`, (H, W, 3) x y z in metres with the camera at the origin (NaN: no return): anything "
            "numpy.asarray makes an array of real numbers of (any float or integer dtype, nested lists or tuples). "
            "Read in place when float32 with x y z adjacent, converted to float32 otherwise. `zero_is_hole` "
@@ -142,14 +148,18 @@ void bindSegmenter(py::module_& m) {
            "on the first frame, after a size change or a failed call. Returns a Segmentation. A frame with no "
            "finite point (all NaN; all (0, 0, 0) with zero_is_hole) or fewer than three is a valid frame with no "
            "planes: a Segmentation whose planes are [] and labels all 0, not an error (as pcd_segment and the ROS "
-           "node); tiny frames (2 x 2) are segmented like any other. Raises for what is not a frame: a shape "
+           "node); tiny frames (2 x 2) are segmented like any other. `objects` also finds the objects standing on the "
+           "planes (floodplane::segmentObjects, as pcd_segment --objects): the result's object_labels and objects "
+           "(None without). Raises for what is not a frame: a shape "
            "other than (H, W, 3) with H >= 2 and W >= 1 (ValueError), values that are not numbers (TypeError).")
       .def("segment_file", &segmentFileSummary, py::arg("input"), py::arg("output"), py::kw_only(),
-           py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0,
+           py::arg("intrinsics") = py::none(), py::arg("depth_scale") = 1000.0, py::arg("objects_output") = py::none(),
            "Segments the file `input` and writes its labelled cloud to `output` as pcd_segment does (the same "
            "bytes). `input` is a PCD file, or a 16-bit depth PNG with intrinsics ((fx, fy, cx, cy), a 3 x 3 K "
            "or Open3D's PinholeCameraIntrinsic, whose width and height must be the image's) and depth_scale "
-           "(units per metre). Returns {'width', 'height', 'planes', 'ms'}. Raises OSError for a file that cannot "
+           "(units per metre). With `objects_output`, also the objects standing on the planes to that file, as "
+           "pcd_segment --objects writes them (x y z label: object ids 1..K, 0 none). Returns {'width', 'height', "
+           "'planes', 'ms'} and, with objects_output, 'objects' (how many). Raises OSError for a file that cannot "
            "be read or written.")
       .def(py::pickle([](const SharedSegmenter& self) { return paramsToDict(self.core.params()); },
                       [](const py::dict& params) {

@@ -187,6 +187,57 @@ TEST(FloodFillPlaneSegmentation, AgreesWithOrganizedMultiPlaneSegmentationUpToSi
   }
 }
 
+// A ball 0.15 m across in front of a wall 2 m away: the ball is the one object on the wall
+// (its support), as OrganizedConnectedComponentSegmentation would give it, labels and indices;
+// the same when the cloud and its sensor origin move together.
+TEST(FloodFillPlaneSegmentation, SegmentsTheObjectsOnThePlanes) {
+  const test::RenderedGrid scene = test::render(
+      test::kinectView(160, 120), {test::frontalPlane(2.0, 1)}, {test::ball(Eigen::Vector3d(0.1, 0.0, 1.6), 0.15, 2)},
+      [](double) { return 0.0; }, 1);
+  const auto cloud = toCloud<pcl::PointXYZ>(scene);
+  FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
+  pcl::PointCloud<pcl::Label> labels;
+  std::vector<pcl::PointIndices> indices(3);
+  seg.segmentObjects(labels, indices);  // nothing segmented yet: empty outputs
+  EXPECT_TRUE(labels.empty());
+  EXPECT_TRUE(indices.empty());
+  seg.setInputCloud(cloud);
+  FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
+  seg.segmentAndRefine(regions);
+  seg.segmentObjects(labels, indices);
+  ASSERT_EQ(labels.width, cloud->width);
+  ASSERT_EQ(labels.height, cloud->height);
+  ASSERT_EQ(indices.size(), 1u);
+  ASSERT_EQ(seg.getLastObjects().objects.size(), 1u);
+  EXPECT_EQ(seg.getLastObjects().objects[0].support, 1u);
+  std::size_t ball = 0;
+  std::size_t ball_in_object = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (scene.truth[i] == 1) {
+      EXPECT_EQ(labels[i].label, 0u) << "a wall pixel in an object: " << i;
+    }
+    ball += scene.truth[i] == 2;
+    ball_in_object += scene.truth[i] == 2 && labels[i].label == 1;
+  }
+  EXPECT_GT(ball_in_object, 0.95 * static_cast<double>(ball));
+  EXPECT_EQ(indices[0].indices.size(), ball_in_object);
+  for (const int i : indices[0].indices) EXPECT_EQ(labels[static_cast<std::size_t>(i)].label, 1u);
+
+  // Moved with its sensor: the same objects, their figures relative to the sensor.
+  const Eigen::Vector3f shift(0.5f, -1.0f, 2.0f);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr moved(new pcl::PointCloud<pcl::PointXYZ>(*cloud));
+  for (auto& p : *moved) p.getVector3fMap() += shift;
+  moved->sensor_origin_.head<3>() = shift;
+  const Eigen::Vector3d centroid = seg.getLastObjects().objects[0].centroid;
+  seg.setInputCloud(moved);
+  seg.segmentAndRefine(regions);
+  pcl::PointCloud<pcl::Label> moved_labels;
+  seg.segmentObjects(moved_labels, indices);
+  ASSERT_EQ(moved_labels.size(), labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i) ASSERT_EQ(moved_labels[i].label, labels[i].label) << i;
+  EXPECT_TRUE(seg.getLastObjects().objects[0].centroid.isApprox(centroid, 1e-5));
+}
+
 TEST(FloodFillPlaneSegmentation, GivesEmptyOutputsWithoutAnInputCloud) {
   FloodFillPlaneSegmentation<pcl::PointXYZ> seg;
   std::vector<pcl::ModelCoefficients> coefficients(2);

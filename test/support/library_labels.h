@@ -30,4 +30,21 @@ inline std::vector<std::uint32_t> libraryLabels(const pcl::PointCloud<pcl::Point
   return out;
 }
 
+/// The object labels the library gives a cloud (the PCL class's segmentObjects after
+/// segmentAndRefine), and one PointIndices per object in `indices` when given.
+inline std::vector<std::uint32_t> libraryObjectLabels(const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                                                      std::vector<pcl::PointIndices>* indices = nullptr) {
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> segmentation;
+  segmentation.setInputCloud(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(cloud));
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
+  segmentation.segmentAndRefine(regions);
+  pcl::PointCloud<pcl::Label> labels;
+  std::vector<pcl::PointIndices> object_indices;
+  segmentation.segmentObjects(labels, object_indices);
+  if (indices) *indices = object_indices;
+  std::vector<std::uint32_t> out;
+  for (const auto& l : labels) out.push_back(l.label);
+  return out;
+}
+
 }  // namespace floodplane::test

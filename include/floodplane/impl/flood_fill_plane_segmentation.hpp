@@ -65,6 +65,8 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = measure_phases_ ? Clock::now() : Clock::time_point();
   last_ = &empty_;
+  last_grid_ = PointGrid();
+  last_input_.reset();
   planes_.clear();
   track_ids_.clear();
   phases_ = PhaseTimes();
@@ -113,6 +115,8 @@ bool FloodFillPlaneSegmentation<PointT, PointLT>::run(bool refine, const char* m
   options.head_start = head_start_;
   const Clock::time_point core_start = measure_phases_ ? Clock::now() : Clock::time_point();
   last_ = &segmenter_.segment(grid, options);
+  last_grid_ = grid;
+  last_input_ = input_;
   if (measure_phases_) {
     phases_ = last_->phases;
     phases_.pcl_conversion = std::chrono::duration<double, std::milli>(core_start - start).count();
@@ -402,6 +406,36 @@ void FloodFillPlaneSegmentation<PointT, PointLT>::segmentAndRefine(
   fillLabels(*labels);
   fillRegions(regions, &boundary_indices);
   finishPhases();
+}
+
+template <typename PointT, typename PointLT>
+void FloodFillPlaneSegmentation<PointT, PointLT>::segmentObjects(pcl::PointCloud<PointLT>& labels,
+                                                                 std::vector<pcl::PointIndices>& object_indices,
+                                                                 const ObjectOptions& options) {
+  labels.clear();
+  object_indices.clear();
+  objects_ = ObjectSegmentation();
+  if (!last_input_ || last_grid_.data == nullptr) {
+    PCL_ERROR("[floodplane::%s::segmentObjects] No planes: call segment or segmentAndRefine first.\n",
+              getClassName().c_str());
+    return;
+  }
+  objects_ = floodplane::segmentObjects(last_grid_, *last_, options);
+  labels.header = last_input_->header;
+  labels.resize(last_input_->width, last_input_->height);
+  labels.is_dense = true;
+  labels.sensor_origin_ = last_input_->sensor_origin_;
+  labels.sensor_orientation_ = last_input_->sensor_orientation_;
+  object_indices.resize(objects_.objects.size());
+  for (std::size_t k = 0; k < objects_.objects.size(); ++k) {
+    object_indices[k].header = last_input_->header;
+    object_indices[k].indices.reserve(objects_.objects[k].pixel_count);
+  }
+  for (std::size_t i = 0; i < objects_.labels.size(); ++i) {
+    const std::uint32_t id = objects_.labels[i];
+    labels[i].label = id;
+    if (id != 0) object_indices[id - 1].indices.push_back(static_cast<int>(i));
+  }
 }
 
 }  // namespace floodplane

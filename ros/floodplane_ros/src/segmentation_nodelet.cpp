@@ -4,7 +4,8 @@
 // CameraInfo (image_rect, camera_info, as depth_image_proc subscribes them) in, by ~input; the
 // label cloud (plane_labels), the label image (plane_label_image), the planes (planes, in
 // ~target_frame when it is set), the largest plane's inliers and model (inliers, model, as
-// pcl_ros's SACSegmentation publishes them) and rviz markers (plane_markers) out, and a status
+// pcl_ros's SACSegmentation publishes them), rviz markers (plane_markers) and the objects on
+// the planes (object_label_image, and object_indices: one pcl_msgs/PointIndices per object) out, and a status
 // of the stream on /diagnostics. Each plane is classed (floor, wall, ...) by the up direction:
 // ~target_frame's +z axis, or ~up in the sensor's frame. Lazy, as depth_image_proc is: the
 // input is subscribed only while an output is (nodelet_topic_tools::NodeletLazy; ~lazy false
@@ -45,6 +46,7 @@
 #include "chained_plane.h"
 #include "cloud_points.h"
 #include "depth_image.h"
+#include "floodplane/object_segmentation.h"
 #include "frame_segmenter.h"
 #include "label_cloud.h"
 #include "plane_descriptions.h"
@@ -99,7 +101,10 @@ struct Outputs {
   bool markers = false;
   bool inliers = false;
   bool model = false;
-  bool any() const { return planes || labels || label_image || markers || inliers || model; }
+  bool object_image = false;    // the objects on the planes (floodplane::segmentObjects), as a label image
+  bool object_indices = false;  // ... and one pcl_msgs/PointIndices per object
+  bool objects() const { return object_image || object_indices; }
+  bool any() const { return planes || labels || label_image || markers || inliers || model || objects(); }
 };
 
 // ~up as the parameter server holds it: text (what a launch file's <param value=...> and a
@@ -200,6 +205,10 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
     markers_publisher_ = advertise<visualization_msgs::MarkerArray>(nh, "plane_markers", 1);
     inliers_publisher_ = advertise<pcl_msgs::PointIndices>(nh, "inliers", 1);
     model_publisher_ = advertise<pcl_msgs::ModelCoefficients>(nh, "model", 1);
+    object_image_publisher_ = advertise<sensor_msgs::Image>(nh, "object_label_image", 1);
+    // One message per object a frame, all of a frame's in a row: a queue as deep as a
+    // tabletop's objects, so that a subscriber a little behind loses none.
+    object_indices_publisher_ = advertise<pcl_msgs::PointIndices>(nh, "object_indices", 100);
     publishers_ready_ = true;
     diagnostics_timer_ = nh.createWallTimer(ros::WallDuration(0.1), [this](const ros::WallTimerEvent&) {
       diagnostics_->update();  // publishes when the period is over
@@ -262,6 +271,8 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
     outputs.markers = markers_publisher_.getNumSubscribers() > 0;
     outputs.inliers = inliers_publisher_.getNumSubscribers() > 0;
     outputs.model = model_publisher_.getNumSubscribers() > 0;
+    outputs.object_image = object_image_publisher_.getNumSubscribers() > 0;
+    outputs.object_indices = object_indices_publisher_.getNumSubscribers() > 0;
     return outputs;
   }
 
@@ -433,6 +444,28 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
       markers_publisher_.publish(
           boost::make_shared<visualization_msgs::MarkerArray>(planeMarkers(header, outlines, line_width_)));
     }
+    if (outputs.objects()) {
+      // The objects on the planes, in the input's frame: ids 1..K, largest first (0: none).
+      const floodplane::ObjectSegmentation objects = floodplane::segmentObjects(grid, segmentation);
+      if (outputs.object_image) {
+        std::vector<std::uint32_t> ids(objects.objects.size());
+        for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<std::uint32_t>(k + 1);
+        object_image_publisher_.publish(boost::make_shared<sensor_msgs::Image>(
+            labelImage(header, objects.width, objects.height, objects.labels, ids)));
+      }
+      if (outputs.object_indices) {
+        std::vector<boost::shared_ptr<pcl_msgs::PointIndices>> messages(objects.objects.size());
+        for (std::size_t k = 0; k < messages.size(); ++k) {
+          messages[k] = boost::make_shared<pcl_msgs::PointIndices>();
+          messages[k]->header = header;
+          messages[k]->indices.reserve(objects.objects[k].pixel_count);
+        }
+        for (std::size_t i = 0; i < objects.labels.size(); ++i) {
+          if (objects.labels[i] != 0) messages[objects.labels[i] - 1]->indices.push_back(static_cast<std::int32_t>(i));
+        }
+        for (const auto& message : messages) object_indices_publisher_.publish(message);
+      }
+    }
   }
 
   // The manager may call the callbacks from several threads: one frame at a time goes through
@@ -464,6 +497,8 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
   ros::Publisher markers_publisher_;
   ros::Publisher inliers_publisher_;
   ros::Publisher model_publisher_;
+  ros::Publisher object_image_publisher_;
+  ros::Publisher object_indices_publisher_;
   ros::Subscriber cloud_subscriber_;
   std::unique_ptr<image_transport::ImageTransport> image_transport_;
   image_transport::CameraSubscriber depth_subscriber_;

@@ -50,6 +50,7 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/object_segmentation.h"
 #include "floodplane/plane_tracker.h"
 #include "floodplane/segmenter.h"
 #include "io/depth_camera.h"
@@ -199,6 +200,17 @@ floodplane::PointGrid pointsOf(const sensor_msgs::PointCloud2& cloud) {
 
 using Clock = std::chrono::steady_clock;
 
+// The largest id in a 32SC1 label image (its objects' count: ids 1..K are all there).
+std::size_t largestLabel(const sensor_msgs::Image& image) {
+  std::int32_t largest = 0;
+  for (std::size_t i = 0; i + 4 <= image.data.size(); i += 4) {
+    std::int32_t pixel;
+    std::memcpy(&pixel, image.data.data() + i, 4);
+    largest = std::max(largest, pixel);
+  }
+  return static_cast<std::size_t>(largest);
+}
+
 // What the node published for one frame.
 struct Published {
   floodplane_ros::PlanesConstPtr planes;
@@ -207,6 +219,9 @@ struct Published {
   pcl_msgs::PointIndicesConstPtr inliers;
   pcl_msgs::ModelCoefficientsConstPtr model;
   visualization_msgs::MarkerArrayConstPtr markers;
+  // The objects on the planes: their label image and one PointIndices per object.
+  sensor_msgs::ImageConstPtr object_image;
+  std::vector<pcl_msgs::PointIndicesConstPtr> object_indices;
   // From just before the frame was sent to the planes' arrival: the node's time for the frame
   // lies within it.
   Clock::time_point sent;
@@ -214,8 +229,13 @@ struct Published {
   double roundTripMilliseconds() const {
     return std::chrono::duration<double, std::milli>(planes_arrived - sent).count();
   }
-  bool complete() const { return planes && labels && label_image && inliers && model && markers; }
-  bool any() const { return planes || labels || label_image || inliers || model || markers; }
+  bool complete() const {
+    return planes && labels && label_image && inliers && model && markers && object_image &&
+           object_indices.size() == largestLabel(*object_image);
+  }
+  bool any() const {
+    return planes || labels || label_image || inliers || model || markers || object_image || !object_indices.empty();
+  }
 };
 
 // The node's report on /diagnostics: its level and its values by key.
@@ -242,6 +262,8 @@ class NodeUnderTest {
     label_image_sub_ = nh_.subscribe("plane_label_image", 10, &NodeUnderTest::onLabelImage, this);
     inliers_sub_ = nh_.subscribe("inliers", 10, &NodeUnderTest::onInliers, this);
     model_sub_ = nh_.subscribe("model", 10, &NodeUnderTest::onModel, this);
+    object_image_sub_ = nh_.subscribe("object_label_image", 10, &NodeUnderTest::onObjectImage, this);
+    object_indices_sub_ = nh_.subscribe("object_indices", 1000, &NodeUnderTest::onObjectIndices, this);
     rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
     diagnostics_sub_ = nh_.subscribe("/diagnostics", 10, &NodeUnderTest::onDiagnostics, this);
     options_.head_start = true;  // the node's default
@@ -256,6 +278,7 @@ class NodeUnderTest {
           planes_sub_.getNumPublishers() > 0 && labels_sub_.getNumPublishers() > 0 &&
           markers_sub_.getNumPublishers() > 0 && label_image_sub_.getNumPublishers() > 0 &&
           inliers_sub_.getNumPublishers() > 0 && model_sub_.getNumPublishers() > 0 &&
+          object_image_sub_.getNumPublishers() > 0 && object_indices_sub_.getNumPublishers() > 0 &&
           ros::service::exists(nodeName() + "/set_parameters", false)) {
         return true;
       }
@@ -423,6 +446,12 @@ class NodeUnderTest {
   void onModel(const pcl_msgs::ModelCoefficientsConstPtr& model) {
     store(model->header.stamp, [&](Published& p) { p.model = model; });
   }
+  void onObjectImage(const sensor_msgs::ImageConstPtr& image) {
+    store(image->header.stamp, [&](Published& p) { p.object_image = image; });
+  }
+  void onObjectIndices(const pcl_msgs::PointIndicesConstPtr& indices) {
+    store(indices->header.stamp, [&](Published& p) { p.object_indices.push_back(indices); });
+  }
   void onMarkers(const visualization_msgs::MarkerArrayConstPtr& markers) {
     if (markers->markers.empty()) return;  // never: a DELETEALL leads every array
     store(markers->markers.front().header.stamp, [&](Published& p) { p.markers = markers; });
@@ -461,8 +490,8 @@ class NodeUnderTest {
   bool depth_images_;
   ros::NodeHandle nh_;
   ros::Publisher points_, image_, camera_info_;
-  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, label_image_sub_, inliers_sub_, model_sub_, rosout_sub_,
-      diagnostics_sub_;
+  ros::Subscriber planes_sub_, labels_sub_, markers_sub_, label_image_sub_, inliers_sub_, model_sub_, object_image_sub_,
+      object_indices_sub_, rosout_sub_, diagnostics_sub_;
   std::mutex mutex_;
   std::condition_variable arrived_;
   std::map<ros::Time, Published> published_;
@@ -577,6 +606,31 @@ void expectLibrarysResult(NodeUnderTest& under_test, const Published& published,
               (std::vector<float>{static_cast<float>(fit.normal.x()), static_cast<float>(fit.normal.y()),
                                   static_cast<float>(fit.normal.z()), static_cast<float>(fit.offset)}))
         << frame.name;
+  }
+
+  // The objects on the planes: the library's segmentObjects over the same points and planes,
+  // as a label image and one PointIndices per object, in id order, with the input's header.
+  const floodplane::ObjectSegmentation objects = floodplane::segmentObjects(layout, expected);
+  const sensor_msgs::Image& object_image = *published.object_image;
+  EXPECT_EQ(object_image.header.stamp, image.header.stamp);
+  EXPECT_EQ(object_image.header.frame_id, image.header.frame_id);
+  EXPECT_EQ(object_image.encoding, "32SC1");
+  ASSERT_EQ(object_image.data.size(), objects.labels.size() * 4);
+  std::size_t wrong_objects = 0;
+  std::vector<std::vector<std::int32_t>> object_pixels(objects.objects.size());
+  for (std::size_t i = 0; i < objects.labels.size(); ++i) {
+    std::int32_t pixel;
+    std::memcpy(&pixel, object_image.data.data() + 4 * i, 4);
+    if (pixel != static_cast<std::int32_t>(objects.labels[i])) ++wrong_objects;
+    if (objects.labels[i] != 0) object_pixels[objects.labels[i] - 1].push_back(static_cast<std::int32_t>(i));
+  }
+  EXPECT_EQ(wrong_objects, 0u) << frame.name;
+  ASSERT_EQ(published.object_indices.size(), objects.objects.size()) << frame.name;
+  // Each message is one object's pixels; they arrive in id order on their one topic.
+  for (std::size_t k = 0; k < object_pixels.size(); ++k) {
+    EXPECT_EQ(published.object_indices[k]->header.stamp, image.header.stamp);
+    EXPECT_EQ(published.object_indices[k]->header.frame_id, image.header.frame_id);
+    EXPECT_EQ(published.object_indices[k]->indices, object_pixels[k]) << frame.name << " object " << k + 1;
   }
 
   const auto& markers = published.markers->markers;

@@ -173,6 +173,64 @@ TEST_F(PcdSegment, PassesEveryParameterToTheLibrary) {
   EXPECT_EQ(used.at("depth_noise_coefficient"), 0.0);
 }
 
+// twoPlaneScene's wall with a box in front of it: a square of 20 x 20 pixels (27 cm, too small
+// to be a support) 20 cm nearer.
+Cloud boxScene() {
+  Cloud cloud = twoPlaneScene();
+  for (int v = 30; v < 50; ++v) {
+    for (int u = 60; u < 80; ++u) {
+      pcl::PointXYZ& p = cloud.at(u, v);
+      const float scale = 1.8f / p.z;
+      p.x *= scale;
+      p.y *= scale;
+      p.z = 1.8f;
+    }
+  }
+  return cloud;
+}
+
+TEST_F(PcdSegment, ObjectsAreWrittenAsTheLibraryFindsThemWithTheirJson) {
+  const Cloud cloud = boxScene();
+  const std::string input = writeScene("scene.pcd", cloud);
+  const Result result = run({input, "-o", path("out").string(), "--objects", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  pcl::PointCloud<pcl::PointXYZL> objects;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/scene.objects.pcd").string(), objects), 0);
+  ASSERT_EQ(objects.width, cloud.width);
+  ASSERT_EQ(objects.height, cloud.height);
+  for (std::size_t i = 0; i < cloud.size(); ++i) ASSERT_TRUE(sameXyz(cloud[i], objects[i])) << i;
+  std::vector<pcl::PointIndices> indices;
+  const std::vector<std::uint32_t> expected = libraryObjectLabels(cloud, &indices);
+  EXPECT_EQ(labelsOf(objects), expected);
+  // The box, and nothing of the wall or the floor.
+  ASSERT_EQ(indices.size(), 1u);
+  std::size_t on_box = 0;
+  for (int v = 0; v < static_cast<int>(objects.height); ++v) {
+    for (int u = 0; u < static_cast<int>(objects.width); ++u) {
+      const bool box = u >= 60 && u < 80 && v >= 30 && v < 50;
+      if (!box) {
+        EXPECT_EQ(objects.at(u, v).label, 0u) << u << "," << v;
+      }
+      on_box += box && objects.at(u, v).label == 1;
+    }
+  }
+  EXPECT_GT(on_box, 380u);
+  EXPECT_EQ(indices[0].indices.size(), on_box);
+  const auto json = nlohmann::json::parse(readFile(path("out/scene.planes.json")));
+  ASSERT_EQ(json.at("object_count"), 1);
+  const auto& box = json.at("objects").at(0);
+  EXPECT_EQ(box.at("id"), 1);
+  EXPECT_EQ(box.at("pixels"), on_box);
+  EXPECT_EQ(box.at("support"), 1) << "it stands on the wall, the largest plane";
+  EXPECT_NEAR(box.at("centroid")[2].get<double>(), 1.8, 1e-4);
+  EXPECT_NEAR(box.at("min")[2].get<double>(), 1.8, 1e-4);
+  EXPECT_GE(json.at("objects_ms").get<double>(), 0.0);
+  // Without --objects, no objects file and no objects in the JSON.
+  ASSERT_EQ(run({input, "-o", path("plain").string(), "--json"}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(path("plain/scene.objects.pcd")));
+  EXPECT_FALSE(nlohmann::json::parse(readFile(path("plain/scene.planes.json"))).contains("objects"));
+}
+
 TEST_F(PcdSegment, JsonAgreesWithThePcdAndPngSitsNextToIt) {
   const std::string input = writeScene("scene.pcd", twoPlaneScene());
   const Result result = run({input, "-o", path("res/labels.pcd").string(), "--png", "--json"});

@@ -253,6 +253,12 @@ TEST_F(PcdSegmentBatch, RefusesToWriteAnOutputOverAnotherInput) {
   const std::map<std::string, std::string> with_report = filesIn(path("col"));
   expectOutputRefused(run({frame, report, "-o", path("col").string(), "--json"}), report, report, path("col"),
                       with_report);
+  // And --objects' labels over an input of that name.
+  const std::string objects = writeScene("col/frame.objects.pcd", wallAndFloor(80, 60));
+  const std::map<std::string, std::string> with_objects = filesIn(path("col"));
+  expectOutputRefused(run({frame, objects, "-o", path("col").string(), "--objects"}), objects, objects, path("col"),
+                      with_objects);
+  fs::remove(objects);
   // Without --json the report is no output, and a file that is not an input of the run is
   // an earlier output, replaced as usual.
   const Result replaced = run({frame, report, "-o", path("col").string()});

@@ -27,6 +27,7 @@ TEST(OutputPaths, PutsOutputsOfADirectoryRunUnderTheInputsName) {
   EXPECT_EQ(paths.pcd, "out/frame.7.labels.pcd");
   EXPECT_EQ(paths.png, "out/frame.7.labels.png");
   EXPECT_EQ(paths.json, "out/frame.7.planes.json");
+  EXPECT_EQ(paths.objects, "out/frame.7.objects.pcd");
 }
 
 TEST(OutputPaths, PutsPngAndJsonNextToASingleOutputFileWithItsStem) {
@@ -34,6 +35,7 @@ TEST(OutputPaths, PutsPngAndJsonNextToASingleOutputFileWithItsStem) {
   EXPECT_EQ(paths.pcd, "res/scene.pcd");
   EXPECT_EQ(paths.png, "res/scene.png");
   EXPECT_EQ(paths.json, "res/scene.json");
+  EXPECT_EQ(paths.objects, "res/scene.objects.pcd");
 }
 
 TEST(OutputPaths, MakesASinglePngOutputTheLabelImageWithNoCloud) {
