@@ -127,6 +127,8 @@ using ObjectMethodFactory = std::unique_ptr<Method> (*)();
 /// The object methods by name, in the order --objects runs them by default.
 const std::vector<std::pair<std::string, ObjectMethodFactory>>& objectMethods();
 
+/// floodplane's PCL class: segmentAndRefine, then segmentObjects (floodplane_objects_method.cpp).
+std::unique_ptr<Method> makeFloodplaneObjectsMethod();
 /// PCL's organized tabletop pipeline as its apps/organized_segmentation_demo runs it
 /// (pcl_organized_objects_method.cpp).
 std::unique_ptr<Method> makePclOrganizedObjectsMethod();

@@ -8,6 +8,7 @@ namespace pcd_compare {
 
 const std::vector<std::pair<std::string, ObjectMethodFactory>>& objectMethods() {
   static const std::vector<std::pair<std::string, ObjectMethodFactory>> methods = {
+      {"floodplane", makeFloodplaneObjectsMethod},
       {"pcl_organized", makePclOrganizedObjectsMethod},
       {"lccp", makeLccpObjectsMethod},
       {"lccp_ec_sc", makeLccpExtendedObjectsMethod},

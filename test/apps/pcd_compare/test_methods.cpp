@@ -188,7 +188,7 @@ TEST(Baselines, TunedValuesFileIsReadAndCheckedByName) {
 // and a frame without a point gives no object.
 TEST(ObjectMethods, FindObjectsOnTheTabletopDeterministically) {
   const InputCloud input = loadInputCloud(kTabletop);
-  ASSERT_EQ(objectMethods().size(), 3u);
+  ASSERT_EQ(objectMethods().size(), 4u);
   for (const auto& [name, make] : objectMethods()) {
     const auto method = make();
     EXPECT_EQ(method->name(), name);

@@ -552,7 +552,7 @@ TEST_F(PcdCompare, ObjectMethodsWriteTheirObjectsAndScoreThem) {
   EXPECT_NE(first.out.find("**object method pcl_organized**"), std::string::npos) << first.out;
   const nlohmann::json report = nlohmann::json::parse(readFile(json_file));
   ASSERT_EQ(report["scenes"].size(), 1u);
-  for (const std::string method : {"pcl_organized", "lccp", "lccp_ec_sc"}) {
+  for (const std::string method : {"floodplane", "pcl_organized", "lccp", "lccp_ec_sc"}) {
     EXPECT_EQ(meanRowCount(first.out, "all files (1)", method, 1), 1) << method << first.out;
     const auto& entry = report["scenes"][0]["methods"][method];
     pcl::PointCloud<pcl::PointXYZL> objects;
