@@ -10,8 +10,8 @@
 # (its rostest chains ExtractIndices) and rviz to look at the planes. The rest of floodplane
 # needs none of them (scripts/install_deps.sh). As root it installs them; otherwise it prints
 # the command to run and fails, so nothing half-happens. `--list` prints the packages, one a
-# line, and nothing else (scripts/check_ros_commands.sh checks each with dpkg -s).
-# After it, scripts/check_ros_commands.sh finds every executable the README's ROS section and
+# line, and nothing else (scripts/check_ros_commands.py checks each with dpkg -s).
+# After it, scripts/check_ros_commands.py finds every executable the README's ROS section and
 # the rostests run: a package missing here fails there, not on a user's machine.
 set -euo pipefail
 
