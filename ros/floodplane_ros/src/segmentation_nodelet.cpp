@@ -206,9 +206,11 @@ class SegmentationNodelet : public nodelet_topic_tools::NodeletLazy {
     inliers_publisher_ = advertise<pcl_msgs::PointIndices>(nh, "inliers", 1);
     model_publisher_ = advertise<pcl_msgs::ModelCoefficients>(nh, "model", 1);
     object_image_publisher_ = advertise<sensor_msgs::Image>(nh, "object_label_image", 1);
-    // One message per object a frame, all of a frame's in a row: a queue as deep as a
-    // tabletop's objects, so that a subscriber a little behind loses none.
-    object_indices_publisher_ = advertise<pcl_msgs::PointIndices>(nh, "object_indices", 100);
+    // One message per object a frame, all of a frame's in a row: a queue deeper than a frame's
+    // objects can be (a 640x480 frame holds at most 3072 of ObjectOptions' 100 pixels; a room
+    // has over a hundred), so that a subscriber that has not yet read the first loses none of
+    // the rest. A queue of 100 dropped the tail of a room's objects under load.
+    object_indices_publisher_ = advertise<pcl_msgs::PointIndices>(nh, "object_indices", 4096);
     publishers_ready_ = true;
     diagnostics_timer_ = nh.createWallTimer(ros::WallDuration(0.1), [this](const ros::WallTimerEvent&) {
       diagnostics_->update();  // publishes when the period is over

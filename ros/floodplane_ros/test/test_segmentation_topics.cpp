@@ -263,7 +263,7 @@ class NodeUnderTest {
     inliers_sub_ = nh_.subscribe("inliers", 10, &NodeUnderTest::onInliers, this);
     model_sub_ = nh_.subscribe("model", 10, &NodeUnderTest::onModel, this);
     object_image_sub_ = nh_.subscribe("object_label_image", 10, &NodeUnderTest::onObjectImage, this);
-    object_indices_sub_ = nh_.subscribe("object_indices", 1000, &NodeUnderTest::onObjectIndices, this);
+    object_indices_sub_ = nh_.subscribe("object_indices", 4096, &NodeUnderTest::onObjectIndices, this);
     rosout_sub_ = nh_.subscribe("/rosout", 100, &NodeUnderTest::onLog, this);
     diagnostics_sub_ = nh_.subscribe("/diagnostics", 10, &NodeUnderTest::onDiagnostics, this);
     options_.head_start = true;  // the node's default
