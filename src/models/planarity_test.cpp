@@ -215,6 +215,15 @@ bool PlanarityTest::curved(std::uint32_t k, const Tolerances& tolerances) const 
   return bends(s, fitQuadric(s), fits_[k - 1], tolerances);
 }
 
+bool PlanarityTest::unionBends(std::uint32_t k, std::uint32_t l, const PlaneFit& joint,
+                               const Tolerances& tolerances) const {
+  if (!judgeable(k) || !judgeable(l)) return false;
+  const Frame frame = frameOf(joint);
+  Sums both = sumsIn(k, frame);
+  both += sumsIn(l, frame);
+  return bends(both, fitQuadric(both), joint, tolerances);
+}
+
 bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint,
                                const Tolerances& tolerances) const {
   if (!judgeable(k) || !judgeable(l)) return false;

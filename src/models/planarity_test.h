@@ -47,6 +47,9 @@ class PlanarityTest {
   /// along the union's normal, six parameters either way), where at a crease the two planes
   /// fit better.
   bool curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances) const;
+  /// Whether the union of planes k and l, whose plane is `joint`, bends as curved() judges a
+  /// plane (false when either is too small to judge: nothing is known against the union).
+  bool unionBends(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances) const;
 
   /// The number of monomials x^a y^b z^c with a + b + c <= 4.
   static constexpr int kMonomials = 35;

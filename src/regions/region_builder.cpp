@@ -199,6 +199,16 @@ void RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame) {
     joint.merge(list[l - 1].sums);
     if (planarity_.curvedPair(k, l, joint.fit(), tolerances)) curved_[k] = curved_[l] = true;
   }
+  // Touching flat planes that meet without a crease or a step: one plane the sensor bent.
+  const std::uint32_t count = static_cast<std::uint32_t>(list.size());
+  if (bend_merging_.judge(frame.grid, labels, facet_pairs_.pairs(), list, curved_, planarity_,
+                          MergeCriterion(params_, tolerances), tolerances, group_)) {
+    candidates_.regroup(group_);
+    std::vector<bool> curved(candidates_.list().size() + 1, false);
+    for (std::uint32_t k = 1; k <= count; ++k)
+      curved[candidates_.remap(k)] = curved[candidates_.remap(k)] || curved_[k];
+    curved_.swap(curved);
+  }
   candidates_.drop(curved_);
 }
 

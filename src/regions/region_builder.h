@@ -19,6 +19,7 @@
 #include "models/plane_candidates.h"
 #include "models/plane_sums.h"
 #include "models/tolerances.h"
+#include "regions/bend_merging.h"
 #include "regions/occlusion_merging.h"
 
 namespace floodplane {
@@ -66,6 +67,8 @@ class RegionBuilder {
   std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
   FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;
+  BendMerging bend_merging_;
+  std::vector<std::uint32_t> group_;  // bend_merging_'s
 };
 
 }  // namespace floodplane

@@ -1,0 +1,54 @@
+// SPDX-FileCopyrightText: 2026 The floodplane authors
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "flood/plane_merger.h"
+#include "floodplane/point_grid.h"
+#include "models/planarity_test.h"
+#include "models/plane_candidates.h"
+#include "util/union_find.h"
+
+namespace floodplane {
+
+/// Beyond the paper: a real plane that the sensor bends is one plane. A depth camera warps a
+/// true table towards the image's corners by more than its noise (a real Kinect tilts the
+/// table's near corner by 5-12 degrees over a few centimetres): the flood stops where the
+/// surface leaves the band of the table's plane, and the corner, flat within its own band,
+/// is a plane of its own. Eq. 9 (MergeCriterion) refuses the pair: it compares the two
+/// planes' fits over their whole extent, where the corner's tilt is a crease.
+///
+/// A plane ends at a crease, a step or a gap. Two touching planes (FacetPairs) are held to
+/// Eq. 9 where they meet instead: on the bands of each along their shared border, kBandPixels
+/// wide (a seed patch's side, the smallest patch the method fits a plane to). A warped
+/// surface is flat where its two pieces meet: the bands pass Eq. 9 together and the border
+/// between them shows no step (MergeCriterion::withoutStep, as for a bend in the flood's
+/// merge); at a crease the bands meet at the crease's angle, at a step (a board on a wall)
+/// the points across the border lie apart along the normal. Such a
+/// pair merges when their union is no curved surface as the planarity test judges it (the
+/// facets of a curved thing also meet without a crease: they are curved together instead,
+/// PlanarityTest::curvedPair).
+class BendMerging {
+ public:
+  static constexpr int kBandPixels = 12;
+
+  /// Merge groups of the planes 1..planes.size() of the label image `labels` over the points
+  /// `grid`: group[k] is a plane number shared by k's group (k itself when k merges with none). `pairs` are the touching
+  /// pairs (FacetPairs), `curved` the planes already judged curved (never merged), `test` the
+  /// planarity test's sums of every plane, `criterion` Eq. 9. Returns whether any merged.
+  bool judge(const PointGrid& grid, const CurrentLabels& labels,
+             const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, const std::vector<PlaneCandidate>& planes,
+             const std::vector<bool>& curved, const PlanarityTest& test, const MergeCriterion& criterion,
+             const Tolerances& tolerances, std::vector<std::uint32_t>& group);
+
+ private:
+  std::vector<std::uint64_t> keys_;  // the pairs judged, sorted: low << 32 | high
+  std::vector<PlaneSums> bands_;     // per pair of keys_: the low plane's band, then the high one's
+  std::vector<SegmentBorder> borders_;  // per pair of keys_: its pixel pairs, low plane's side first
+  UnionFind sets_;
+};
+
+}  // namespace floodplane
