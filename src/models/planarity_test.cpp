@@ -21,11 +21,11 @@ constexpr double kSmallestSample = 24.0;
 // The quadratic's three extra terms explain chi^2_3 noise variances on a true plane (mean 3);
 // a bend must explain this many.
 constexpr double kSignificance = 30.0;
-// ... and bend the surface with a radius below half a metre (the curved things in rooms:
-// people, balls, bins, pipes, columns). A depth camera's calibration bends real walls and
-// tables too, by half a millimetre over a metre at 1 m (a radius of 100 m and more), and at
-// close range that bend is significant; a small plane's noise fakes radii of a metre.
-constexpr double kSmallestCurvature = 2.0;  // 1/m
+// ... and bend the surface with a radius below half a metre (PlanarityTest::kSmallestCurvature:
+// the curved things in rooms: people, balls, bins, pipes, columns). A depth camera's
+// calibration bends real walls and tables too, by half a millimetre over a metre at 1 m (a
+// radius of 100 m and more), and at close range that bend is significant; a small plane's
+// noise fakes radii of a metre.
 // Noise across a surface never below this share of a pixel footprint (exact data: float
 // round-off).
 constexpr double kFootprintFloor = 0.02;
@@ -222,6 +222,13 @@ bool PlanarityTest::unionBends(std::uint32_t k, std::uint32_t l, const PlaneFit&
   Sums both = sumsIn(k, frame);
   both += sumsIn(l, frame);
   return bends(both, fitQuadric(both), joint, tolerances);
+}
+
+double PlanarityTest::unionCurvature(std::uint32_t k, std::uint32_t l, const PlaneFit& joint) const {
+  const Frame frame = frameOf(joint);
+  Sums both = sumsIn(k, frame);
+  both += sumsIn(l, frame);
+  return fitQuadric(both).curvature;
 }
 
 bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint,

@@ -3,6 +3,7 @@
 #include "regions/bend_merging.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "util/label_borders.h"
@@ -14,19 +15,22 @@ namespace {
 // A band with fewer points than a seed patch's side has no normal across the border.
 constexpr double kSmallestBand = 3.0 * BendMerging::kBandPixels;
 
+// The shorter side of the rectangle that a uniform spread with these moments covers [m].
+double shorterSide(const PlaneFit& fit) { return std::sqrt(12.0 * std::max(0.0, fit.eigenvalues[1])); }
+
 }  // namespace
 
 bool BendMerging::judge(const PointGrid& grid, const CurrentLabels& labels,
                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
-                        const std::vector<PlaneCandidate>& planes, const std::vector<bool>& curved, const PlanarityTest& test,
-                        const MergeCriterion& criterion, const Tolerances& tolerances,
+                        const std::vector<PlaneCandidate>& planes, const std::vector<bool>& curved,
+                        const PlanarityTest& test, const MergeCriterion& criterion, const Tolerances& tolerances,
                         std::vector<std::uint32_t>& group) {
   const std::size_t count = planes.size();
   group.resize(count + 1);
   std::iota(group.begin(), group.end(), 0u);
   keys_.clear();
   for (const auto& [k, l] : pairs)
-    if (!curved[k] && !curved[l])
+    if (!curved[k] || !curved[l])
       keys_.push_back(borderKey(static_cast<std::int32_t>(k), static_cast<std::int32_t>(l)));
   if (keys_.empty()) return false;
   std::sort(keys_.begin(), keys_.end());
@@ -85,6 +89,16 @@ bool BendMerging::judge(const PointGrid& grid, const CurrentLabels& labels,
     joint.merge(planes[l - 1].sums);
     const PlaneFit fit = joint.fit();
     if (!fit.valid || test.unionBends(k, l, fit, tolerances)) continue;
+    // A plane judged curved alone joins a flat one only as the bend of a larger flat surface
+    // (the corner of a warped table): the flat one spans more than the radius of the curved
+    // things of a room both ways (a facet of a body, a bin or a pipe is narrower than it
+    // across its axis), and their union is flat by its curvature, however significant its
+    // bend.
+    if (curved[k] || curved[l]) {
+      const PlaneFit& flat = curved[k] ? planes[l - 1].sums.fit() : planes[k - 1].sums.fit();
+      if (!(shorterSide(flat) > 1.0 / PlanarityTest::kSmallestCurvature)) continue;
+      if (!(test.unionCurvature(k, l, fit) < PlanarityTest::kSmallestCurvature)) continue;
+    }
     sets_.unite(static_cast<std::int32_t>(k), static_cast<std::int32_t>(l));
     any = true;
   }

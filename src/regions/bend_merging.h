@@ -27,26 +27,33 @@ namespace floodplane {
 /// surface is flat where its two pieces meet: the bands pass Eq. 9 together and the border
 /// between them shows no step (MergeCriterion::withoutStep, as for a bend in the flood's
 /// merge); at a crease the bands meet at the crease's angle, at a step (a board on a wall)
-/// the points across the border lie apart along the normal. Such a
-/// pair merges when their union is no curved surface as the planarity test judges it (the
-/// facets of a curved thing also meet without a crease: they are curved together instead,
-/// PlanarityTest::curvedPair).
+/// the points across the border lie apart along the normal. Such a pair merges when their
+/// union is no curved surface as the planarity test judges it (the facets of a curved thing
+/// also meet without a crease: they are curved together instead, PlanarityTest::curvedPair).
+///
+/// The warp can bend a corner tighter than the curved things of a room (a radius under half
+/// a metre over a few centimetres): the planarity test then judges the corner curved alone.
+/// Such a piece joins a flat plane when the flat one spans more than that radius both ways (a
+/// body's, a bin's or a pipe's flat facet is narrower than the thing across its axis) and their
+/// union is flat by its curvature (PlanarityTest::unionCurvature): it is the bend of a larger
+/// flat surface. Two planes judged curved never join.
 class BendMerging {
  public:
   static constexpr int kBandPixels = 12;
 
   /// Merge groups of the planes 1..planes.size() of the label image `labels` over the points
-  /// `grid`: group[k] is a plane number shared by k's group (k itself when k merges with none). `pairs` are the touching
-  /// pairs (FacetPairs), `curved` the planes already judged curved (never merged), `test` the
-  /// planarity test's sums of every plane, `criterion` Eq. 9. Returns whether any merged.
+  /// `grid`: group[k] is a plane number shared by k's group (k itself when k merges with
+  /// none). `pairs` are the touching pairs (FacetPairs), `curved` the planes judged curved
+  /// alone (see above), `test` the planarity test's sums of every plane, `criterion` Eq. 9.
+  /// Returns whether any merged.
   bool judge(const PointGrid& grid, const CurrentLabels& labels,
-             const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, const std::vector<PlaneCandidate>& planes,
-             const std::vector<bool>& curved, const PlanarityTest& test, const MergeCriterion& criterion,
-             const Tolerances& tolerances, std::vector<std::uint32_t>& group);
+             const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+             const std::vector<PlaneCandidate>& planes, const std::vector<bool>& curved, const PlanarityTest& test,
+             const MergeCriterion& criterion, const Tolerances& tolerances, std::vector<std::uint32_t>& group);
 
  private:
-  std::vector<std::uint64_t> keys_;  // the pairs judged, sorted: low << 32 | high
-  std::vector<PlaneSums> bands_;     // per pair of keys_: the low plane's band, then the high one's
+  std::vector<std::uint64_t> keys_;     // the pairs judged, sorted: low << 32 | high
+  std::vector<PlaneSums> bands_;        // per pair of keys_: the low plane's band, then the high one's
   std::vector<SegmentBorder> borders_;  // per pair of keys_: its pixel pairs, low plane's side first
   UnionFind sets_;
 };

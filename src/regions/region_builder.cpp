@@ -204,9 +204,13 @@ void RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame) {
   if (bend_merging_.judge(frame.grid, labels, facet_pairs_.pairs(), list, curved_, planarity_,
                           MergeCriterion(params_, tolerances), tolerances, group_)) {
     candidates_.regroup(group_);
+    // A merged plane passed the planarity test as a union; a plane that merged with none
+    // keeps its verdict.
+    members_.assign(candidates_.list().size() + 1, 0);
+    for (std::uint32_t k = 1; k <= count; ++k) ++members_[candidates_.remap(k)];
     std::vector<bool> curved(candidates_.list().size() + 1, false);
     for (std::uint32_t k = 1; k <= count; ++k)
-      curved[candidates_.remap(k)] = curved[candidates_.remap(k)] || curved_[k];
+      if (members_[candidates_.remap(k)] == 1) curved[candidates_.remap(k)] = curved_[k];
     curved_.swap(curved);
   }
   candidates_.drop(curved_);

@@ -68,7 +68,8 @@ class RegionBuilder {
   FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;
   BendMerging bend_merging_;
-  std::vector<std::uint32_t> group_;  // bend_merging_'s
+  std::vector<std::uint32_t> group_;    // bend_merging_'s
+  std::vector<std::uint32_t> members_;  // per plane after bend merging: the planes it joined
 };
 
 }  // namespace floodplane

@@ -21,10 +21,10 @@ namespace floodplane {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kWidth = 40, kHeight = 16;
 
-// A wall 2 m away facing the camera: plane 1 left of column 20, plane 2 from it on, whose
-// depth beyond the split at X0 is 2 + offset + bend (X - X0)^2 + (X - X0) tan(degrees).
+// A wall 2 m away facing the camera, `width` x `height` pixels (2 cm each): plane 1 left of
+// column `split`, plane 2 from it on, whose depth beyond the split at X0 is
+// 2 + offset + bend (X - X0)^2 + (X - X0) tan(degrees).
 struct Wall {
   test::PinholeGrid grid;
   PlaneCandidates planes;
@@ -33,11 +33,11 @@ struct Wall {
   PlanarityTest planarity;
   std::vector<PlaneFit> fits;
 
-  Wall(double bend, double degrees, double offset)
-      : grid(kWidth, kHeight, [=](int u, int) {
-          const double x = (u - (kWidth - 1) / 2.0) / test::kPinholeFocal;
-          if (u < 20) return 2.0;
-          const double x0 = (19.5 - (kWidth - 1) / 2.0) / test::kPinholeFocal * 2.0;
+  Wall(double bend, double degrees, double offset, int width = 40, int height = 16, int split = 20)
+      : grid(width, height, [=](int u, int) {
+          const double x = (u - (width - 1) / 2.0) / test::kPinholeFocal;
+          if (u < split) return 2.0;
+          const double x0 = (split - 0.5 - (width - 1) / 2.0) / test::kPinholeFocal * 2.0;
           // z = 2 + offset + bend (X - X0)^2 + (X - X0) t with X = x z: the root of
           // bend x^2 z^2 + (t x - 2 bend x X0 - 1) z + 2 + offset + bend X0^2 - t X0 = 0 near 2.
           const double t = std::tan(degrees * kPi / 180.0);
@@ -49,8 +49,8 @@ struct Wall {
           return z;
         }) {
     std::vector<std::uint32_t> image;
-    for (int v = 0; v < kHeight; ++v)
-      for (int u = 0; u < kWidth; ++u) image.push_back(u < 20 ? 1u : 2u);
+    for (int v = 0; v < height; ++v)
+      for (int u = 0; u < width; ++u) image.push_back(u < split ? 1u : 2u);
     tolerances = Tolerances(params, {}, 1.0 / test::kPinholeFocal, image.size());
     planes = test::planesOfLabels(grid, image, tolerances);
     for (const PlaneCandidate& plane : planes.list()) fits.push_back(plane.sums.fit());
@@ -65,11 +65,11 @@ struct Wall {
         .mergeable(planes.list()[0].sums, fits[0], planes.list()[1].sums, fits[1], cost);
   }
 
-  // The bend merging's groups of the pair (1, 2), neither plane curved.
-  bool judge(std::vector<std::uint32_t>& group) {
+  // The bend merging's groups of the pair (1, 2), `curved` the planes judged curved alone.
+  bool judge(std::vector<std::uint32_t>& group, const std::vector<bool>& curved = {false, false, false}) {
     BendMerging merging;
     const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = {{1u, 2u}};
-    return merging.judge(grid.grid(), planes.labels(), pairs, planes.list(), {false, false, false}, planarity,
+    return merging.judge(grid.grid(), planes.labels(), pairs, planes.list(), curved, planarity,
                          MergeCriterion(params, tolerances), tolerances, group);
   }
 };
@@ -101,14 +101,27 @@ TEST(BendMerging, KeepsAStepApart) {
   EXPECT_FALSE(wall.judge(group));
 }
 
-TEST(BendMerging, LeavesCurvedPlanesAlone) {
-  // The bent pair of the first test, with plane 2 judged curved already.
-  Wall wall(0.2, 0.0, 0.0);
-  BendMerging merging;
+TEST(BendMerging, JoinsACurvedPieceToALargePlaneItBends) {
+  // The bent pair of the first test with plane 2 judged curved alone (a warped table's corner):
+  // plane 1 spans 1.2 m both ways, more than the radius of a curved thing of a room.
+  Wall wall(0.2, 0.0, 0.0, 80, 60, 60);
   std::vector<std::uint32_t> group;
-  const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = {{1u, 2u}};
-  EXPECT_FALSE(merging.judge(wall.grid.grid(), wall.planes.labels(), pairs, wall.planes.list(), {false, false, true},
-                             wall.planarity, MergeCriterion(wall.params, wall.tolerances), wall.tolerances, group));
+  ASSERT_TRUE(wall.judge(group, {false, false, true}));
+  EXPECT_EQ(group[1], group[2]);
+}
+
+TEST(BendMerging, JoinsNoCurvedPieceToASmallPlane) {
+  // The same with plane 1 0.4 m x 0.32 m: as narrow as a body's facet.
+  Wall wall(0.2, 0.0, 0.0);
+  std::vector<std::uint32_t> group;
+  EXPECT_FALSE(wall.judge(group, {false, false, true}));
+  EXPECT_NE(group[1], group[2]);
+}
+
+TEST(BendMerging, JoinsNoTwoCurvedPlanes) {
+  Wall wall(0.2, 0.0, 0.0, 80, 60, 60);
+  std::vector<std::uint32_t> group;
+  EXPECT_FALSE(wall.judge(group, {false, true, true}));
 }
 
 }  // namespace
