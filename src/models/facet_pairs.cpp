@@ -14,7 +14,9 @@ template <class Labels>
 void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::vector<PlaneCandidate>& planes,
                       const std::vector<PlaneFit>& fits, const std::vector<bool>& eligible) {
   touching_.clear();
+  pixel_pairs_.clear();
   pairs_.clear();
+  pair_touches_.clear();
   const std::size_t count = fits.size();
   const double cos_maximum = std::cos(kMaximumAngle);
   const auto close = [&](std::uint32_t k, std::uint32_t l) {
@@ -45,17 +47,20 @@ void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::ve
     if (!touching_.empty() && touching_.back().key == key)
       ++touching_.back().count;
     else
-      touching_.push_back({key, 1});
+      touching_.push_back({key, 1, static_cast<std::uint32_t>(pixel_pairs_.size())});
+    pixel_pairs_.emplace_back(static_cast<std::uint32_t>(k < l ? i : j), static_cast<std::uint32_t>(k < l ? j : i));
   };
   forEachLabelBorder(grid, labels.image, touch);
-  std::sort(touching_.begin(), touching_.end(), [](const Touch& a, const Touch& b) { return a.key < b.key; });
+  std::stable_sort(touching_.begin(), touching_.end(), [](const Touch& a, const Touch& b) { return a.key < b.key; });
   for (std::size_t i = 0; i < touching_.size();) {
     std::size_t j = i;
     std::uint32_t border = 0;
     for (; j < touching_.size() && touching_[j].key == touching_[i].key; ++j) border += touching_[j].count;
-    if (border >= kMinimumBorder)
+    if (border >= kMinimumBorder) {
       pairs_.emplace_back(static_cast<std::uint32_t>(touching_[i].key >> 32),
                           static_cast<std::uint32_t>(touching_[i].key & 0xffffffffu));
+      pair_touches_.emplace_back(i, j);
+    }
     i = j;
   }
 }

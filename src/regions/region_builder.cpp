@@ -201,7 +201,7 @@ void RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame) {
   }
   // Touching flat planes that meet without a crease or a step: one plane the sensor bent.
   const std::uint32_t count = static_cast<std::uint32_t>(list.size());
-  if (bend_merging_.judge(frame.grid, labels, facet_pairs_.pairs(), list, curved_, planarity_,
+  if (bend_merging_.judge(frame.grid, labels, facet_pairs_, list, curved_, planarity_,
                           MergeCriterion(params_, tolerances), tolerances, group_)) {
     candidates_.regroup(group_);
     // A merged plane passed the planarity test as a union; a plane that merged with none

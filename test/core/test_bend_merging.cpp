@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <functional>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "models/facet_pairs.h"
 #include "models/planarity_test.h"
 #include "regions/bend_merging.h"
 #include "support/pinhole_grid.h"
@@ -65,10 +65,12 @@ struct Wall {
         .mergeable(planes.list()[0].sums, fits[0], planes.list()[1].sums, fits[1], cost);
   }
 
-  // The bend merging's groups of the pair (1, 2), `curved` the planes judged curved alone.
+  // The bend merging's groups of the touching pairs (FacetPairs), `curved` the planes judged
+  // curved alone.
   bool judge(std::vector<std::uint32_t>& group, const std::vector<bool>& curved = {false, false, false}) {
+    FacetPairs pairs;
+    pairs.find(grid.grid(), planes.labels(), planes.list(), fits, {false, true, true});
     BendMerging merging;
-    const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = {{1u, 2u}};
     return merging.judge(grid.grid(), planes.labels(), pairs, planes.list(), curved, planarity,
                          MergeCriterion(params, tolerances), tolerances, group);
   }
