@@ -215,15 +215,6 @@ bool PlanarityTest::curved(std::uint32_t k, const Tolerances& tolerances) const 
   return bends(s, fitQuadric(s), fits_[k - 1], tolerances);
 }
 
-bool PlanarityTest::unionBends(std::uint32_t k, std::uint32_t l, const PlaneFit& joint,
-                               const Tolerances& tolerances) const {
-  if (!judgeable(k) || !judgeable(l)) return false;
-  const Frame frame = frameOf(joint);
-  Sums both = sumsIn(k, frame);
-  both += sumsIn(l, frame);
-  return bends(both, fitQuadric(both), joint, tolerances);
-}
-
 double PlanarityTest::unionCurvature(std::uint32_t k, std::uint32_t l, const PlaneFit& joint) const {
   const Frame frame = frameOf(joint);
   Sums both = sumsIn(k, frame);
@@ -231,8 +222,9 @@ double PlanarityTest::unionCurvature(std::uint32_t k, std::uint32_t l, const Pla
   return fitQuadric(both).curvature;
 }
 
-bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint,
-                               const Tolerances& tolerances) const {
+bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances,
+                               bool* union_bends) const {
+  if (union_bends) *union_bends = false;
   if (!judgeable(k) || !judgeable(l)) return false;
   const Frame frame = frameOf(joint);
   const Sums first = sumsIn(k, frame), second = sumsIn(l, frame);
@@ -240,6 +232,7 @@ bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit&
   both += second;
   const Quadric q = fitQuadric(both);
   if (!bends(both, q, joint, tolerances)) return false;
+  if (union_bends) *union_bends = true;
   // Residuals along one direction, the union's normal, on both sides: measured across each
   // facet's own plane they would be smaller by the cosine of its tilt for the noise alone.
   return q.residual < fitQuadric(first).plane_residual + fitQuadric(second).plane_residual;

@@ -21,8 +21,8 @@ double shorterSide(const PlaneFit& fit) { return std::sqrt(12.0 * std::max(0.0, 
 }  // namespace
 
 bool BendMerging::judge(const PointGrid& grid, const CurrentLabels& labels, const FacetPairs& pairs,
-                        const std::vector<PlaneCandidate>& planes, const std::vector<bool>& curved,
-                        const PlanarityTest& test, const MergeCriterion& criterion, const Tolerances& tolerances,
+                        const std::vector<bool>& union_bends, const std::vector<PlaneCandidate>& planes,
+                        const std::vector<bool>& curved, const PlanarityTest& test, const MergeCriterion& criterion,
                         std::vector<std::uint32_t>& group) {
   const std::size_t count = planes.size();
   group.resize(count + 1);
@@ -58,18 +58,17 @@ bool BendMerging::judge(const PointGrid& grid, const CurrentLabels& labels, cons
     if ((curved[k] || curved[l]) && !(shorterSide(curved[k] ? fit_l : fit_k) > 1.0 / PlanarityTest::kSmallestCurvature))
       continue;
     // The union is no curved surface.
-    PlaneSums joint = planes[k - 1].sums;
-    joint.merge(planes[l - 1].sums);
-    const PlaneFit fit = joint.fit();
-    if (!fit.valid || test.unionBends(k, l, fit, tolerances)) continue;
-    if ((curved[k] || curved[l]) && !(test.unionCurvature(k, l, fit) < PlanarityTest::kSmallestCurvature)) continue;
-    // No step across the border (the pixel pairs across it, i on k, j on l), along the two
-    // planes' mean normal.
+    if (union_bends[pair]) continue;
+    if (curved[k] || curved[l]) {
+      PlaneSums joint = planes[k - 1].sums;
+      joint.merge(planes[l - 1].sums);
+      const PlaneFit fit = joint.fit();
+      if (!fit.valid || !(test.unionCurvature(k, l, fit) < PlanarityTest::kSmallestCurvature)) continue;
+    }
+    // The pixel pairs across the border (i on k, j on l), for the step below.
     SegmentBorder border;
     pairs.forEachPixelPair(
         pair, [&](std::size_t i, std::size_t j) { border.add(Vec3::load(grid.point(i)), Vec3::load(grid.point(j))); });
-    double step = 0.0;
-    if (!criterion.withoutStep((fit_k.normal + fit_l.normal).normalized(), border, step)) continue;
     // The bands along the border pass Eq. 9: walked from about kBandRows of its pixel pairs,
     // evenly spread along it (a long border's bands need no more to show their planes).
     PlaneSums low, high;
@@ -85,6 +84,11 @@ bool BendMerging::judge(const PointGrid& grid, const CurrentLabels& labels, cons
     if (low.count < kSmallestBand || high.count < kSmallestBand) continue;
     double cost = 0.0;
     if (!criterion.mergeable(low, low.fit(), high, high.fit(), cost)) continue;
+    // ... and the border shows no step along their normal.
+    PlaneSums bands = low;
+    bands.merge(high);
+    double step = 0.0;
+    if (!criterion.withoutStep(bands.fit().normal, border, step)) continue;
     sets_.unite(static_cast<std::int32_t>(k), static_cast<std::int32_t>(l));
     any = true;
   }

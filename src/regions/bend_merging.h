@@ -25,14 +25,14 @@ namespace floodplane {
 /// A plane ends at a crease, a step or a gap. Two touching planes (FacetPairs) are held to
 /// Eq. 9 where they meet instead: on the bands of each along their shared border, kBandPixels
 /// wide (a seed patch's side, the smallest patch the method fits a plane to). A warped
-/// surface is flat where its two pieces meet: the border between them shows no step along
-/// the planes' mean normal (MergeCriterion::withoutStep, as for a bend in the flood's merge)
-/// and the bands pass Eq. 9 together; at a crease the bands meet at the crease's angle, at a
-/// step (a board on a wall) the points across the border lie apart along the normal. Such a
-/// pair merges when their union is no curved surface as the planarity test judges it (the
-/// facets of a curved thing also meet without a crease: they are curved together instead,
-/// PlanarityTest::curvedPair). A long border's bands are walked from about 64 of its pixel
-/// pairs, evenly spread.
+/// surface is flat where its two pieces meet: the bands pass Eq. 9 together and the border
+/// between them (every pixel pair across it) shows no step along their normal
+/// (MergeCriterion::withoutStep, as for a bend in the flood's merge); at a crease the bands
+/// meet at the crease's angle, at a step (a board on a wall) the points across the border
+/// lie apart along the normal. Such a pair merges when their union is no curved surface as
+/// the planarity test judges it (the facets of a curved thing also meet without a crease:
+/// they are curved together instead, PlanarityTest::curvedPair). A long border's bands are
+/// walked from about 64 of its pixel pairs, evenly spread.
 ///
 /// The warp can bend a corner tighter than the curved things of a room (a radius under half
 /// a metre over a few centimetres): the planarity test then judges the corner curved alone.
@@ -46,12 +46,14 @@ class BendMerging {
 
   /// Merge groups of the planes 1..planes.size() of the label image `labels` over the points
   /// `grid`: group[k] is a plane number shared by k's group (k itself when k merges with
-  /// none). `pairs` are the touching pairs and their borders, `curved` the planes judged curved
+  /// none). `pairs` are the touching pairs and their borders, `union_bends` per pair whether
+  /// their union bends (PlanarityTest::curvedPair), `curved` the planes judged curved
   /// alone (see above), `test` the planarity test's sums of every plane, `criterion` Eq. 9.
   /// Returns whether any merged.
   bool judge(const PointGrid& grid, const CurrentLabels& labels, const FacetPairs& pairs,
-             const std::vector<PlaneCandidate>& planes, const std::vector<bool>& curved, const PlanarityTest& test,
-             const MergeCriterion& criterion, const Tolerances& tolerances, std::vector<std::uint32_t>& group);
+             const std::vector<bool>& union_bends, const std::vector<PlaneCandidate>& planes,
+             const std::vector<bool>& curved, const PlanarityTest& test, const MergeCriterion& criterion,
+             std::vector<std::uint32_t>& group);
 
  private:
   UnionFind sets_;

@@ -64,6 +64,7 @@ class RegionBuilder {
   PlanarityTest planarity_;
   std::vector<PlaneFit> fits_;
   std::vector<bool> curved_, judgeable_;
+  std::vector<bool> union_bends_;       // per facet pair: its union bends (PlanarityTest::curvedPair)
   std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
   FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;

@@ -70,9 +70,17 @@ struct Wall {
   bool judge(std::vector<std::uint32_t>& group, const std::vector<bool>& curved = {false, false, false}) {
     FacetPairs pairs;
     pairs.find(grid.grid(), planes.labels(), planes.list(), fits, {false, true, true});
+    std::vector<bool> union_bends;
+    for (const auto& [k, l] : pairs.pairs()) {
+      PlaneSums joint = planes.list()[k - 1].sums;
+      joint.merge(planes.list()[l - 1].sums);
+      bool bends = false;
+      planarity.curvedPair(k, l, joint.fit(), tolerances, &bends);
+      union_bends.push_back(bends);
+    }
     BendMerging merging;
-    return merging.judge(grid.grid(), planes.labels(), pairs, planes.list(), curved, planarity,
-                         MergeCriterion(params, tolerances), tolerances, group);
+    return merging.judge(grid.grid(), planes.labels(), pairs, union_bends, planes.list(), curved, planarity,
+                         MergeCriterion(params, tolerances), group);
   }
 };
 
