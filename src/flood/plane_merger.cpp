@@ -56,17 +56,22 @@ bool MergeCriterion::mergeable(const PlaneSums& a, const PlaneFit& fit_a, const 
 
 bool MergeCriterion::continuous(const PlaneFit& fit_a, const PlaneFit& fit_b, const SegmentBorder& border,
                                 double& cost) const {
-  if (!fit_a.valid || !fit_b.valid || border.count < kMinBorderPairs) return false;
+  if (!fit_a.valid || !fit_b.valid) return false;
   if (!(fit_a.normal.dot(fit_b.normal) >= std::cos(0.5 * angle_))) return false;
-  const Eigen::Vector3d normal = (fit_a.normal + fit_b.normal).normalized();
+  double step = 0.0;
+  if (!withoutStep((fit_a.normal + fit_b.normal).normalized(), border, step)) return false;
+  cost = 1.0 + step;
+  return true;
+}
+
+bool MergeCriterion::withoutStep(const Eigen::Vector3d& normal, const SegmentBorder& border, double& step) const {
+  if (border.count < kMinBorderPairs) return false;
   const double range = border.meanPoint().norm();
   const double tolerance =
       noiseDeviations(tolerances_.noise(), kDifferenceDeviations, range * range) / std::sqrt(border.count) +
       tolerances_.planeFloor(range);
-  const double step = std::abs(normal.dot(border.meanStep()));
-  if (!(step < tolerance)) return false;
-  cost = 1.0 + step / tolerance;
-  return true;
+  step = std::abs(normal.dot(border.meanStep())) / tolerance;
+  return step < 1.0;
 }
 
 void PlaneMerger::reset(std::size_t segment_count) {

@@ -42,6 +42,9 @@ class MergeCriterion {
   /// centroids leave each other's planes and whose union fits one plane loosely; a crease
   /// shows in the normals. `cost` is above every Eq. 9 cost, so tight merges come first.
   bool continuous(const PlaneFit& fit_a, const PlaneFit& fit_b, const SegmentBorder& border, double& cost) const;
+  /// continuous()'s test of the step: whether the mean difference across `border` along
+  /// `normal` lies within what the noise explains; `step` is it over that tolerance.
+  bool withoutStep(const Eigen::Vector3d& normal, const SegmentBorder& border, double& step) const;
 
  private:
   double angle_;

@@ -14,7 +14,10 @@ template <class Labels>
 void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::vector<PlaneCandidate>& planes,
                       const std::vector<PlaneFit>& fits, const std::vector<bool>& eligible) {
   touching_.clear();
+  pixel_pairs_.clear();
   pairs_.clear();
+  runs_.clear();
+  pair_runs_.clear();
   const std::size_t count = fits.size();
   const double cos_maximum = std::cos(kMaximumAngle);
   const auto close = [&](std::uint32_t k, std::uint32_t l) {
@@ -38,10 +41,15 @@ void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::ve
   const auto touch = [&](std::size_t i, std::size_t j) {
     const std::uint32_t k = labels[i], l = labels[j];
     if (k == l || k == 0 || l == 0 || !candidate_[k] || !candidate_[l] || !close(k, l)) return;
+    const std::uint64_t key = borderKey(static_cast<std::int32_t>(k), static_cast<std::int32_t>(l));
+    if (!runs_.empty() && runs_.back().key == key)
+      ++runs_.back().count;
+    else
+      runs_.push_back({key, static_cast<std::uint32_t>(pixel_pairs_.size()), 1});
+    pixel_pairs_.emplace_back(static_cast<std::uint32_t>(k < l ? i : j), static_cast<std::uint32_t>(k < l ? j : i));
     const Vec3 p = Vec3::load(grid.point(i)), q = Vec3::load(grid.point(j));
     if (!(squaredEuclideanDistance(p, q) < planes[k - 1].criterion.euclideanToleranceSq(noiseRangeSq(p, q)))) return;
     // Consecutive pixel pairs of one border are counted in one entry: the list stays short.
-    const std::uint64_t key = borderKey(static_cast<std::int32_t>(k), static_cast<std::int32_t>(l));
     if (!touching_.empty() && touching_.back().key == key)
       ++touching_.back().count;
     else
@@ -49,13 +57,20 @@ void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::ve
   };
   forEachLabelBorder(grid, labels.image, touch);
   std::sort(touching_.begin(), touching_.end(), [](const Touch& a, const Touch& b) { return a.key < b.key; });
+  // The runs of pixel pairs by border, each border's in the scan's order.
+  std::stable_sort(runs_.begin(), runs_.end(), [](const Run& a, const Run& b) { return a.key < b.key; });
   for (std::size_t i = 0; i < touching_.size();) {
     std::size_t j = i;
     std::uint32_t border = 0;
     for (; j < touching_.size() && touching_[j].key == touching_[i].key; ++j) border += touching_[j].count;
-    if (border >= kMinimumBorder)
+    if (border >= kMinimumBorder) {
       pairs_.emplace_back(static_cast<std::uint32_t>(touching_[i].key >> 32),
                           static_cast<std::uint32_t>(touching_[i].key & 0xffffffffu));
+      const auto range = std::equal_range(runs_.begin(), runs_.end(), Run{touching_[i].key, 0, 0},
+                                          [](const Run& a, const Run& b) { return a.key < b.key; });
+      pair_runs_.emplace_back(static_cast<std::size_t>(range.first - runs_.begin()),
+                              static_cast<std::size_t>(range.second - runs_.begin()));
+    }
     i = j;
   }
 }

@@ -48,13 +48,30 @@ class FacetPairs {
   void find(const PointGrid& grid, const Labels& labels, const std::vector<PlaneCandidate>& planes,
             const std::vector<PlaneFit>& fits, const std::vector<bool>& eligible);
   const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs() const { return pairs_; }
+  /// Calls visit(i, j) for each pair of 4-neighbouring pixels along pairs()[pair]'s border
+  /// (i on its first plane, j on its second), 3-D neighbours or not (a step shows there), in
+  /// the scan's order.
+  template <class Visit>
+  void forEachPixelPair(std::size_t pair, Visit&& visit) const {
+    for (std::size_t r = pair_runs_[pair].first; r < pair_runs_[pair].second; ++r)
+      for (std::uint32_t p = runs_[r].first; p < runs_[r].first + runs_[r].count; ++p)
+        visit(static_cast<std::size_t>(pixel_pairs_[p].first), static_cast<std::size_t>(pixel_pairs_[p].second));
+  }
 
  private:
   struct Touch {
     std::uint64_t key;    // low << 32 | high
     std::uint32_t count;  // neighbouring pixel pairs
   };
-  std::vector<Touch> touching_;  // per stretch of one border in the scan
+  struct Run {
+    std::uint64_t key;    // as Touch
+    std::uint32_t first;  // its first pixel pair in pixel_pairs_
+    std::uint32_t count;  // its pixel pairs, 3-D neighbours or not
+  };
+  std::vector<Touch> touching_;  // per stretch of one border in the scan, 3-D neighbours
+  std::vector<Run> runs_;        // per stretch of one border in the scan
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pixel_pairs_;  // (low plane's pixel, high one's)
+  std::vector<std::pair<std::size_t, std::size_t>> pair_runs_;        // per pair: its range of runs_
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
   std::vector<std::uint8_t> candidate_;  // per plane: in a pair of planes that may be facets
 };

@@ -21,11 +21,11 @@ constexpr double kSmallestSample = 24.0;
 // The quadratic's three extra terms explain chi^2_3 noise variances on a true plane (mean 3);
 // a bend must explain this many.
 constexpr double kSignificance = 30.0;
-// ... and bend the surface with a radius below half a metre (the curved things in rooms:
-// people, balls, bins, pipes, columns). A depth camera's calibration bends real walls and
-// tables too, by half a millimetre over a metre at 1 m (a radius of 100 m and more), and at
-// close range that bend is significant; a small plane's noise fakes radii of a metre.
-constexpr double kSmallestCurvature = 2.0;  // 1/m
+// ... and bend the surface with a radius below half a metre (PlanarityTest::kSmallestCurvature:
+// the curved things in rooms: people, balls, bins, pipes, columns). A depth camera's
+// calibration bends real walls and tables too, by half a millimetre over a metre at 1 m (a
+// radius of 100 m and more), and at close range that bend is significant; a small plane's
+// noise fakes radii of a metre.
 // Noise across a surface never below this share of a pixel footprint (exact data: float
 // round-off).
 constexpr double kFootprintFloor = 0.02;
@@ -215,8 +215,16 @@ bool PlanarityTest::curved(std::uint32_t k, const Tolerances& tolerances) const 
   return bends(s, fitQuadric(s), fits_[k - 1], tolerances);
 }
 
-bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint,
-                               const Tolerances& tolerances) const {
+double PlanarityTest::unionCurvature(std::uint32_t k, std::uint32_t l, const PlaneFit& joint) const {
+  const Frame frame = frameOf(joint);
+  Sums both = sumsIn(k, frame);
+  both += sumsIn(l, frame);
+  return fitQuadric(both).curvature;
+}
+
+bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances,
+                               bool* union_bends) const {
+  if (union_bends) *union_bends = false;
   if (!judgeable(k) || !judgeable(l)) return false;
   const Frame frame = frameOf(joint);
   const Sums first = sumsIn(k, frame), second = sumsIn(l, frame);
@@ -224,6 +232,7 @@ bool PlanarityTest::curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit&
   both += second;
   const Quadric q = fitQuadric(both);
   if (!bends(both, q, joint, tolerances)) return false;
+  if (union_bends) *union_bends = true;
   // Residuals along one direction, the union's normal, on both sides: measured across each
   // facet's own plane they would be smaller by the cosine of its tilt for the noise alone.
   return q.residual < fitQuadric(first).plane_residual + fitQuadric(second).plane_residual;

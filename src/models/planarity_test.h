@@ -46,7 +46,15 @@ class PlanarityTest {
   /// explains it better than k and l each by a plane of its own (residual sums of squares
   /// along the union's normal, six parameters either way), where at a crease the two planes
   /// fit better.
-  bool curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances) const;
+  /// `union_bends`, if given, is set to whether their union bends as curved() judges a plane
+  /// (false when either is too small to judge: nothing is known against the union).
+  bool curvedPair(std::uint32_t k, std::uint32_t l, const PlaneFit& joint, const Tolerances& tolerances,
+                  bool* union_bends = nullptr) const;
+  /// The larger principal curvature of the union of planes k and l [1/m] (see curvature()).
+  double unionCurvature(std::uint32_t k, std::uint32_t l, const PlaneFit& joint) const;
+  /// The curvature below which a surface is no curved thing of a room, however significant
+  /// its bend (a radius of half a metre).
+  static constexpr double kSmallestCurvature = 2.0;  // 1/m
 
   /// The number of monomials x^a y^b z^c with a + b + c <= 4.
   static constexpr int kMonomials = 35;

@@ -193,11 +193,30 @@ void RegionBuilder::dropCurvedPlanes(const PreparedFrame& frame) {
   judgeable_.assign(list.size() + 1, false);
   for (std::uint32_t k = 1; k <= list.size(); ++k) judgeable_[k] = planarity_.judgeable(k);
   facet_pairs_.find(frame.grid, labels, list, fits_, judgeable_);
-  for (const auto& [k, l] : facet_pairs_.pairs()) {
+  // (Whether each pair's union bends is kept for bend merging below.)
+  union_bends_.assign(facet_pairs_.pairs().size(), false);
+  for (std::size_t pair = 0; pair < facet_pairs_.pairs().size(); ++pair) {
+    const std::uint32_t k = facet_pairs_.pairs()[pair].first, l = facet_pairs_.pairs()[pair].second;
     if (curved_[k] && curved_[l]) continue;
     PlaneSums joint = list[k - 1].sums;
     joint.merge(list[l - 1].sums);
-    if (planarity_.curvedPair(k, l, joint.fit(), tolerances)) curved_[k] = curved_[l] = true;
+    bool bends = false;
+    if (planarity_.curvedPair(k, l, joint.fit(), tolerances, &bends)) curved_[k] = curved_[l] = true;
+    union_bends_[pair] = bends;
+  }
+  // Touching flat planes that meet without a crease or a step: one plane the sensor bent.
+  const std::uint32_t count = static_cast<std::uint32_t>(list.size());
+  if (bend_merging_.judge(frame.grid, labels, facet_pairs_, union_bends_, list, curved_, planarity_,
+                          MergeCriterion(params_, tolerances), group_)) {
+    candidates_.regroup(group_);
+    // A merged plane passed the planarity test as a union; a plane that merged with none
+    // keeps its verdict.
+    members_.assign(candidates_.list().size() + 1, 0);
+    for (std::uint32_t k = 1; k <= count; ++k) ++members_[candidates_.remap(k)];
+    std::vector<bool> curved(candidates_.list().size() + 1, false);
+    for (std::uint32_t k = 1; k <= count; ++k)
+      if (members_[candidates_.remap(k)] == 1) curved[candidates_.remap(k)] = curved_[k];
+    curved_.swap(curved);
   }
   candidates_.drop(curved_);
 }

@@ -19,6 +19,7 @@
 #include "models/plane_candidates.h"
 #include "models/plane_sums.h"
 #include "models/tolerances.h"
+#include "regions/bend_merging.h"
 #include "regions/occlusion_merging.h"
 
 namespace floodplane {
@@ -63,9 +64,13 @@ class RegionBuilder {
   PlanarityTest planarity_;
   std::vector<PlaneFit> fits_;
   std::vector<bool> curved_, judgeable_;
+  std::vector<bool> union_bends_;       // per facet pair: its union bends (PlanarityTest::curvedPair)
   std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
   FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;
+  BendMerging bend_merging_;
+  std::vector<std::uint32_t> group_;    // bend_merging_'s
+  std::vector<std::uint32_t> members_;  // per plane after bend merging: the planes it joined
 };
 
 }  // namespace floodplane

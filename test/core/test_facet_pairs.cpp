@@ -71,6 +71,19 @@ TEST(FacetPairs, PairsTwoPlanesThatMeetWithoutAStepAtAShallowAngle) {
   EXPECT_EQ(scene.find(), (Pairs{{1, 2}}));
 }
 
+TEST(FacetPairs, VisitsThePixelPairsOfEachBorder) {
+  // One pixel pair a row across the split at column 20: (19, v) on plane 1, (20, v) on plane 2.
+  TwoPlanes scene(20.0, 0.0);
+  ASSERT_EQ(scene.find(), (Pairs{{1, 2}}));
+  std::vector<std::pair<std::size_t, std::size_t>> visited;
+  scene.pairs.forEachPixelPair(0, [&](std::size_t i, std::size_t j) { visited.emplace_back(i, j); });
+  ASSERT_EQ(visited.size(), static_cast<std::size_t>(kHeight));
+  for (int v = 0; v < kHeight; ++v) {
+    const std::size_t i = static_cast<std::size_t>(v * kWidth + 19);
+    EXPECT_EQ(visited[static_cast<std::size_t>(v)], std::make_pair(i, i + 1));
+  }
+}
+
 TEST(FacetPairs, DoesNotPairPlanesThatTouchOnlyInTheImage) {
   // Plane 2 half a metre behind plane 1: their border pixels are no 3-D neighbours.
   TwoPlanes scene(20.0, 0.5);
