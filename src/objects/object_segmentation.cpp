@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "models/depth_noise.h"
 #include "objects/convex_joining.h"
@@ -49,13 +51,21 @@ void checkOptions(const ObjectOptions& options) {
 }
 
 // The object points: finite, on no support, and above every support by the clearance and
-// three noise deviations at their range.
+// three noise deviations at their range. Each one's lowest height above a support and that
+// support's label (the first of the lowest) are kept for the objects' records: every support
+// was measured for it here.
 void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const Supports& supports,
-                      const ObjectOptions& options, ObjectPoints& points) {
+                      const ObjectOptions& options, ObjectPoints& points, std::vector<double>& lowest_height,
+                      std::vector<std::uint32_t>& lowest_support) {
   points.clear();
+  lowest_height.clear();
+  lowest_support.clear();
+  // Bytes, not std::vector<bool>'s bits: one load per pixel.
+  const std::vector<std::uint8_t> on_support(supports.is_support.begin(), supports.is_support.end());
+  const std::size_t labels = on_support.size();
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const std::uint32_t label = planes.labels[i];
-    if (label < supports.is_support.size() && supports.is_support[label]) continue;
+    if (label < labels && on_support[label] != 0) continue;
     if (!grid.isFinite(i)) continue;
     const float* p = grid.point(i);
     const Eigen::Vector3d point(p[0], p[1], p[2]);
@@ -64,18 +74,39 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
     const double clearance = options.support_clearance_m + noiseDeviations(planes.noise, kPointDeviations, range_sq) +
                              planes.noise.step_constant + planes.noise.step_quadratic * range_sq;
     bool above = true;
+    double lowest = std::numeric_limits<double>::infinity();
+    std::uint32_t support = 0;
     for (const SupportSurface& surface : supports.surfaces) {
-      if (surface.height(point) <= clearance) {
+      const double height = surface.height(point);
+      if (height <= clearance) {
         above = false;
         break;
+      }
+      if (height < lowest) {
+        lowest = height;
+        support = surface.label;
       }
     }
     if (above) {
       points.pixels.push_back(i);
       points.ranges.push_back(static_cast<float>(std::sqrt(range_sq)));
+      lowest_height.push_back(lowest);
+      lowest_support.push_back(support);
     }
   }
 }
+
+// The buffers of one thread's calls, kept between them: the object points and patches follow
+// the frame's size, and fresh memory for them on every frame (the kernel zeroing its pages)
+// cost about as much as the work in it.
+struct ObjectWorkspace {
+  ObjectPoints points;
+  std::vector<double> point_lowest;
+  std::vector<std::uint32_t> point_support;
+  UnionFind union_find;
+  SurfacePatches patches;
+  SurfaceWorkspace surfaces;
+};
 
 }  // namespace
 
@@ -94,16 +125,20 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
 
   const Supports supports = findSupports(planes.planes, options);
   for (const SupportSurface& surface : supports.surfaces) result.supports.push_back(surface.label);
-  ObjectPoints points;
-  findObjectPoints(grid, planes, supports, options, points);
+  thread_local ObjectWorkspace work;
+  ObjectPoints& points = work.points;
+  std::vector<double>& point_lowest = work.point_lowest;
+  std::vector<std::uint32_t>& point_support = work.point_support;
+  findObjectPoints(grid, planes, supports, options, points, point_lowest, point_support);
 
   SurfaceStep step;
   step.noise = planes.noise;
   step.pitch = angularPitch(grid);
   step.footprints = options.max_step_footprints;
-  UnionFind union_find;
-  SurfacePatches patches;
-  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, union_find, patches);
+  UnionFind& union_find = work.union_find;
+  SurfacePatches& patches = work.patches;
+  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, union_find, patches,
+                      work.surfaces);
   joinConvexPatches(patches, options.concavity_tolerance_rad, union_find);
   absorbFragments(patches, options.min_object_pixels, union_find);
 
@@ -152,13 +187,11 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
     object.centroid += point;
     object.min = object.min.cwiseMin(point);
     object.max = object.max.cwiseMax(point);
-    // The support it stands on: the one nearest below its lowest point.
-    for (const SupportSurface& surface : supports.surfaces) {
-      const double height = surface.height(point);
-      if (height < lowest[id - 1]) {
-        lowest[id - 1] = height;
-        support_of[id - 1] = surface.label;
-      }
+    // The support it stands on: the one nearest below its lowest point (the first point and
+    // then the first support of the lowest, as findObjectPoints measured them).
+    if (point_lowest[k] < lowest[id - 1]) {
+      lowest[id - 1] = point_lowest[k];
+      support_of[id - 1] = point_support[k];
     }
   }
   for (std::size_t k = 0; k < result.objects.size(); ++k) {

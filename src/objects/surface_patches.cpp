@@ -50,6 +50,13 @@ double angularPitch(const PointGrid& grid) {
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
                          const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
                          SurfacePatches& out) {
+  SurfaceWorkspace work;
+  buildSurfacePatches(grid, plane_labels, points, step, side, union_find, out, work);
+}
+
+void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
+                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
+                         SurfacePatches& out, SurfaceWorkspace& work) {
   const int width = grid.width;
   const int height = grid.height;
   side = std::max(side, 1);
@@ -57,12 +64,15 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   // memory follow the object points, not the frame.
   const std::vector<std::size_t>& pixel_of = points.pixels;
   const std::size_t count = pixel_of.size();
-  std::vector<float> tolerance_of(count);
+  std::vector<float>& tolerance_of = work.tolerance_of;
+  tolerance_of.resize(count);
   for (std::size_t k = 0; k < count; ++k) tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
   union_find.reset(count);
   // The numbers of the right and lower neighbours each point is on one surface with (-1: none).
-  std::vector<std::int32_t> right_of(count, -1);
-  std::vector<std::int32_t> below_of(count, -1);
+  std::vector<std::int32_t>& right_of = work.right_of;
+  std::vector<std::int32_t>& below_of = work.below_of;
+  right_of.assign(count, -1);
+  below_of.assign(count, -1);
   // Neighbours on one surface: within the tolerance at the nearer one's range (the tolerance
   // grows with the range).
   auto onOneSurface = [&](std::size_t a, std::size_t b) {
@@ -114,10 +124,14 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   }
   // Number the patches in raster order of their first pixel and sum their points.
   out.patches.clear();
-  std::vector<std::int32_t> patch_of(count, -1);
-  std::vector<std::int32_t> index_of_root(count, -1);
-  std::vector<Eigen::Vector3d> sums;
-  std::vector<Eigen::Matrix3d> squares;
+  std::vector<std::int32_t>& patch_of = out.patch_of_point;
+  std::vector<std::int32_t>& index_of_root = work.index_of_root;
+  patch_of.assign(count, -1);
+  index_of_root.assign(count, -1);
+  std::vector<Eigen::Vector3d>& sums = work.sums;
+  std::vector<Eigen::Matrix3d>& squares = work.squares;
+  sums.clear();
+  squares.clear();
   // A run of pixels of one patch (up to a square's side along a row) is summed in registers and
   // added to the patch's sums once.
   std::int32_t run = -1;
@@ -172,7 +186,6 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   flush();
   for (Eigen::Matrix3d& m : squares)
     m.triangularView<Eigen::StrictlyLower>() = m.transpose().triangularView<Eigen::StrictlyLower>();
-  out.patch_of_point = std::move(patch_of);
   // The normal of a patch on no plane is its own; a plane's patches share the plane's (the
   // fit over all of them, steadier than a square's).
   // A patch on no plane must be at least a pixel footprint wide across (the spread of its
@@ -221,8 +234,10 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   std::size_t slots = 64;
   while (slots < 8 * out.patches.size()) slots *= 2;
   constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
-  std::vector<std::uint64_t> table_keys(slots, kEmpty);
-  std::vector<std::uint32_t> table_pairs(slots, 0);
+  std::vector<std::uint64_t>& table_keys = work.table_keys;
+  std::vector<std::uint32_t>& table_pairs = work.table_pairs;
+  table_keys.assign(slots, kEmpty);
+  table_pairs.assign(slots, 0);
   std::size_t used = 0;
   const auto addContact = [&](std::size_t a, std::size_t b) {
     std::int32_t pa = out.patch_of_point[a];
