@@ -51,15 +51,10 @@ void checkOptions(const ObjectOptions& options) {
 }
 
 // The object points: finite, on no support, and above every support by the clearance and
-// three noise deviations at their range. Each one's lowest height above a support and that
-// support's label (the first of the lowest) are kept for the objects' records: every support
-// was measured for it here.
+// three noise deviations at their range.
 void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const Supports& supports,
-                      const ObjectOptions& options, ObjectPoints& points, std::vector<double>& lowest_height,
-                      std::vector<std::uint32_t>& lowest_support) {
+                      const ObjectOptions& options, ObjectPoints& points) {
   points.clear();
-  lowest_height.clear();
-  lowest_support.clear();
   // Bytes, not std::vector<bool>'s bits: one load per pixel.
   const std::vector<std::uint8_t> on_support(supports.is_support.begin(), supports.is_support.end());
   const std::size_t labels = on_support.size();
@@ -74,24 +69,15 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
     const double clearance = options.support_clearance_m + noiseDeviations(planes.noise, kPointDeviations, range_sq) +
                              planes.noise.step_constant + planes.noise.step_quadratic * range_sq;
     bool above = true;
-    double lowest = std::numeric_limits<double>::infinity();
-    std::uint32_t support = 0;
     for (const SupportSurface& surface : supports.surfaces) {
-      const double height = surface.height(point);
-      if (height <= clearance) {
+      if (surface.height(point) <= clearance) {
         above = false;
         break;
-      }
-      if (height < lowest) {
-        lowest = height;
-        support = surface.label;
       }
     }
     if (above) {
       points.pixels.push_back(i);
       points.ranges.push_back(static_cast<float>(std::sqrt(range_sq)));
-      lowest_height.push_back(lowest);
-      lowest_support.push_back(support);
     }
   }
 }
@@ -101,8 +87,6 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
 // cost about as much as the work in it.
 struct ObjectWorkspace {
   ObjectPoints points;
-  std::vector<double> point_lowest;
-  std::vector<std::uint32_t> point_support;
   UnionFind union_find;
   SurfacePatches patches;
   SurfaceWorkspace surfaces;
@@ -127,9 +111,7 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   for (const SupportSurface& surface : supports.surfaces) result.supports.push_back(surface.label);
   thread_local ObjectWorkspace work;
   ObjectPoints& points = work.points;
-  std::vector<double>& point_lowest = work.point_lowest;
-  std::vector<std::uint32_t>& point_support = work.point_support;
-  findObjectPoints(grid, planes, supports, options, points, point_lowest, point_support);
+  findObjectPoints(grid, planes, supports, options, points);
 
   SurfaceStep step;
   step.noise = planes.noise;
@@ -187,11 +169,13 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
     object.centroid += point;
     object.min = object.min.cwiseMin(point);
     object.max = object.max.cwiseMax(point);
-    // The support it stands on: the one nearest below its lowest point (the first point and
-    // then the first support of the lowest, as findObjectPoints measured them).
-    if (point_lowest[k] < lowest[id - 1]) {
-      lowest[id - 1] = point_lowest[k];
-      support_of[id - 1] = point_support[k];
+    // The support it stands on: the one nearest below its lowest point.
+    for (const SupportSurface& surface : supports.surfaces) {
+      const double height = surface.height(point);
+      if (height < lowest[id - 1]) {
+        lowest[id - 1] = height;
+        support_of[id - 1] = surface.label;
+      }
     }
   }
   for (std::size_t k = 0; k < result.objects.size(); ++k) {

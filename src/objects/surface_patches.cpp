@@ -68,11 +68,11 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   tolerance_of.resize(count);
   for (std::size_t k = 0; k < count; ++k) tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
   union_find.reset(count);
-  // The numbers of the right and lower neighbours each point is on one surface with (-1: none).
+  // The numbers of the right and upper neighbours each point is on one surface with (-1: none).
   std::vector<std::int32_t>& right_of = work.right_of;
-  std::vector<std::int32_t>& below_of = work.below_of;
+  std::vector<std::int32_t>& above_of = work.above_of;
   right_of.assign(count, -1);
-  below_of.assign(count, -1);
+  above_of.assign(count, -1);
   // Neighbours on one surface: within the tolerance at the nearer one's range (the tolerance
   // grows with the range).
   auto onOneSurface = [&](std::size_t a, std::size_t b) {
@@ -116,7 +116,7 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     cursor = std::max(cursor, k);
     while (cursor < count && pixel_of[cursor] < below) ++cursor;
     if (cursor < count && pixel_of[cursor] == below && onOneSurface(k, cursor)) {
-      below_of[k] = static_cast<std::int32_t>(cursor);
+      above_of[cursor] = self;
       if (plane_labels[i] == plane_labels[below] && row_joins[static_cast<std::size_t>(row)]) {
         union_find.unite(self, static_cast<std::int32_t>(cursor));
       }
@@ -132,6 +132,13 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   std::vector<Eigen::Matrix3d>& squares = work.squares;
   sums.clear();
   squares.clear();
+  std::vector<std::uint64_t>& crossings = work.crossings;
+  crossings.clear();
+  // Two patches as one number, the lower first.
+  const auto pairKey = [](std::int32_t a, std::int32_t b) {
+    if (b < a) std::swap(a, b);
+    return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+  };
   // A run of pixels of one patch (up to a square's side along a row) is summed in registers and
   // added to the patch's sums once.
   std::int32_t run = -1;
@@ -166,6 +173,15 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
       squares.push_back(Eigen::Matrix3d::Zero());
     }
     patch_of[k] = index;
+    // The pixel pairs on one surface with the left and upper neighbours (numbered already)
+    // across two patches, for the contacts.
+    const auto self = static_cast<std::int32_t>(k);
+    if (k > 0 && right_of[k - 1] == self && patch_of[k - 1] != index)
+      crossings.push_back(pairKey(patch_of[k - 1], index));
+    const std::int32_t above = above_of[k];
+    if (above >= 0 && patch_of[static_cast<std::size_t>(above)] != index) {
+      crossings.push_back(pairKey(patch_of[static_cast<std::size_t>(above)], index));
+    }
     if (index != run) {
       flush();
       run = index;
@@ -228,7 +244,8 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     patch.centroid = sums[k] / static_cast<double>(patch.pixels);
     patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels, true);
   }
-  // The contacts: pixel pairs on one surface across two patches, counted per pair of patches
+  // The contacts: pixel pairs on one surface across two patches (the crossings, gathered while
+  // numbering the patches), counted per pair of patches
   // in an open-addressing table (a pair of squares meets along up to a side's pixels, so the
   // pairs are many and the contacts few), then sorted.
   std::size_t slots = 64;
@@ -239,12 +256,7 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   table_keys.assign(slots, kEmpty);
   table_pairs.assign(slots, 0);
   std::size_t used = 0;
-  const auto addContact = [&](std::size_t a, std::size_t b) {
-    std::int32_t pa = out.patch_of_point[a];
-    std::int32_t pb = out.patch_of_point[b];
-    if (pa == pb) return;
-    if (pb < pa) std::swap(pa, pb);
-    const std::uint64_t key = (static_cast<std::uint64_t>(pa) << 32) | static_cast<std::uint32_t>(pb);
+  const auto addContact = [&](std::uint64_t key) {
     std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & (slots - 1);
     while (table_keys[slot] != key && table_keys[slot] != kEmpty) slot = (slot + 1) & (slots - 1);
     if (table_keys[slot] == kEmpty) {
@@ -253,9 +265,8 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     }
     ++table_pairs[slot];
   };
-  for (std::size_t k = 0; k < count; ++k) {
-    if (below_of[k] >= 0) addContact(k, static_cast<std::size_t>(below_of[k]));
-    if (right_of[k] >= 0) addContact(k, static_cast<std::size_t>(right_of[k]));
+  for (const std::uint64_t key : crossings) {
+    addContact(key);
     // Keep the table at most half full (a frame whose patches touch more than usual).
     if (2 * used > slots) {
       std::vector<std::uint64_t> old_keys(2 * slots, kEmpty);

@@ -74,7 +74,8 @@ struct SurfacePatches {
 struct SurfaceWorkspace {
   std::vector<float> tolerance_of;
   std::vector<std::int32_t> right_of;
-  std::vector<std::int32_t> below_of;
+  std::vector<std::int32_t> above_of;
+  std::vector<std::uint64_t> crossings;
   std::vector<std::int32_t> index_of_root;
   std::vector<Eigen::Vector3d> sums;
   std::vector<Eigen::Matrix3d> squares;
