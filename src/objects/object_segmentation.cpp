@@ -119,8 +119,7 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   step.footprints = options.max_step_footprints;
   UnionFind& union_find = work.union_find;
   SurfacePatches& patches = work.patches;
-  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, union_find, patches,
-                      work.surfaces);
+  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, patches, work.surfaces);
   joinConvexPatches(patches, options.concavity_tolerance_rad, union_find);
   absorbFragments(patches, options.min_object_pixels, union_find);
 

@@ -48,15 +48,14 @@ double angularPitch(const PointGrid& grid) {
 }
 
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
-                         SurfacePatches& out) {
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out) {
   SurfaceWorkspace work;
-  buildSurfacePatches(grid, plane_labels, points, step, side, union_find, out, work);
+  buildSurfacePatches(grid, plane_labels, points, step, side, out, work);
 }
 
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
-                         SurfacePatches& out, SurfaceWorkspace& work) {
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out,
+                         SurfaceWorkspace& work) {
   const int width = grid.width;
   const int height = grid.height;
   side = std::max(side, 1);
@@ -67,7 +66,21 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   std::vector<float>& tolerance_of = work.tolerance_of;
   tolerance_of.resize(count);
   for (std::size_t k = 0; k < count; ++k) tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
-  union_find.reset(count);
+  // The patches are labelled in one raster pass (each point joins its left or upper neighbour
+  // in the patch, two sets meeting at a point are linked), in a forest whose every link points
+  // to a lower number: one pass in order then finds each point's root.
+  std::vector<std::int32_t>& parent = work.parent;
+  std::vector<std::int32_t>& up_in_patch = work.up_in_patch;
+  parent.resize(count);
+  up_in_patch.assign(count, -1);
+  const auto root = [&parent](std::int32_t x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+      parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      x = parent[static_cast<std::size_t>(x)];
+    }
+    return x;
+  };
+  bool left_in_patch = false;
   // The numbers of the right and upper neighbours each point is on one surface with (-1: none).
   std::vector<std::int32_t>& right_of = work.right_of;
   std::vector<std::int32_t>& above_of = work.above_of;
@@ -105,11 +118,22 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     }
     const int x = static_cast<int>(i - row_start);
     const auto self = static_cast<std::int32_t>(k);
+    const std::int32_t up = up_in_patch[k];
+    if (left_in_patch) {
+      parent[k] = self - 1;
+      if (up >= 0) {
+        const std::int32_t a = root(self - 1);
+        const std::int32_t b = root(up);
+        if (a < b) parent[static_cast<std::size_t>(b)] = a;
+        if (b < a) parent[static_cast<std::size_t>(a)] = b;
+      }
+    } else {
+      parent[k] = up >= 0 ? up : self;
+    }
+    left_in_patch = false;
     if (x + 1 < width && k + 1 < count && pixel_of[k + 1] == i + 1 && onOneSurface(k, k + 1)) {
       right_of[k] = self + 1;
-      if (plane_labels[i] == plane_labels[i + 1] && column_joins[static_cast<std::size_t>(x)]) {
-        union_find.unite(self, self + 1);
-      }
+      left_in_patch = plane_labels[i] == plane_labels[i + 1] && column_joins[static_cast<std::size_t>(x)];
     }
     const std::size_t below = i + static_cast<std::size_t>(width);
     if (row + 1 >= height) continue;
@@ -117,9 +141,8 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     while (cursor < count && pixel_of[cursor] < below) ++cursor;
     if (cursor < count && pixel_of[cursor] == below && onOneSurface(k, cursor)) {
       above_of[cursor] = self;
-      if (plane_labels[i] == plane_labels[below] && row_joins[static_cast<std::size_t>(row)]) {
-        union_find.unite(self, static_cast<std::int32_t>(cursor));
-      }
+      if (plane_labels[i] == plane_labels[below] && row_joins[static_cast<std::size_t>(row)])
+        up_in_patch[cursor] = self;
     }
   }
   // Number the patches in raster order of their first pixel and sum their points.
@@ -163,8 +186,10 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   };
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = pixel_of[k];
-    const std::int32_t root = union_find.find(static_cast<std::int32_t>(k));
-    std::int32_t& index = index_of_root[static_cast<std::size_t>(root)];
+    // Its parent, lower, has its root as its parent already.
+    std::int32_t& link = parent[k];
+    link = parent[static_cast<std::size_t>(link)];
+    std::int32_t& index = index_of_root[static_cast<std::size_t>(link)];
     if (index < 0) {
       index = static_cast<std::int32_t>(out.patches.size());
       out.patches.emplace_back();

@@ -73,6 +73,8 @@ struct SurfacePatches {
 /// first touches no fresh memory (their sizes follow the object points).
 struct SurfaceWorkspace {
   std::vector<float> tolerance_of;
+  std::vector<std::int32_t> parent;
+  std::vector<std::int32_t> up_in_patch;
   std::vector<std::int32_t> right_of;
   std::vector<std::int32_t> above_of;
   std::vector<std::uint64_t> crossings;
@@ -84,14 +86,13 @@ struct SurfaceWorkspace {
 };
 
 /// Builds the patches of `points`; `plane_labels` is the segmentation's label image (0: no
-/// plane). `union_find` is a workspace. Costs a pass over the object points and one to mark
+/// plane). Costs a pass over the object points and one to mark
 /// them in the frame's grid.
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
-                         SurfacePatches& out);
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out);
 /// The same in `work`'s buffers.
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
-                         SurfacePatches& out, SurfaceWorkspace& work);
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out,
+                         SurfaceWorkspace& work);
 
 }  // namespace floodplane

@@ -418,20 +418,19 @@ TEST(SurfacePatches, PlanesAndSquaresWithTheirContacts) {
   step.noise.sigma_constant = 0.001;
   step.pitch = angularPitch(flat.grid());
   EXPECT_NEAR(step.pitch, 1.0 / test::kPinholeFocal, 1e-4);
-  UnionFind union_find;
   SurfacePatches patches;
-  buildSurfacePatches(flat.grid(), labels, candidate, step, 8, union_find, patches);
+  buildSurfacePatches(flat.grid(), labels, candidate, step, 8, patches);
   ASSERT_EQ(patches.patches.size(), 2u);
   ASSERT_EQ(patches.contacts.size(), 1u);
   EXPECT_EQ(patches.contacts[0].pairs, 8u);
   EXPECT_NEAR(patches.patches[0].normal.z(), -1.0, 1e-6);
   PinholeGrid stepped(16, 8, [](int u, int) { return u >= 8 ? 1.1 : 1.0; });
-  buildSurfacePatches(stepped.grid(), labels, candidate, step, 8, union_find, patches);
+  buildSurfacePatches(stepped.grid(), labels, candidate, step, 8, patches);
   EXPECT_EQ(patches.patches.size(), 2u);
   EXPECT_TRUE(patches.contacts.empty());
   // A plane over both squares: still a patch per square, each with the plane's normal.
   std::vector<std::uint32_t> one_plane(16 * 8, 4);
-  buildSurfacePatches(flat.grid(), one_plane, candidate, step, 8, union_find, patches);
+  buildSurfacePatches(flat.grid(), one_plane, candidate, step, 8, patches);
   ASSERT_EQ(patches.patches.size(), 2u);
   EXPECT_EQ(patches.patches[0].plane, 4u);
   EXPECT_EQ(patches.patches[1].pixels, 64u);
