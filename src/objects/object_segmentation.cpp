@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "models/depth_noise.h"
 #include "objects/convex_joining.h"
@@ -53,9 +55,12 @@ void checkOptions(const ObjectOptions& options) {
 void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const Supports& supports,
                       const ObjectOptions& options, ObjectPoints& points) {
   points.clear();
+  // Bytes, not std::vector<bool>'s bits: one load per pixel.
+  const std::vector<std::uint8_t> on_support(supports.is_support.begin(), supports.is_support.end());
+  const std::size_t labels = on_support.size();
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const std::uint32_t label = planes.labels[i];
-    if (label < supports.is_support.size() && supports.is_support[label]) continue;
+    if (label < labels && on_support[label] != 0) continue;
     if (!grid.isFinite(i)) continue;
     const float* p = grid.point(i);
     const Eigen::Vector3d point(p[0], p[1], p[2]);
@@ -77,6 +82,16 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
   }
 }
 
+// The buffers of one thread's calls, kept between them: the object points and patches follow
+// the frame's size, and fresh memory for them on every frame (the kernel zeroing its pages)
+// cost about as much as the work in it.
+struct ObjectWorkspace {
+  ObjectPoints points;
+  UnionFind union_find;
+  SurfacePatches patches;
+  SurfaceWorkspace surfaces;
+};
+
 }  // namespace
 
 ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& planes, const ObjectOptions& options) {
@@ -94,16 +109,17 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
 
   const Supports supports = findSupports(planes.planes, options);
   for (const SupportSurface& surface : supports.surfaces) result.supports.push_back(surface.label);
-  ObjectPoints points;
+  thread_local ObjectWorkspace work;
+  ObjectPoints& points = work.points;
   findObjectPoints(grid, planes, supports, options, points);
 
   SurfaceStep step;
   step.noise = planes.noise;
   step.pitch = angularPitch(grid);
   step.footprints = options.max_step_footprints;
-  UnionFind union_find;
-  SurfacePatches patches;
-  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, union_find, patches);
+  UnionFind& union_find = work.union_find;
+  SurfacePatches& patches = work.patches;
+  buildSurfacePatches(grid, planes.labels, points, step, options.local_patch_pixels, patches, work.surfaces);
   joinConvexPatches(patches, options.concavity_tolerance_rad, union_find);
   absorbFragments(patches, options.min_object_pixels, union_find);
 

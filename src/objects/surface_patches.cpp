@@ -48,8 +48,14 @@ double angularPitch(const PointGrid& grid) {
 }
 
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
-                         SurfacePatches& out) {
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out) {
+  SurfaceWorkspace work;
+  buildSurfacePatches(grid, plane_labels, points, step, side, out, work);
+}
+
+void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out,
+                         SurfaceWorkspace& work) {
   const int width = grid.width;
   const int height = grid.height;
   side = std::max(side, 1);
@@ -57,12 +63,29 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   // memory follow the object points, not the frame.
   const std::vector<std::size_t>& pixel_of = points.pixels;
   const std::size_t count = pixel_of.size();
-  std::vector<float> tolerance_of(count);
+  std::vector<float>& tolerance_of = work.tolerance_of;
+  tolerance_of.resize(count);
   for (std::size_t k = 0; k < count; ++k) tolerance_of[k] = static_cast<float>(step.tolerance(points.ranges[k]));
-  union_find.reset(count);
-  // The numbers of the right and lower neighbours each point is on one surface with (-1: none).
-  std::vector<std::int32_t> right_of(count, -1);
-  std::vector<std::int32_t> below_of(count, -1);
+  // The patches are labelled in one raster pass (each point joins its left or upper neighbour
+  // in the patch, two sets meeting at a point are linked), in a forest whose every link points
+  // to a lower number: one pass in order then finds each point's root.
+  std::vector<std::int32_t>& parent = work.parent;
+  std::vector<std::int32_t>& up_in_patch = work.up_in_patch;
+  parent.resize(count);
+  up_in_patch.assign(count, -1);
+  const auto root = [&parent](std::int32_t x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+      parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+      x = parent[static_cast<std::size_t>(x)];
+    }
+    return x;
+  };
+  bool left_in_patch = false;
+  // The numbers of the right and upper neighbours each point is on one surface with (-1: none).
+  std::vector<std::int32_t>& right_of = work.right_of;
+  std::vector<std::int32_t>& above_of = work.above_of;
+  right_of.assign(count, -1);
+  above_of.assign(count, -1);
   // Neighbours on one surface: within the tolerance at the nearer one's range (the tolerance
   // grows with the range).
   auto onOneSurface = [&](std::size_t a, std::size_t b) {
@@ -95,29 +118,50 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     }
     const int x = static_cast<int>(i - row_start);
     const auto self = static_cast<std::int32_t>(k);
+    const std::int32_t up = up_in_patch[k];
+    if (left_in_patch) {
+      parent[k] = self - 1;
+      if (up >= 0) {
+        const std::int32_t a = root(self - 1);
+        const std::int32_t b = root(up);
+        if (a < b) parent[static_cast<std::size_t>(b)] = a;
+        if (b < a) parent[static_cast<std::size_t>(a)] = b;
+      }
+    } else {
+      parent[k] = up >= 0 ? up : self;
+    }
+    left_in_patch = false;
     if (x + 1 < width && k + 1 < count && pixel_of[k + 1] == i + 1 && onOneSurface(k, k + 1)) {
       right_of[k] = self + 1;
-      if (plane_labels[i] == plane_labels[i + 1] && column_joins[static_cast<std::size_t>(x)]) {
-        union_find.unite(self, self + 1);
-      }
+      left_in_patch = plane_labels[i] == plane_labels[i + 1] && column_joins[static_cast<std::size_t>(x)];
     }
     const std::size_t below = i + static_cast<std::size_t>(width);
     if (row + 1 >= height) continue;
     cursor = std::max(cursor, k);
     while (cursor < count && pixel_of[cursor] < below) ++cursor;
     if (cursor < count && pixel_of[cursor] == below && onOneSurface(k, cursor)) {
-      below_of[k] = static_cast<std::int32_t>(cursor);
-      if (plane_labels[i] == plane_labels[below] && row_joins[static_cast<std::size_t>(row)]) {
-        union_find.unite(self, static_cast<std::int32_t>(cursor));
-      }
+      above_of[cursor] = self;
+      if (plane_labels[i] == plane_labels[below] && row_joins[static_cast<std::size_t>(row)])
+        up_in_patch[cursor] = self;
     }
   }
   // Number the patches in raster order of their first pixel and sum their points.
   out.patches.clear();
-  std::vector<std::int32_t> patch_of(count, -1);
-  std::vector<std::int32_t> index_of_root(count, -1);
-  std::vector<Eigen::Vector3d> sums;
-  std::vector<Eigen::Matrix3d> squares;
+  std::vector<std::int32_t>& patch_of = out.patch_of_point;
+  std::vector<std::int32_t>& index_of_root = work.index_of_root;
+  patch_of.assign(count, -1);
+  index_of_root.assign(count, -1);
+  std::vector<Eigen::Vector3d>& sums = work.sums;
+  std::vector<Eigen::Matrix3d>& squares = work.squares;
+  sums.clear();
+  squares.clear();
+  std::vector<std::uint64_t>& crossings = work.crossings;
+  crossings.clear();
+  // Two patches as one number, the lower first.
+  const auto pairKey = [](std::int32_t a, std::int32_t b) {
+    if (b < a) std::swap(a, b);
+    return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+  };
   // A run of pixels of one patch (up to a square's side along a row) is summed in registers and
   // added to the patch's sums once.
   std::int32_t run = -1;
@@ -142,8 +186,10 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   };
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = pixel_of[k];
-    const std::int32_t root = union_find.find(static_cast<std::int32_t>(k));
-    std::int32_t& index = index_of_root[static_cast<std::size_t>(root)];
+    // Its parent, lower, has its root as its parent already.
+    std::int32_t& link = parent[k];
+    link = parent[static_cast<std::size_t>(link)];
+    std::int32_t& index = index_of_root[static_cast<std::size_t>(link)];
     if (index < 0) {
       index = static_cast<std::int32_t>(out.patches.size());
       out.patches.emplace_back();
@@ -152,6 +198,15 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
       squares.push_back(Eigen::Matrix3d::Zero());
     }
     patch_of[k] = index;
+    // The pixel pairs on one surface with the left and upper neighbours (numbered already)
+    // across two patches, for the contacts.
+    const auto self = static_cast<std::int32_t>(k);
+    if (k > 0 && right_of[k - 1] == self && patch_of[k - 1] != index)
+      crossings.push_back(pairKey(patch_of[k - 1], index));
+    const std::int32_t above = above_of[k];
+    if (above >= 0 && patch_of[static_cast<std::size_t>(above)] != index) {
+      crossings.push_back(pairKey(patch_of[static_cast<std::size_t>(above)], index));
+    }
     if (index != run) {
       flush();
       run = index;
@@ -172,7 +227,6 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
   flush();
   for (Eigen::Matrix3d& m : squares)
     m.triangularView<Eigen::StrictlyLower>() = m.transpose().triangularView<Eigen::StrictlyLower>();
-  out.patch_of_point = std::move(patch_of);
   // The normal of a patch on no plane is its own; a plane's patches share the plane's (the
   // fit over all of them, steadier than a square's).
   // A patch on no plane must be at least a pixel footprint wide across (the spread of its
@@ -215,21 +269,19 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     patch.centroid = sums[k] / static_cast<double>(patch.pixels);
     patch.normal = patch.plane != 0 ? plane_normals[patch.plane] : normalOf(sums[k], squares[k], patch.pixels, true);
   }
-  // The contacts: pixel pairs on one surface across two patches, counted per pair of patches
+  // The contacts: pixel pairs on one surface across two patches (the crossings, gathered while
+  // numbering the patches), counted per pair of patches
   // in an open-addressing table (a pair of squares meets along up to a side's pixels, so the
   // pairs are many and the contacts few), then sorted.
   std::size_t slots = 64;
   while (slots < 8 * out.patches.size()) slots *= 2;
   constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
-  std::vector<std::uint64_t> table_keys(slots, kEmpty);
-  std::vector<std::uint32_t> table_pairs(slots, 0);
+  std::vector<std::uint64_t>& table_keys = work.table_keys;
+  std::vector<std::uint32_t>& table_pairs = work.table_pairs;
+  table_keys.assign(slots, kEmpty);
+  table_pairs.assign(slots, 0);
   std::size_t used = 0;
-  const auto addContact = [&](std::size_t a, std::size_t b) {
-    std::int32_t pa = out.patch_of_point[a];
-    std::int32_t pb = out.patch_of_point[b];
-    if (pa == pb) return;
-    if (pb < pa) std::swap(pa, pb);
-    const std::uint64_t key = (static_cast<std::uint64_t>(pa) << 32) | static_cast<std::uint32_t>(pb);
+  const auto addContact = [&](std::uint64_t key) {
     std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & (slots - 1);
     while (table_keys[slot] != key && table_keys[slot] != kEmpty) slot = (slot + 1) & (slots - 1);
     if (table_keys[slot] == kEmpty) {
@@ -238,9 +290,8 @@ void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>
     }
     ++table_pairs[slot];
   };
-  for (std::size_t k = 0; k < count; ++k) {
-    if (below_of[k] >= 0) addContact(k, static_cast<std::size_t>(below_of[k]));
-    if (right_of[k] >= 0) addContact(k, static_cast<std::size_t>(right_of[k]));
+  for (const std::uint64_t key : crossings) {
+    addContact(key);
     // Keep the table at most half full (a frame whose patches touch more than usual).
     if (2 * used > slots) {
       std::vector<std::uint64_t> old_keys(2 * slots, kEmpty);

@@ -69,11 +69,30 @@ struct SurfacePatches {
   std::vector<PatchContact> contacts;  ///< sorted by (first, second)
 };
 
+/// The buffers buildSurfacePatches works in, kept between calls so that a frame after the
+/// first touches no fresh memory (their sizes follow the object points).
+struct SurfaceWorkspace {
+  std::vector<float> tolerance_of;
+  std::vector<std::int32_t> parent;
+  std::vector<std::int32_t> up_in_patch;
+  std::vector<std::int32_t> right_of;
+  std::vector<std::int32_t> above_of;
+  std::vector<std::uint64_t> crossings;
+  std::vector<std::int32_t> index_of_root;
+  std::vector<Eigen::Vector3d> sums;
+  std::vector<Eigen::Matrix3d> squares;
+  std::vector<std::uint64_t> table_keys;
+  std::vector<std::uint32_t> table_pairs;
+};
+
 /// Builds the patches of `points`; `plane_labels` is the segmentation's label image (0: no
-/// plane). `union_find` is a workspace. Costs a pass over the object points and one to mark
+/// plane). Costs a pass over the object points and one to mark
 /// them in the frame's grid.
 void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
-                         const ObjectPoints& points, const SurfaceStep& step, int side, UnionFind& union_find,
-                         SurfacePatches& out);
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out);
+/// The same in `work`'s buffers.
+void buildSurfacePatches(const PointGrid& grid, const std::vector<std::uint32_t>& plane_labels,
+                         const ObjectPoints& points, const SurfaceStep& step, int side, SurfacePatches& out,
+                         SurfaceWorkspace& work);
 
 }  // namespace floodplane

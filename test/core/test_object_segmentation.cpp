@@ -285,6 +285,33 @@ TEST(ObjectSegmentation, LargestObjectFirst) {
   EXPECT_EQ(idsIn(objects, 5, 5, 15, 15), std::set<std::uint32_t>{2});
 }
 
+TEST(ObjectSegmentation, BuffersKeptBetweenCallsCarryNothingOver) {
+  // segmentObjects keeps its buffers per thread: a frame segmented after a busier one (more
+  // object points, patches and contacts) and then the busier one again give what they give
+  // alone.
+  const Made busy = make(
+      {[](int u, int v) { return inBox(u, v, 5, 5, 15, 15) || inBox(u, v, 40, 20, 60, 40) ? kTable - 0.1 : kTable; },
+       [](int u, int v) { return inBox(u, v, 5, 5, 15, 15)     ? 0u
+                                 : inBox(u, v, 40, 20, 60, 40) ? 2u
+                                                               : 1u; }});
+  const Made quiet = make({[](int u, int v) { return inBox(u, v, 30, 20, 50, 40) ? kTable - 0.2 : kTable; },
+                           [](int u, int v) { return inBox(u, v, 30, 20, 50, 40) ? 2u : 1u; }});
+  const ObjectSegmentation first = segmentObjects(busy.grid.grid(), busy.planes);
+  const ObjectSegmentation second = segmentObjects(quiet.grid.grid(), quiet.planes);
+  const ObjectSegmentation again = segmentObjects(busy.grid.grid(), busy.planes);
+  ASSERT_EQ(first.objects.size(), 2u);
+  ASSERT_EQ(second.objects.size(), 1u);
+  EXPECT_EQ(second.objects[0].pixel_count, 400u);
+  EXPECT_EQ(idsIn(second, 30, 20, 50, 40), std::set<std::uint32_t>{1});
+  EXPECT_EQ(again.labels, first.labels);
+  ASSERT_EQ(again.objects.size(), first.objects.size());
+  for (std::size_t k = 0; k < first.objects.size(); ++k) {
+    EXPECT_EQ(again.objects[k].pixel_count, first.objects[k].pixel_count);
+    EXPECT_EQ(again.objects[k].centroid, first.objects[k].centroid);
+    EXPECT_EQ(again.objects[k].support, first.objects[k].support);
+  }
+}
+
 TEST(ObjectSegmentation, NoSupportMeansEverySurfaceIsAnObject) {
   // A small board (40 x 30 cm at 2 m: 0.12 m^2, below the support area) alone: no support,
   // so it is an object of its own standing on nothing.
@@ -391,20 +418,19 @@ TEST(SurfacePatches, PlanesAndSquaresWithTheirContacts) {
   step.noise.sigma_constant = 0.001;
   step.pitch = angularPitch(flat.grid());
   EXPECT_NEAR(step.pitch, 1.0 / test::kPinholeFocal, 1e-4);
-  UnionFind union_find;
   SurfacePatches patches;
-  buildSurfacePatches(flat.grid(), labels, candidate, step, 8, union_find, patches);
+  buildSurfacePatches(flat.grid(), labels, candidate, step, 8, patches);
   ASSERT_EQ(patches.patches.size(), 2u);
   ASSERT_EQ(patches.contacts.size(), 1u);
   EXPECT_EQ(patches.contacts[0].pairs, 8u);
   EXPECT_NEAR(patches.patches[0].normal.z(), -1.0, 1e-6);
   PinholeGrid stepped(16, 8, [](int u, int) { return u >= 8 ? 1.1 : 1.0; });
-  buildSurfacePatches(stepped.grid(), labels, candidate, step, 8, union_find, patches);
+  buildSurfacePatches(stepped.grid(), labels, candidate, step, 8, patches);
   EXPECT_EQ(patches.patches.size(), 2u);
   EXPECT_TRUE(patches.contacts.empty());
   // A plane over both squares: still a patch per square, each with the plane's normal.
   std::vector<std::uint32_t> one_plane(16 * 8, 4);
-  buildSurfacePatches(flat.grid(), one_plane, candidate, step, 8, union_find, patches);
+  buildSurfacePatches(flat.grid(), one_plane, candidate, step, 8, patches);
   ASSERT_EQ(patches.patches.size(), 2u);
   EXPECT_EQ(patches.patches[0].plane, 4u);
   EXPECT_EQ(patches.patches[1].pixels, 64u);
