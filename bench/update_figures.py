@@ -82,16 +82,26 @@ def stamp(run_date):
 
 # Speed ---------------------------------------------------------------------------------------
 
-def read_speed(path):
-    """frame -> counters of the interleaved benchmark, and the run's date."""
+def read_benchmark_run(path):
+    """A Google Benchmark run's JSON, from --benchmark_out's file or bench_segmentation's stdout."""
     try:
         text = pathlib.Path(path).read_text(encoding="utf-8")
         # bench_segmentation prints its configuration before the JSON on stdout (--benchmark_out
         # writes the JSON alone): the run starts at the first line that opens an object.
         start = re.search(r"^\{", text, re.MULTILINE)
-        run = json.loads(text[start.start():] if start else text)
+        return json.loads(text[start.start():] if start else text)
     except (OSError, ValueError) as error:
         raise Unusable(f"{path}: {error}") from error
+
+
+def benchmark_date(run):
+    """The run's date and time to the minute, as its context gives it."""
+    return str(run.get("context", {}).get("date", ""))[:16].replace("T", " ") or "unknown date"
+
+
+def read_speed(path):
+    """frame -> counters of the interleaved benchmark, and the run's date."""
+    run = read_benchmark_run(path)
     frames = {}
     for entry in run.get("benchmarks", []) if isinstance(run, dict) else []:
         name = entry.get("name", "")
@@ -105,7 +115,7 @@ def read_speed(path):
     if not frames:
         raise Unusable(f"{path}: no interleaved/real:<frame> benchmark (run with "
                        "--benchmark_filter='^interleaved/real' --benchmark_out=FILE)")
-    run_date = str(run.get("context", {}).get("date", ""))[:16].replace("T", " ") or "unknown date"
+    run_date = benchmark_date(run)
     return frames, run_date
 
 
@@ -150,12 +160,7 @@ PHASE_COUNTERS = sorted({c for _, counters in PHASE_ROWS for c in counters})
 
 def read_phases(path):
     """(set, factor) -> frame -> counters of the floodplane/phases benchmarks, and the run's date."""
-    try:
-        text = pathlib.Path(path).read_text(encoding="utf-8")
-        start = re.search(r"^\{", text, re.MULTILINE)
-        run = json.loads(text[start.start():] if start else text)
-    except (OSError, ValueError) as error:
-        raise Unusable(f"{path}: {error}") from error
+    run = read_benchmark_run(path)
     runs = {}
     for entry in run.get("benchmarks", []) if isinstance(run, dict) else []:
         name = entry.get("name", "")
@@ -172,7 +177,7 @@ def read_phases(path):
     if not any(key in runs for key in wanted):
         raise Unusable(f"{path}: no floodplane/phases4?/(real|scene|exact):<frame> benchmark (run with "
                        "--benchmark_filter='^floodplane/phases4?/(real|scene|exact):' --benchmark_out=FILE)")
-    run_date = str(run.get("context", {}).get("date", ""))[:16].replace("T", " ") or "unknown date"
+    run_date = benchmark_date(run)
     return runs, run_date
 
 

@@ -32,10 +32,7 @@ class FloodplaneMethod : public Method {
     MethodRun result;
     result.total_ms = millisecondsSince(start);
     // The label cloud is documented to number plane k as label k, 0 for no plane.
-    if (labels_ && labels_->size() == cloud->size()) {
-      for (const pcl::Label& label : *labels_) result.labels.push_back(label.label);
-    }
-    result.labels.resize(cloud->size(), 0);  // no label cloud (bad data): no plane
+    result.labels = labelValues(labels_.get(), cloud->size());
     return result;
   }
 

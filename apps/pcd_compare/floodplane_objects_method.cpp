@@ -35,11 +35,7 @@ class FloodplaneObjectsMethod : public Method {
     result.total_ms = millisecondsSince(start);
     result.parts_ms = {{"planes", planes_ms}, {"objects", result.total_ms - planes_ms}};
     // The object cloud numbers object k as label k, 0 for no object.
-    if (objects_.size() == cloud->size()) {
-      result.labels.reserve(cloud->size());
-      for (const pcl::Label& label : objects_) result.labels.push_back(label.label);
-    }
-    result.labels.resize(cloud->size(), 0);  // no objects (bad data): no object
+    result.labels = labelValues(&objects_, cloud->size());
     return result;
   }
 

@@ -32,6 +32,18 @@ inline double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+/// A label cloud's values, one per pixel of a cloud of `size` points; all 0 (nothing found)
+/// when there is no label cloud of that size, as after bad data.
+inline std::vector<std::uint32_t> labelValues(const pcl::PointCloud<pcl::Label>* labels, std::size_t size) {
+  std::vector<std::uint32_t> values;
+  if (labels != nullptr && labels->size() == size) {
+    values.reserve(size);
+    for (const pcl::Label& label : *labels) values.push_back(label.label);
+  }
+  values.resize(size, 0);
+  return values;
+}
+
 /// What one run of a method gives back.
 struct MethodRun {
   /// A label per pixel of the organized grid, row-major; 0 = no plane.

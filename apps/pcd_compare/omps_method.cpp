@@ -49,14 +49,8 @@ class OmpsMethod : public Method {
       result.parts_ms.emplace_back("normals", 0.0);
       return result;
     }
-    auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
-    normal_estimation_.setInputCloud(cloud);
-    normal_estimation_.compute(*normals);
-    const double normals_ms = millisecondsSince(start);
-
-    segmentation_.setInputNormals(normals);
-    segmentation_.setInputCloud(cloud);
-    floodplane::baselines::segmentAndRefineAfresh(segmentation_, outputs_);
+    const double normals_ms =
+        floodplane::baselines::normalsThenPlanes(normal_estimation_, segmentation_, cloud, outputs_);
     result.total_ms = millisecondsSince(start);
     result.parts_ms.emplace_back("normals", normals_ms);
     // OMPS's label cloud numbers connected components, not planes; the planes are the

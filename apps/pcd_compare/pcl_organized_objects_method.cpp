@@ -69,13 +69,7 @@ class PclOrganizedObjectsMethod : public Method {
       result.parts_ms.emplace_back("normals", 0.0);
       return result;
     }
-    auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
-    normal_estimation_.setInputCloud(cloud);
-    normal_estimation_.compute(*normals);
-    const double normals_ms = millisecondsSince(start);
-    planes_.setInputNormals(normals);
-    planes_.setInputCloud(cloud);
-    floodplane::baselines::segmentAndRefineAfresh(planes_, outputs_);
+    const double normals_ms = floodplane::baselines::normalsThenPlanes(normal_estimation_, planes_, cloud, outputs_);
 
     // The demo's planes: the label cloud's regions of more than min-inliers points.
     std::vector<bool> plane_label(outputs_.label_indices.size(), false);

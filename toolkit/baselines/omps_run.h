@@ -12,6 +12,7 @@
 #include <pcl/point_types.h>
 #include <pcl/segmentation/planar_region.h>
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -76,6 +77,23 @@ void segmentAndRefineAfresh(Omps& omps, OmpsOutputs<PointT>& outputs) {
   outputs.boundaries.clear();
   omps.segmentAndRefine(outputs.regions, outputs.coefficients, outputs.inliers, outputs.labels, outputs.label_indices,
                         outputs.boundaries);
+}
+
+/// OMPS as its callers run it: `normal_estimation`'s normals of `cloud`, then
+/// segmentAndRefineAfresh on them into `outputs`. Returns the normals' time [ms] (steady
+/// clock), which the callers report apart. The caller checks normalWindowFits first.
+template <typename NormalEstimation, typename Omps, typename PointT>
+double normalsThenPlanes(NormalEstimation& normal_estimation, Omps& omps,
+                         const typename pcl::PointCloud<PointT>::ConstPtr& cloud, OmpsOutputs<PointT>& outputs) {
+  const auto start = std::chrono::steady_clock::now();
+  auto normals = std::make_shared<pcl::PointCloud<pcl::Normal>>();
+  normal_estimation.setInputCloud(cloud);
+  normal_estimation.compute(*normals);
+  const double normals_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  omps.setInputNormals(normals);
+  omps.setInputCloud(cloud);
+  segmentAndRefineAfresh(omps, outputs);
+  return normals_ms;
 }
 
 }  // namespace floodplane::baselines
