@@ -16,6 +16,7 @@ packages=(
   libcairo2-dev                              # pcd_compare's picture titles (its fonts come with it)
   clang libclang-rt-14-dev                   # libFuzzer and the sanitizer runtime
   clang-format                               # scripts/check_format.sh (clang-format 14)
+  doxygen                                    # the API reference (cmake --build build --target docs)
   xvfb xauth libgl1-mesa-dri                 # an X display with software OpenGL for 3-D snapshots
   python3 python3-dev pybind11-dev python3-pybind11  # the Python module (Debian's interpreter)
   python3-numpy python3-pytest                 # its arrays and its tests

@@ -4,6 +4,9 @@
 
 #include <cstddef>
 
+/// \file
+/// floodplane::NoiseModel, the depth noise a segmentation assumed.
+
 namespace floodplane {
 
 /// The sensor noise a segmentation assumed: the depth noise along a viewing ray at range r,
@@ -18,7 +21,13 @@ struct NoiseModel {
   std::size_t patches = 0;       ///< flat 5 x 5 patches the estimate rests on
   bool estimated = false;        ///< false: taken from Params
 
+  /// The depth noise's standard deviation sigma(r) [m].
+  /// \param range r [m], the distance from the sensor along the viewing ray
+  /// \return sigma(r) [m]
   double sigma(double range) const { return sigma_constant + sigma_quadratic * range * range; }
+  /// The depth step q(r) [m] of the sensor's depth lattice (0: no lattice).
+  /// \param range r [m], the distance from the sensor along the viewing ray
+  /// \return q(r) [m]
   double step(double range) const { return step_constant + step_quadratic * range * range; }
 };
 

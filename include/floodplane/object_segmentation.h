@@ -11,6 +11,9 @@
 #include "floodplane/point_grid.h"
 #include "floodplane/segmenter.h"
 
+/// \file
+/// floodplane::segmentObjects, the objects standing on the planes of a segmentation.
+
 namespace floodplane {
 
 /// The limits of segmentObjects. Every field must be finite and at least 0 (the counts at
@@ -58,8 +61,8 @@ struct SegmentedObject {
   std::uint32_t id = 0;                                ///< 1..K, its label; the largest object is 1
   std::uint32_t pixel_count = 0;                       ///< its pixels at full resolution
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of its points (sensor frame) [m]
-  Eigen::Vector3d min = Eigen::Vector3d::Zero();       ///< axis-aligned bounding box, sensor frame [m]
-  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();       ///< axis-aligned bounding box, sensor frame [m]: its low corner
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();       ///< the bounding box's high corner [m]
   /// The label of the plane it stands on (Segmentation::labels' numbering, k for
   /// planes[k - 1]): of the supports, the one nearest below its lowest point; 0 when no plane
   /// is a support.
@@ -68,8 +71,8 @@ struct SegmentedObject {
 
 /// The objects of one frame.
 struct ObjectSegmentation {
-  int width = 0;
-  int height = 0;
+  int width = 0;                         ///< the grid's width (points per row)
+  int height = 0;                        ///< the grid's height (rows)
   std::vector<std::uint32_t> labels;     ///< row-major, as the grid; 0 = no object, k = objects[k - 1]
   std::vector<SegmentedObject> objects;  ///< largest first
   std::vector<std::uint32_t> supports;   ///< the labels of the planes taken for supports, largest first
@@ -88,6 +91,10 @@ struct ObjectSegmentation {
 /// between calls (about 40 bytes per object point of the largest frame that thread has seen:
 /// about 12 MB at 640x480), since fresh pages for them on every frame cost as much as the work
 /// in them; they are freed when the thread ends. Safe to call from several threads at once.
+/// \param grid    the frame's points
+/// \param planes  the segmentation of `grid` (Segmenter::segment)
+/// \param options the limits (ObjectOptions)
+/// \return the objects, largest first, and a label per pixel
 ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& planes,
                                   const ObjectOptions& options = ObjectOptions());
 

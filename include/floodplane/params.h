@@ -6,6 +6,12 @@
 #include <optional>
 #include <string>
 
+/// \file
+/// floodplane::Params, every parameter of the segmentation with its unit and default.
+
+/// floodplane: plane segmentation of organized point clouds by seeded flood fill. The PCL
+/// class FloodFillPlaneSegmentation, the PCL-free core Segmenter, and what works on their
+/// results: PlaneTracker, describePlanes, segmentObjects.
 namespace floodplane {
 
 /// Every parameter of the segmentation, grouped by the stage that uses it. Lengths are metres,
@@ -70,17 +76,21 @@ struct Params {
   std::optional<double> depth_noise_constant;
 
   /// Whether the noise model is measured on each frame (neither noise field set).
+  /// \return true when neither depth_noise_coefficient nor depth_noise_constant is set
   bool estimatesNoise() const { return !depth_noise_coefficient && !depth_noise_constant; }
 
   /// The first value the method cannot use, as a sentence naming its field
   /// ("seed_size must be a finite number of metres > 0, got -1.000000"); empty when all are
   /// fine. Every entry point validates through this one function.
+  /// \return the first problem as a sentence, or an empty string
   std::string problem() const;
   /// Throws std::invalid_argument with problem() when there is one.
   void validate() const;
 };
 
 /// The sub-sampling factors the method supports.
+/// \param factor a candidate for Params::subsampling
+/// \return true for 1, 2, 4 and 8
 bool isValidSubsampling(int factor);
 
 }  // namespace floodplane

@@ -9,6 +9,10 @@
 
 #include "floodplane/segmenter.h"
 
+/// \file
+/// floodplane::describePlanes: what each plane is (floor, ceiling, wall, horizontal surface)
+/// given the up direction.
+
 namespace floodplane {
 
 /// What a plane is, told by its orientation to the up direction and its place among the
@@ -23,6 +27,8 @@ enum class PlaneClass : std::uint8_t {
 
 /// "other", "floor", "ceiling", "wall", "horizontal_surface" (the names of the JSON output and
 /// of the Python module); "unknown" for a value outside the enumeration.
+/// \param plane_class the class to name
+/// \return its name, a static string
 const char* planeClassName(PlaneClass plane_class);
 
 /// The limits of describePlanes. Every field must be finite and at least 0; the two angles
@@ -65,7 +71,7 @@ struct PlaneClassOptions {
 
 /// What describePlanes says of one plane.
 struct PlaneDescription {
-  PlaneClass plane_class = PlaneClass::kOther;
+  PlaneClass plane_class = PlaneClass::kOther;  ///< what the plane is
   /// The signed distance along up from the floor's plane to the plane's centroid [m]: 0 for
   /// the floor, 0.75 for a table top 0.75 m high, negative below the floor; NaN when no floor
   /// was found (and for a plane whose centroid is not finite).
@@ -92,6 +98,10 @@ struct PlaneDescription {
 ///    cupboard's side and a stair's riser too: what a robot cannot pass through).
 ///  - anything else, and a plane whose normal is zero or not finite: other.
 /// Costs O(planes).
+/// \param planes  the planes of one frame (Segmentation::planes)
+/// \param up      the up direction in the planes' frame, any length but 0
+/// \param options the limits (PlaneClassOptions)
+/// \return one description per plane, in the order of `planes`
 std::vector<PlaneDescription> describePlanes(const std::vector<SegmentedPlane>& planes, const Eigen::Vector3d& up,
                                              const PlaneClassOptions& options = PlaneClassOptions());
 

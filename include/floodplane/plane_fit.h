@@ -4,12 +4,15 @@
 
 #include <Eigen/Core>
 
+/// \file
+/// floodplane::PlaneFit, a least-squares plane and the spread of its points.
+
 namespace floodplane {
 
 /// A least-squares plane n . P + d = 0 through a set of points (the segmenter's frame: the
 /// sensor at the origin).
 struct PlaneFit {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();     ///< mean of the points [m]
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();      ///< unit, towards the sensor origin
   double offset = 0.0;                                    ///< d
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();   ///< population covariance (1/N)

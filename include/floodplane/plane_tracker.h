@@ -11,6 +11,9 @@
 
 #include "floodplane/segmenter.h"
 
+/// \file
+/// floodplane::PlaneTracker: plane ids that persist over the frames of a stream.
+
 namespace floodplane {
 
 /// One surface followed over frames. Its parameters are in the camera frame of the last frame
@@ -92,6 +95,7 @@ struct PlaneTrack {
 /// Not thread-safe; one tracker per stream.
 class PlaneTracker {
  public:
+  /// The tracker's matching limits and smoothing; setOptions() validates them.
   struct Options {
     /// Largest angle between a track's normal and a plane's normal for them to match [rad].
     /// Covers the fit's noise and, without motions, the camera's turn between two frames.
@@ -108,45 +112,66 @@ class PlaneTracker {
     /// Weight of the newest measurement in the smoothed parameters, in (0, 1]; 1 is no
     /// smoothing. The smoothed normal is renormalised after each step.
     double smoothing = 0.3;
-    /// Largest rotation [rad] and translation [m] of a given motion for which the previous
-    /// label image is still compared with the current one pixel by pixel.
+    /// Largest rotation [rad] of a given motion for which the previous label image is still
+    /// compared with the current one pixel by pixel.
     double overlap_max_rotation = 0.05;
+    /// Largest translation [m] of a given motion for the same.
     double overlap_max_translation = 0.1;
   };
 
+  /// A tracker with the default Options.
   PlaneTracker();
+  /// A tracker with these options; throws std::invalid_argument naming a bad one.
+  /// \param options the matching limits and smoothing
   explicit PlaneTracker(const Options& options);
 
   /// Validates and sets the options; throws std::invalid_argument naming the option. Takes
   /// effect from the next update; the tracks are kept.
+  /// \param options the matching limits and smoothing
   void setOptions(const Options& options);
+  /// \return the options in use (setOptions())
   const Options& options() const { return options_; }
 
   /// Takes the next frame. Returns the track id of each of its planes (planes[k] has ids[k];
   /// ids are >= 1), valid until the next call. Throws std::invalid_argument when the labels do
   /// not fill width x height or name a plane the segmentation does not have.
+  /// \param segmentation the next frame's result (Segmenter::segment)
+  /// \return the track id of each plane, in the order of Segmentation::planes
   const std::vector<std::uint32_t>& update(const Segmentation& segmentation);
   /// The same, with the camera's motion since the previous frame: the pose of the current
   /// camera in the previous camera's frame (T_previous_current, as odometry gives it), so that
   /// a point P in the current camera's frame is motion * P in the previous one. Ignored for
   /// the first frame. Throws std::invalid_argument when the motion is not finite and rigid.
+  /// \param segmentation the next frame's result (Segmenter::segment)
+  /// \param motion       T_previous_current, rigid [m]
+  /// \return the track id of each plane, in the order of Segmentation::planes
   const std::vector<std::uint32_t>& update(const Segmentation& segmentation, const Eigen::Isometry3d& motion);
   /// The same, with the motion as a 4 x 4 homogeneous matrix (last row 0 0 0 1).
+  /// \param segmentation the next frame's result (Segmenter::segment)
+  /// \param motion       T_previous_current, 4 x 4 rigid [m]
+  /// \return the track id of each plane, in the order of Segmentation::planes
   const std::vector<std::uint32_t>& update(const Segmentation& segmentation, const Eigen::Matrix4d& motion);
 
   /// Track ids of the last frame's planes, as update returned them.
+  /// \return the track id of each plane of the last frame
   const std::vector<std::uint32_t>& trackIds() const { return plane_track_ids_; }
   /// Writes the last frame's label image with track ids in place of plane labels (0 stays
   /// 0). `labels` is that frame's Segmentation::labels; `track_labels` may be the same vector.
   /// Throws std::invalid_argument on a label above the last frame's plane count.
+  /// \param labels            the last frame's label image (Segmentation::labels)
+  /// \param[out] track_labels the same image with track ids
   void relabel(const std::vector<std::uint32_t>& labels, std::vector<std::uint32_t>& track_labels) const;
 
   /// The tracks seen in the last frame and the lost ones still kept, by increasing id.
+  /// \return every track kept
   const std::vector<PlaneTrack>& tracks() const { return tracks_; }
   /// The track with this id, or nullptr when there is none (never was, or dropped). Valid until
   /// the next update or reset.
+  /// \param id a track id (PlaneTrack::id)
+  /// \return the track, or nullptr
   const PlaneTrack* track(std::uint32_t id) const;
   /// Frames taken since construction or reset(); the last frame's index is frameCount() - 1.
+  /// \return the number of update() calls since construction or reset()
   std::size_t frameCount() const { return frame_count_; }
 
   /// Forgets every track and the previous frame; ids start again at 1. Keeps the options.

@@ -12,6 +12,9 @@
 #include "floodplane/plane_fit.h"
 #include "floodplane/point_grid.h"
 
+/// \file
+/// floodplane::Segmenter, the PCL-free core, and its result floodplane::Segmentation.
+
 namespace floodplane {
 
 /// Time spent in each phase of one segmentation (the paper's Fig. 5), in milliseconds.
@@ -27,6 +30,7 @@ struct PhaseTimes {
   /// The PCL class's work around the core: input checks, the shift to the sensor origin and
   /// PCL's outputs (regions, coefficients, indices, the label cloud). 0 from Segmenter.
   double pcl_conversion = 0.0;
+  /// \return the sum of the phases [ms]
   double total() const {
     return preparation + seed_selection + flood_fill + relabelling + merging + region_output + pcl_conversion;
   }
@@ -55,17 +59,19 @@ struct SegmentedPlane {
 
 /// The result: a label per pixel of the full-resolution grid and the planes.
 struct Segmentation {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint32_t> labels;   ///< 0 = no plane, k = planes[k - 1]
+  int width = 0;                       ///< the grid's width (points per row)
+  int height = 0;                      ///< the grid's height (rows)
+  std::vector<std::uint32_t> labels;   ///< row-major; 0 = no plane, k = planes[k - 1]
   std::vector<SegmentedPlane> planes;  ///< largest first
   NoiseModel noise;                    ///< the depth noise the segmentation assumed
-  PhaseTimes phases;
-  SegmentationStats stats;
+  PhaseTimes phases;                   ///< time per phase, with Segmenter::Options::measure_phases
+  SegmentationStats stats;             ///< counts of what happened inside
 
   /// Appends the outer boundary of planes[plane] to `contour`: linear pixel indices in order,
   /// clockwise on screen (y down), 8-connected, starting at the plane's first pixel; a pixel
   /// on a one-pixel-wide neck appears twice. Costs the boundary's length, not the area.
+  /// \param plane        index into planes (label - 1)
+  /// \param[out] contour the boundary's pixels are appended to it
   void boundary(std::size_t plane, std::vector<int>& contour) const;
 };
 
@@ -75,6 +81,7 @@ struct Segmentation {
 /// calls, so segmenting frames of one size allocates nothing after the first frame.
 class Segmenter {
  public:
+  /// What one call of segment() does besides the segmentation.
   struct Options {
     /// After merging, grow each plane into neighbouring unlabelled pixels that fit it (the
     /// counterpart of OMPS's refinement; segmentAndRefine sets it).
@@ -96,17 +103,30 @@ class Segmenter {
   /// second at 30 Hz), so that it follows what the camera sees.
   static constexpr int kNoiseRefreshFrames = 30;
 
+  /// A segmenter with these parameters; throws std::invalid_argument naming a bad one.
+  /// \param params the parameters of the segmentation
   explicit Segmenter(const Params& params = Params());
   ~Segmenter();
+  /// Takes over the other's buffers and parameters.
   Segmenter(Segmenter&&) noexcept;
+  /// Takes over the other's buffers and parameters.
+  /// \return this segmenter
   Segmenter& operator=(Segmenter&&) noexcept;
 
   /// Validates and sets the parameters; throws std::invalid_argument.
+  /// \param params the parameters of the segmentation
   void setParams(const Params& params);
+  /// \return the parameters in use
   const Params& params() const { return params_; }
 
   /// Segments an organized grid. The result stays valid until the next call.
+  /// \param grid    the frame's points, the sensor at the origin
+  /// \param options what the call does besides the segmentation
+  /// \return the labels and planes, valid until the next call
   const Segmentation& segment(const PointGrid& grid, const Options& options);
+  /// Segments an organized grid with the default Options.
+  /// \param grid the frame's points, the sensor at the origin
+  /// \return the labels and planes, valid until the next call
   const Segmentation& segment(const PointGrid& grid) { return segment(grid, Options()); }
 
  private:
