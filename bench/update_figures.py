@@ -30,6 +30,10 @@ Inputs:
   --objects JSON   pcd_compare --objects --json on the mOSD learn half (../shared/data/osd-learn);
                    fills "objects" (a row per object method: the object scores of
                    ../shared/tools/osd_scores.py --objects, objects a frame, ms).
+  --peers DIR      bench/peers.sh's folder (CAPE and PEAC beside floodplane: speed.md, the table of
+                   ../shared/peers/side_by_side.sh, and osd_<method>.json, osd_scores.py --json of each
+                   method's labels of the mOSD learn frames); fills "peers" of docs/results.md (the
+                   tables, and where a peer is ahead, said) and the README's "peers" sentence.
 Any one of them may be given alone. --dry-run prints the parts instead of writing.
 
 Example:
@@ -58,6 +62,7 @@ import speed_accuracy_chart  # noqa: E402
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 BENCH_README = ROOT / "bench" / "README.md"
 README = ROOT / "README.md"
+RESULTS = ROOT / "docs" / "results.md"
 FACTORS = [("floodplane/1", "s = 1"), ("floodplane/2", "s = 2"), ("floodplane/4", "s = 4 (the default)")]
 SENSORS = [("none", "exact"), ("kinect", "Kinect"), ("scanner", "scanner")]
 SPEED_COLUMNS = ["omps_ms", "s1_ms", "s2_ms", "s4_ms", "omps_per_s2", "omps_per_s4", "s2_per_s1", "s4_per_s1"]
@@ -292,6 +297,149 @@ def objects_part(path):
     return out
 
 
+# The peers: CAPE and PEAC (bench/peers.sh) ------------------------------------------------------
+
+PEERS = [("floodplane", "floodplane"), ("cape", "CAPE"), ("peac", "PEAC")]
+# osd_scores.py's plane scores: (key, title, better, what a method better at it has): higher or
+# lower is better, or None for a count with no better direction (box_faces: 2-3, the faces a
+# camera sees of a box).
+OSD_SCORES = [("table_iou", "table IoU", "higher", "a higher table IoU"),
+              ("table_pieces", "table pieces", "lower", "the table in fewer pieces"),
+              ("bleed", "bleed", "lower", "less bleed across objects"),
+              ("box_cover", "box cover", "higher", "more of the boxes on planes"),
+              ("box_faces", "box faces", None, ""),
+              ("wall_on_plane", "can walls on planes", "lower", "less of the cans' walls on planes")]
+
+
+def read_side_by_side(path):
+    """frame -> {column: value} and the columns, from the markdown table side_by_side.sh printed."""
+    try:
+        lines = [line.strip() for line in pathlib.Path(path).read_text(encoding="utf-8").splitlines()]
+    except OSError as error:
+        raise Unusable(f"{path}: {error}") from error
+    header = next((i for i, line in enumerate(lines) if line.startswith("| frame |")), None)
+    if header is None:
+        raise Unusable(f"{path}: no table of ../shared/peers/side_by_side.sh (| frame | floodplane ms | ...)")
+    columns = [cell.strip() for cell in lines[header].strip("|").split("|")][1:]
+    for needed in ("floodplane ms", "CAPE ms", "PEAC ms"):
+        if needed not in columns:
+            raise Unusable(f"{path}: its table has no column '{needed}'")
+    frames = {}
+    for line in lines[header + 2:]:
+        if not line.startswith("|"):
+            break
+        cells = [cell.strip() for cell in line.strip("|").split("|")]
+        try:
+            frames[cells[0]] = {column: float(value) for column, value in zip(columns, cells[1:])}
+        except ValueError as error:
+            raise Unusable(f"{path}: {cells[0]}: {error}") from error
+        if any(value != value for value in frames[cells[0]].values()):  # NaN: a runner failed
+            raise Unusable(f"{path}: {cells[0]} has no time for every method (a runner failed)")
+    if not frames:
+        raise Unusable(f"{path}: its table has no frame")
+    return frames, columns
+
+
+def read_osd(path):
+    try:
+        means = json.loads(pathlib.Path(path).read_text(encoding="utf-8"))["means"]
+        return {key: float(means[key]) for key, *_ in OSD_SCORES}, int(means["table_iou_frames"])
+    except (OSError, ValueError, TypeError, KeyError) as error:
+        raise Unusable(f"{path}: not the JSON of osd_scores.py --json ({error!r})") from error
+
+
+def read_run_notes(directory):
+    """bench/peers.sh's run.txt: key: value lines (commit, date, machine)."""
+    try:
+        text = (pathlib.Path(directory) / "run.txt").read_text(encoding="utf-8")
+    except OSError as error:
+        raise Unusable(f"{directory}: no run.txt of bench/peers.sh ({error})") from error
+    return dict(line.split(": ", 1) for line in text.splitlines() if ": " in line)
+
+
+def ahead(peer, scores, frames_ratio, instruction_ratio):
+    """What the peer does better than floodplane, as phrases."""
+    said = []
+    if frames_ratio > 1.0:
+        said.append(f"it is faster: floodplane takes {frames_ratio:.1f}x its time a frame (median over the frames)")
+        if instruction_ratio is not None:
+            said[-1] += f" and {instruction_ratio:.1f}x its instructions"
+    for key, title, better, phrase in OSD_SCORES:
+        if better is None:
+            continue
+        ours, theirs = scores["floodplane"][key], scores[peer][key]
+        if round(theirs, 3) != round(ours, 3) and (theirs > ours) == (better == "higher"):
+            said.append(f"{phrase} ({title} {theirs:.3f} against floodplane's {ours:.3f})")
+    return said
+
+
+def peers_parts(directory):
+    """docs/results.md's peers tables and the README's sentence, from one bench/peers.sh run."""
+    directory = pathlib.Path(directory)
+    notes = read_run_notes(directory)
+    frames, columns = read_side_by_side(directory / "speed.md")
+    scores, osd_frames = {}, {}
+    for method, _ in PEERS:
+        scores[method], osd_frames[method] = read_osd(directory / f"osd_{method}.json")
+    if len(set(osd_frames.values())) != 1:
+        raise Unusable(f"{directory}: the methods were scored on different numbers of frames ({osd_frames})")
+    with_instructions = "floodplane M instr" in columns and "CAPE M instr" in columns
+    # The ratios as side_by_side.sh computed them per frame (from unrounded figures), when it gave them.
+    for f in frames.values():
+        f.setdefault("x CAPE", f["floodplane ms"] / f["CAPE ms"])
+        f.setdefault("x PEAC", f["floodplane ms"] / f["PEAC ms"])
+        if with_instructions:
+            f.setdefault("instr x CAPE", f["floodplane M instr"] / f["CAPE M instr"])
+    ratio = {peer: statistics.median(f[f"x {title}"] for f in frames.values()) for peer, title in PEERS[1:]}
+    instructions = statistics.median(f["instr x CAPE"] for f in frames.values()) if with_instructions else None
+    date = notes.get("date", "unknown date")
+    titles = ["frame", "floodplane ms", "CAPE ms", "PEAC ms", "floodplane / CAPE", "floodplane / PEAC"]
+    if with_instructions:
+        titles += ["floodplane M instr", "CAPE M instr", "instr / CAPE"]
+    out = (f"Run {date}, floodplane at `{notes.get('floodplane commit', '?')}`, by `bench/peers.sh` "
+           f"({notes.get('machine', 'machine unknown')}). Speed: each method's median ms a frame over the "
+           "interleaved rounds of `../shared/peers/side_by_side.sh`, each method in a process of its own, one thread"
+           + ("; the instructions of floodplane's `segmentAndRefine` and CAPE's `process` (callgrind)"
+              if with_instructions else "") + ":\n\n"
+           "| " + " | ".join(titles) + " |\n|---|" + "---:|" * (len(titles) - 1) + "\n")
+    for frame in sorted(frames):
+        f = frames[frame]
+        cells = [f"{f['floodplane ms']:.2f}", f"{f['CAPE ms']:.2f}", f"{f['PEAC ms']:.2f}",
+                 f"{f['x CAPE']:.2f}", f"{f['x PEAC']:.2f}"]
+        if with_instructions:
+            cells += [f"{f['floodplane M instr']:.1f}", f"{f['CAPE M instr']:.1f}", f"{f['instr x CAPE']:.2f}"]
+        out += f"| {short(frame)} | " + " | ".join(cells) + " |\n"
+    medians = [f"{statistics.median(f[c] for f in frames.values()):.2f}" for c in ("floodplane ms", "CAPE ms", "PEAC ms")]
+    medians += [f"**{ratio['cape']:.2f}**", f"**{ratio['peac']:.2f}**"]
+    if with_instructions:
+        medians += [f"{statistics.median(f[c] for f in frames.values()):.1f}"
+                    for c in ("floodplane M instr", "CAPE M instr")]
+        medians += [f"**{instructions:.2f}**"]
+    out += "| **median** | " + " | ".join(medians) + " |\n"
+    out += (f"\nAccuracy on the {osd_frames['floodplane']} real Kinect frames of `../shared/data/osd-learn` "
+            "(`../shared/tools/osd_scores.py`, each method's labels written by the same runners at their defaults; "
+            "box cover and box faces on the box frames, can walls on the cylinder frames):\n\n"
+            "| method | " + " | ".join(title for _, title, *_ in OSD_SCORES) + " |\n|---|"
+            + "---:|" * len(OSD_SCORES) + "\n")
+    for method, title in PEERS:
+        out += f"| {title} | " + " | ".join(f"{scores[method][key]:.3f}" for key, *_ in OSD_SCORES) + " |\n"
+    out += "\nWhere a peer is ahead of floodplane in this run:\n\n"
+    for peer, title in PEERS[1:]:
+        said = ahead(peer, scores, ratio[peer], instructions if peer == "cape" else None)
+        out += f"- {title}: " + ("; ".join(said) if said else "nowhere") + ".\n"
+    quicker = [title for peer, title in PEERS[1:] if ratio[peer] > 1.0]
+    verdict = {0: "neither is faster", 1: f"{quicker[0] if quicker else ''} is faster", 2: "both are faster"}[len(quicker)]
+    f_, c_, p_ = (scores[m] for m, _ in PEERS)
+    sentence = (f"on the 7 real Kinect frames floodplane takes {ratio['cape']:.1f}x CAPE's time a frame"
+                + (f" ({instructions:.1f}x its instructions)" if with_instructions else "")
+                + f" and {ratio['peac']:.1f}x PEAC's: {verdict}; on the {osd_frames['floodplane']} mOSD frames the "
+                f"table IoU is {f_['table_iou']:.3f} (CAPE {c_['table_iou']:.3f}, PEAC {p_['table_iou']:.3f}) and "
+                f"the share of the boxes on planes {f_['box_cover']:.3f} (CAPE {c_['box_cover']:.3f}, PEAC "
+                f"{p_['box_cover']:.3f}); one run, {date[:10]}, "
+                "[docs/results.md](docs/results.md#the-fast-peers-cape-and-peac)")
+    return out, sentence
+
+
 # The chart ------------------------------------------------------------------------------------
 
 def run_description(title, path):
@@ -344,18 +492,22 @@ def main():
     parser.add_argument("--chart-run", action="append", type=speed_accuracy_chart.titled_run, metavar="TITLE=JSON",
                         help="a pcd_compare run of another data set, a panel of --chart's (repeatable)")
     parser.add_argument("--objects", help="pcd_compare --objects JSON of the mOSD learn half")
+    parser.add_argument("--peers", metavar="DIR", help="bench/peers.sh's folder: CAPE and PEAC beside floodplane")
     parser.add_argument("--bench-readme", default=str(BENCH_README), help="the page to update")
+    parser.add_argument("--results", default=str(RESULTS), help="the results page whose peers part to update")
     parser.add_argument("--readme", default=str(README), help="the README whose speed sentence to update")
     parser.add_argument("--dry-run", action="store_true", help="print the parts, write nothing")
     args = parser.parse_args()
     if args.chart_run and not args.chart:
         parser.error("--chart-run gives a panel of the chart: give --chart PNG too")
-    if not (args.speed or args.phases or args.report or args.quirks or args.resolution or args.chart or args.objects):
-        parser.error("give at least one of --speed, --phases, --report, --quirks, --resolution, --chart, --objects")
+    if not (args.speed or args.phases or args.report or args.quirks or args.resolution or args.chart or args.objects
+            or args.peers):
+        parser.error("give at least one of --speed, --phases, --report, --quirks, --resolution, --chart, --objects, "
+                     "--peers")
     if args.chart and not chart_runs(args):
         parser.error("--chart needs a pcd_compare run: --chart-run TITLE=JSON, --report or --quirks")
     try:
-        bench_parts, readme_parts = {}, {}
+        bench_parts, readme_parts, results_parts = {}, {}, {}
         if args.speed:
             frames, run_date = read_speed(args.speed)
             bench_parts["speed"], medians = speed_table(frames, run_date)
@@ -371,6 +523,8 @@ def main():
             bench_parts["resolution"] = resolution_part(args.resolution)
         if args.objects:
             bench_parts["objects"] = objects_part(args.objects)
+        if args.peers:
+            results_parts["peers"], readme_parts["peers"] = peers_parts(args.peers)
         panels = []
         if args.chart:
             runs = chart_runs(args)
@@ -382,11 +536,13 @@ def main():
             except ImportError as error:
                 raise Unusable(f"--chart needs matplotlib ({error}); Debian: python3-matplotlib") from error
         if args.dry_run:
-            for name, body in {**bench_parts, **{f"README {k}": v for k, v in readme_parts.items()}}.items():
+            for name, body in {**bench_parts, **{f"README {k}": v for k, v in readme_parts.items()},
+                               **{f"results {k}": v for k, v in results_parts.items()}}.items():
                 print(f"--- {name}\n{body}")
             return 0
         updates = []
-        for path, parts in ((pathlib.Path(args.bench_readme), bench_parts), (pathlib.Path(args.readme), readme_parts)):
+        for path, parts in ((pathlib.Path(args.bench_readme), bench_parts), (pathlib.Path(args.readme), readme_parts),
+                            (pathlib.Path(args.results), results_parts)):
             if not parts:
                 continue
             text = path.read_text(encoding="utf-8")

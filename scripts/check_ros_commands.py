@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
-"""Checks that a machine has what the README's ROS section and the rostests run, after
+"""Checks that a machine has what the ROS page (docs/ros.md) and the rostests run, after
 scripts/install_ros_deps.sh alone (CI runs it right after that script, the ctest
 RosSegmentation.readmeCommandsFindTheirExecutables with the build's devel space):
 
 1. every package of scripts/install_ros_deps.sh --list is installed (dpkg -s);
-2. every command of the README's "Use it in ROS" code blocks, and of its inline code that starts
+2. every command of docs/ros.md's code blocks, and of its inline code that starts
    with a ROS tool, finds its executable as it would run it: `rosrun PKG EXE` by rosrun's own
    lookup (rosrun --prefix echo), `roslaunch PKG FILE` its launch file and each node's
    executable in it, any other command on PATH (or the file it names);
@@ -35,17 +35,14 @@ OWN_PACKAGE = "floodplane_ros"
 ECHOED_MODULES = ["std_msgs.msg", "sensor_msgs.msg", "geometry_msgs.msg", "shape_msgs.msg",
                   "visualization_msgs.msg", "diagnostic_msgs.msg", "pcl_msgs.msg"]
 SHELL_BUILTINS = ("cd", "source", ".", "export", "echo")
-# Inline code in the README's text that is a command to check.
+# Inline code in the page's text that is a command to check.
 INLINE_TOOLS = ("rosrun ", "roslaunch ", "rostopic ", "rosservice ", "rosparam ", "rostest ", "rviz ",
                 "roscore", "catkin_make", "/usr/bin/python3 /usr/lib/")
 
 
-def ros_section(readme):
-    """The README's "## Use it in ROS" section."""
-    text = readme.read_text(encoding="utf-8")
-    start = text.index("## Use it in ROS")
-    end = text.index("\n## ", start + 1)
-    return text[start:end]
+def ros_page(page):
+    """The ROS page, docs/ros.md, whole."""
+    return page.read_text(encoding="utf-8")
 
 
 def code_commands(section):
@@ -194,9 +191,9 @@ def main():
     checker = Checker(devel)
     try:
         packages = checker.packages()
-        for words in code_commands(ros_section(ROOT / "README.md")):
+        for words in code_commands(ros_page(ROOT / "docs" / "ros.md")):
             for simple in simple_commands(words):
-                checker.command(simple, "README: " + " ".join(simple)[:100])
+                checker.command(simple, "docs/ros.md: " + " ".join(simple)[:100])
         for test in sorted((ROOT / "ros" / OWN_PACKAGE / "test").glob("*.test")):
             checker.launch_nodes(test, f"{test.relative_to(ROOT)}")
         checker.echoed_messages()

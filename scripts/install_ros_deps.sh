@@ -4,14 +4,14 @@
 # Installs the optional ROS 1 part's packages from Debian 12 (ROS Noetic's libraries as Debian
 # packages them; Debian 12 has no ROS 2): what ros/floodplane_ros needs to build, its nodelet
 # and node, dynamic reconfigure, diagnostics and rostest with a master to run its test, and
-# what a ROS user works with next to the node (README, "Use it in ROS"): catkin_make for a
+# what a ROS user works with next to the node (docs/ros.md): catkin_make for a
 # workspace, rosrun, the Python messages that `rostopic echo` of the node's topics imports,
 # pcd_to_pointcloud to play a PCD file, pcl_ros's filter nodelets to chain onto its inliers
 # (its rostest chains ExtractIndices) and rviz to look at the planes. The rest of floodplane
 # needs none of them (scripts/install_deps.sh). As root it installs them; otherwise it prints
 # the command to run and fails, so nothing half-happens. `--list` prints the packages, one a
 # line, and nothing else (scripts/check_ros_commands.py checks each with dpkg -s).
-# After it, scripts/check_ros_commands.py finds every executable the README's ROS section and
+# After it, scripts/check_ros_commands.py finds every executable the ROS page (docs/ros.md) and
 # the rostests run: a package missing here fails there, not on a user's machine.
 set -euo pipefail
 
@@ -25,7 +25,7 @@ packages=(
   libpcl-msgs-dev python3-pcl-msgs           # pcl_msgs: the inliers and model topics (C++; Python for rostopic echo)
   libnodelet-topic-tools-dev                 # NodeletLazy: the input subscribed only while an output is
   libtf2-ros-dev                             # tf2_ros: ~target_frame (the library)
-  tf2-tools                                  # tf2_ros's static_transform_publisher (README, target_frame.test)
+  tf2-tools                                  # tf2_ros's static_transform_publisher (docs/ros.md, target_frame.test)
   libpcl-ros-dev                             # pcl_ros's nodelets (ExtractIndices, ProjectInliers) chained onto inliers and model
   python3-rostest                            # rostest (roslaunch with a master on a port of its own)
   # The Python messages of the node's topics and of the ones floodplane_ros/Planes contains:

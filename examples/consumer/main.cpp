@@ -22,9 +22,9 @@ int main() {
     }
   }
 
-  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> seg;  // was OrganizedMultiPlaneSegmentation
-  seg.setMinInliers(500);
-  seg.setInputCloud(cloud);  // no setInputNormals
+  floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ> seg;  // was pcl::OrganizedMultiPlaneSegmentation
+  seg.setMinInliers(500);    // OMPS's setters, same units; the lengths left unset (distance threshold,
+  seg.setInputCloud(cloud);  // seed size, merge distance) come from the frame's noise; no setInputNormals
   floodplane::FloodFillPlaneSegmentation<pcl::PointXYZ>::Regions regions;
   std::vector<pcl::ModelCoefficients> coefficients;
   std::vector<pcl::PointIndices> inliers, label_indices, boundaries;

@@ -83,3 +83,44 @@ def test_the_open3d_example_reports_a_bad_file_in_one_line(tmp_path):
     completed = run_open3d_example(tmp_path / "missing.png", "--intrinsics", "525,525,319.5,239.5")
     assert completed.returncode == 1
     assert completed.stderr == f"open3d_planes: error: cannot read the image '{tmp_path / 'missing.png'}'\n"
+
+
+PLANES_AND_OBJECTS = EXAMPLE.with_name("planes_and_objects.py")
+
+
+def room_with_a_box(width=320, height=240):
+    """The two-plane scene (a wall at z = 2 m, a floor 0.5 m below a level camera) with a
+    30 cm box standing on the floor 1.5 m ahead: its front face at z = 1.5, x in [-0.15, 0.15],
+    y in [0.2, 0.5]."""
+    focal = 525.0 * width / 640.0
+    v, u = np.mgrid[0:height, 0:width].astype(np.float64)
+    rx, ry = (u - (width - 1) / 2.0) / focal, (v - (height - 1) / 2.0) / focal
+    t = np.full((height, width), 2.0)
+    floor = ry > 0
+    t[floor] = np.minimum(2.0, 0.5 / ry[floor])
+    front = (np.abs(1.5 * rx) <= 0.15) & (1.5 * ry >= 0.2) & (1.5 * ry <= 0.5)
+    t[front] = 1.5
+    return np.stack([t * rx, t * ry, t], axis=-1).astype(np.float32)
+
+
+def test_the_planes_and_objects_example_classes_the_planes_and_finds_the_box(tmp_path):
+    cloud = tmp_path / "room.pcd"
+    points = room_with_a_box()
+    floodplane.write_labels_pcd(str(cloud), points, np.zeros(points.shape[:2], np.uint32))
+    completed = subprocess.run([sys.executable, str(PLANES_AND_OBJECTS), str(cloud)], capture_output=True, text=True,
+                               timeout=120)
+    assert completed.returncode == 0, completed.stderr
+    lines = completed.stdout.splitlines()
+    assert lines[0] == f"{cloud}: 3 planes, 1 objects", completed.stdout
+    classes = {line.split(":")[1].split(",")[0].strip() for line in lines[1:4]}
+    assert classes == {"floor", "wall"}, completed.stdout
+    assert re.match(r"  plane \d: floor, \d+ pixels, normal \([+-]0\.000, -1\.000, [+-]0\.000\), d \+0\.500 m, "
+                    r"\+0\.00 m above the floor", next(line for line in lines if ": floor," in line))
+    assert re.match(r"  object 1: \d+ pixels at \([+-]0\.\d\d, \+0\.3\d, \+1\.5\d\) m, on plane \d", lines[4]), lines[4]
+
+
+def test_the_planes_and_objects_example_reports_a_bad_file_in_one_line(tmp_path):
+    completed = subprocess.run([sys.executable, str(PLANES_AND_OBJECTS), str(tmp_path / "missing.pcd")],
+                               capture_output=True, text=True, timeout=120)
+    assert completed.returncode == 1
+    assert completed.stderr.startswith("planes_and_objects: error: ") and completed.stderr.count("\n") == 1

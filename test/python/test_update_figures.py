@@ -152,7 +152,10 @@ def test_the_real_pages_carry_every_marker_the_script_fills():
         assert bench.count(f"<!-- figures:{name} begin -->") == 1, name
         assert bench.count(f"<!-- figures:{name} end -->") == 1, name
     readme = (SOURCE / "README.md").read_text()
-    assert readme.count("<!-- figures:speed begin -->") == 1 and readme.count("<!-- figures:speed end -->") == 1
+    for name in ("speed", "peers"):
+        assert readme.count(f"<!-- figures:{name} begin -->") == 1 and readme.count(f"<!-- figures:{name} end -->") == 1
+    results = (SOURCE / "docs/results.md").read_text()
+    assert results.count("<!-- figures:peers begin -->") == 1 and results.count("<!-- figures:peers end -->") == 1
 
 
 def resolution_rows():
@@ -268,3 +271,78 @@ def test_refuses_a_phase_run_without_phase_benchmarks_and_writes_nothing(pages):
     assert done.returncode == 1
     assert "no floodplane/phases" in done.stderr
     assert (pages / "bench.md").read_text() == BENCH_PAGE
+
+
+SIDE_BY_SIDE = """| frame | floodplane ms | CAPE ms | PEAC ms | x CAPE | x PEAC | floodplane M instr | CAPE M instr | instr x CAPE |
+|---|---:|---:|---:|---:|---:|---:|---:|---:|
+| office1 | 40.00 | 10.00 | 20.00 | 4.00 | 2.00 | 200.0 | 10.0 | 20.00 |
+| frame_20121214T142255.814212 | 30.00 | 10.00 | 40.00 | 3.00 | 0.75 | 150.0 | 15.0 | 10.00 |
+| five_people | 60.00 | 12.00 | 30.00 | 5.00 | 2.00 | 300.0 | 10.0 | 30.00 |
+median over frames: floodplane / CAPE 4.00, floodplane / PEAC 2.00, instructions floodplane / CAPE 20.00
+"""
+
+
+def osd_means(table_iou, pieces, bleed, cover, faces, walls):
+    means = dict(zip(["table_iou", "table_pieces", "bleed", "box_cover", "box_faces", "wall_on_plane"],
+                     [table_iou, pieces, bleed, cover, faces, walls]))
+    means.update({f"{key}_frames": 45 for key in list(means)})
+    return {"frames": {}, "means": means}
+
+
+@pytest.fixture
+def peers(pages):
+    """bench/peers.sh's folder: CAPE ahead on speed and on the table, PEAC on the cans' walls."""
+    folder = pages / "peers"
+    folder.mkdir()
+    (folder / "speed.md").write_text("peers: speed\n" + SIDE_BY_SIDE)
+    (folder / "run.txt").write_text("floodplane commit: abc1234\ndate: 2026-12-07T02:20Z\nmachine: 2 cores\n")
+    for method, means in (("floodplane", osd_means(0.95, 1.2, 0.001, 0.8, 2.1, 0.05)),
+                          ("cape", osd_means(0.99, 1.0, 0.001, 0.5, 0.5, 0.05)),
+                          ("peac", osd_means(0.90, 1.5, 0.004, 0.6, 0.8, 0.01))):
+        (folder / f"osd_{method}.json").write_text(json.dumps(means))
+    (pages / "results.md").write_text("# Results\n<!-- figures:peers begin -->\nold\n<!-- figures:peers end -->\nend\n")
+    (pages / "README.md").write_text("Peers: <!-- figures:peers begin -->old<!-- figures:peers end -->.\n")
+    return folder
+
+
+def run_peers(pages, folder):
+    return subprocess.run([sys.executable, str(SCRIPT), "--bench-readme", str(pages / "bench.md"),
+                           "--readme", str(pages / "README.md"), "--results", str(pages / "results.md"),
+                           "--peers", str(folder)], capture_output=True, text=True)
+
+
+def test_writes_the_peers_tables_and_says_where_each_peer_is_ahead(pages, peers):
+    done = run_peers(pages, peers)
+    assert done.returncode == 0, done.stderr
+    results = (pages / "results.md").read_text()
+    assert results.startswith("# Results\n<!-- figures:peers begin -->\nRun 2026-12-07T02:20Z, floodplane at `abc1234`")
+    assert results.endswith("<!-- figures:peers end -->\nend\n") and "old" not in results
+    rows = {line.split("|")[1].strip(): [cell.strip() for cell in line.strip().strip("|").split("|")[1:]]
+            for line in results.splitlines() if line.startswith("| ")}
+    assert rows["office1"] == ["40.00", "10.00", "20.00", "4.00", "2.00", "200.0", "10.0", "20.00"]
+    assert rows["frame_...255.814212"][:5] == ["30.00", "10.00", "40.00", "3.00", "0.75"]
+    # Medians over the frames of the per-frame ratios side_by_side.sh gave.
+    assert rows["**median**"] == ["40.00", "10.00", "30.00", "**4.00**", "**2.00**", "200.0", "10.0", "**20.00**"]
+    assert rows["CAPE"] == ["0.990", "1.000", "0.001", "0.500", "0.500", "0.050"]
+    cape = next(line for line in results.splitlines() if line.startswith("- CAPE: "))
+    assert "floodplane takes 4.0x its time" in cape and "20.0x its instructions" in cape
+    assert "a higher table IoU" in cape and "fewer pieces" in cape
+    assert "bleed" not in cape and "walls" not in cape and "boxes" not in cape  # even, or floodplane ahead
+    peac = next(line for line in results.splitlines() if line.startswith("- PEAC: "))
+    assert "2.0x its time" in peac and "less of the cans' walls on planes" in peac and "table IoU" not in peac
+    readme = (pages / "README.md").read_text()
+    assert readme.startswith("Peers: <!-- figures:peers begin -->on the 7 real Kinect frames floodplane takes 4.0x CAPE's "
+                             "time a frame (20.0x its instructions) and 2.0x PEAC's: both are faster; on the 45 mOSD")
+    assert readme.endswith("<!-- figures:peers end -->.\n")
+
+
+def test_a_peers_run_with_a_failed_runner_is_refused_and_nothing_is_written(pages, peers):
+    (peers / "speed.md").write_text(SIDE_BY_SIDE.replace("| 10.00 | 20.00 | 4.00", "| nan | 20.00 | nan"))
+    done = run_peers(pages, peers)
+    assert done.returncode == 1
+    assert "office1 has no time for every method" in done.stderr
+    assert "old" in (pages / "results.md").read_text() and "old" in (pages / "README.md").read_text()
+    (peers / "speed.md").write_text(SIDE_BY_SIDE)
+    (peers / "osd_peac.json").write_text("{}")
+    done = run_peers(pages, peers)
+    assert done.returncode == 1 and "osd_peac.json: not the JSON of osd_scores.py --json" in done.stderr
