@@ -2,7 +2,13 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs a build tree's floodplane into a temporary prefix and checks it as its users see it.
-# Usage: scripts/check_install.sh <build-dir> <check>...   with the checks
+# Usage: scripts/check_install.sh <build-dir> [--deb] <check>...
+# --deb: the prefix is the Debian package's instead of `cmake --install`'s: `cpack -G DEB`
+#        makes floodplane_<version>_<arch>.deb from the build, which is checked (its files, its
+#        Depends, `apt-get install --simulate` of it: every dependency a Debian package that is
+#        installed or installable here) and extracted into a scratch root (dpkg-deb -x, nothing
+#        installed on the system); the checks then build against <root>/usr.
+# The checks:
 #   consumer    examples/consumer (CMake, both components): the PCL drop-in, a point type of
 #               its own both ways the README gives, every installed header on its own
 #   core        examples/consumer/core (CMake, COMPONENTS core) where PCL cannot be found
@@ -19,23 +25,16 @@
 # PCL findable leaves no PCL_DIR in its cache: nothing even looked for PCL.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-[ $# -ge 2 ] || { echo "usage: $0 <build-dir> <consumer|core|components|pkg-config>..." >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: $0 <build-dir> [--deb] <consumer|core|components|pkg-config>..." >&2; exit 2; }
 build=$(cd "$1" && pwd)
 shift
+from_deb=no
+if [ "$1" = --deb ]; then
+  from_deb=yes
+  shift
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
-cxx=$(cache_value CMAKE_CXX_COMPILER)
-prefix=$work/prefix
-cmake --install "$build" --prefix "$prefix" > "$work/install.log"
-config=$(find "$prefix" -name floodplaneConfig.cmake)
-config_dir=$(dirname "$config")
-libdir=$(dirname "$(find "$prefix" -name 'libfloodplane_core.*' | head -n 1)")
-shared=no
-[ -e "$libdir/libfloodplane_core.so" ] && shared=yes
-with_pcl=no
-[ -f "$config_dir/floodplane-pcl-targets.cmake" ] && with_pcl=yes
 
 fail() { echo "check_install: $*" >&2; exit 1; }
 # Runs a command with its output in a log, which is shown when it fails.
@@ -44,6 +43,68 @@ logged() {
   shift
   "$@" > "$log" 2>&1 || { cat "$log"; fail "failed: $*"; }
 }
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
+cxx=$(cache_value CMAKE_CXX_COMPILER)
+
+# The package as `apt-get install ./floodplane_*.deb` takes it: one file named as Debian names
+# packages, holding the library, its headers, CMake and pkg-config files (and the programs and
+# Python module when the build has them), depending on what they need.
+check_deb() {  # <deb>
+  local deb=$1 files depends
+  files=$(dpkg-deb --contents "$deb")
+  depends=$(dpkg-deb --field "$deb" Depends)
+  echo "check_install: $(basename "$deb"): Depends: $depends"
+  local wanted=(./usr/lib/libfloodplane_core ./usr/include/floodplane/segmenter.h ./usr/include/floodplane/version.h
+                ./usr/lib/cmake/floodplane/floodplaneConfig.cmake ./usr/lib/pkgconfig/floodplane-core.pc)
+  [ "$(cache_value FLOODPLANE_WITH_PCL)" = ON ] &&
+    wanted+=(./usr/lib/libfloodplane. ./usr/include/floodplane/flood_fill_plane_segmentation.h
+             ./usr/lib/pkgconfig/floodplane.pc)
+  [ "$(cache_value FLOODPLANE_BUILD_APPS)" = ON ] &&
+    wanted+=(./usr/bin/pcd_segment ./usr/bin/pcd_compare ./usr/bin/pcd_synth)
+  [ "$(cache_value FLOODPLANE_BUILD_PYTHON)" = ON ] && wanted+=(./usr/lib/python3/dist-packages/floodplane/_floodplane)
+  local file
+  for file in "${wanted[@]}"; do
+    grep -qF " $file" <<< "$files" || fail "$(basename "$deb") has no $file*"
+  done
+  grep -qE ' \./usr/local/| \./(home|tmp|work)/' <<< "$files" && fail "$(basename "$deb") installs outside /usr"
+  grep -q 'libeigen3-dev' <<< "$depends" || fail "$(basename "$deb") does not depend on libeigen3-dev"
+  if [ "$(cache_value FLOODPLANE_BUILD_APPS)" = ON ]; then
+    # dpkg-shlibdeps named the packages of the programs' shared libraries.
+    grep -q 'libpcl-io' <<< "$depends" || fail "$(basename "$deb") does not depend on PCL's io library (shlibdeps)"
+  fi
+  # apt resolves every dependency against this machine's packages and lists (nothing installed).
+  logged "$work/apt-simulate.log" apt-get install --simulate --no-install-recommends "$deb"
+  grep -q '^Inst floodplane ' "$work/apt-simulate.log" || { cat "$work/apt-simulate.log"; fail "apt-get would not install it"; }
+}
+
+if [ "$from_deb" = yes ]; then
+  # cpack runs the build's install rules into a staging folder of its own, under -B.
+  logged "$work/cpack.log" cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/package"
+  debs=("$work"/package/floodplane_*.deb)
+  [ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || { cat "$work/cpack.log"; fail "cpack made no floodplane_*.deb"; }
+  check_deb "${debs[0]}"
+  dpkg-deb --extract "${debs[0]}" "$work/root"
+  prefix=$work/root/usr
+  if [ -x "$prefix/bin/pcd_segment" ]; then
+    "$prefix/bin/pcd_segment" --help > /dev/null || fail "the packaged pcd_segment does not run"
+  fi
+  if [ -d "$prefix/lib/python3/dist-packages/floodplane" ]; then
+    PYTHONPATH=$prefix/lib/python3/dist-packages /usr/bin/python3 -c \
+      "import floodplane, sys; sys.exit(floodplane.__file__.startswith('$prefix/') is False)" ||
+      fail "the packaged Python module does not import from the package"
+  fi
+else
+  prefix=$work/prefix
+  cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+fi
+config=$(find "$prefix" -name floodplaneConfig.cmake)
+config_dir=$(dirname "$config")
+libdir=$(dirname "$(find "$prefix" -name 'libfloodplane_core.*' | head -n 1)")
+shared=no
+[ -e "$libdir/libfloodplane_core.so" ] && shared=yes
+with_pcl=no
+[ -f "$config_dir/floodplane-pcl-targets.cmake" ] && with_pcl=yes
+
 configure() {  # <source> <binary-dir> [cmake options...]
   local source=$1 binary=$2
   shift 2
