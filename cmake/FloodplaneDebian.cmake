@@ -40,7 +40,10 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # dpkg-shlibdeps adds the shared libraries the programs and the module load.
 set(floodplane_debian_depends "libeigen3-dev (>= ${floodplane_min_eigen_version})")
 if(FLOODPLANE_WITH_PCL)
-  list(APPEND floodplane_debian_depends "libpcl-dev (>= ${floodplane_min_pcl_version})")
+  # The component io (floodplane::io, the file formats) also compiles and links against libpng
+  # and nlohmann's JSON headers.
+  list(APPEND floodplane_debian_depends "libpcl-dev (>= ${floodplane_min_pcl_version})" libpng-dev
+       "nlohmann-json3-dev (>= 3.9)")
 endif()
 if(FLOODPLANE_BUILD_PYTHON)
   # The module is built for this interpreter's ABI (python/CMakeLists.txt found it) and
