@@ -11,7 +11,7 @@
 #include "flood/flood_pass.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
-#include "floodplane/segmenter.h"
+#include "floodplane/segmentation.h"
 #include "frame/prepared_frame.h"
 #include "models/facet_pairs.h"
 #include "models/flood_criterion.h"
