@@ -175,8 +175,10 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const CurrentLab
       const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
       for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
         const std::size_t i = row + u;
-        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-          test.add(k, Vec3::load(grid.point(i)));
+        // Within the run the left and right neighbours are on k: only its ends look.
+        const bool across = (u > static_cast<std::size_t>(begin) || inside(i - 1, k)) &&
+                            (u + 1 < static_cast<std::size_t>(end) || inside(i + 1, k));
+        if (across && inside(i - width, k) && inside(i + width, k)) test.add(k, Vec3::load(grid.point(i)));
       }
     });
   }
