@@ -2,14 +2,16 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
 # Every include of the library points down its layers, which are the pipeline's steps:
-#   the API's plain types (floodplane/point_grid.h, plane_fit.h, params.h, noise_model.h)
+#   the API's plain types (floodplane/point_grid.h, plane_fit.h, params.h, noise_model.h,
+#   segmentation_stats.h, segmentation.h)
 #   <- util/ (SIMD, small containers, label-image scans)
 #   <- models/ (what the steps share: noise model, tolerances, flood criterion, plane sums,
 #      planarity test, the plane candidates and their numbers, facet pairs)
 #   <- frame/ (the frame's preparation) <- seeds/ (seed selection) <- flood/ (the flood pass)
 #   <- coarse/ (the coarse planes, s > 1) and regions/ (the planes a user gets), neither
 #      including the other
-#   <- segmenter/ (Segmenter::segment calling them in order; floodplane/segmenter.h)
+#   <- segmenter/ (Segmenter::segment calling them in order; floodplane/segmenter.h, which no
+#      step includes: they take and return the plain types)
 #   <- tracking/, semantics/, objects/, io/, pcl_interface/ and the PCL class (floodplane/flood_fill_plane_segmentation.h).
 # params/ sits beside util/ (it needs the API's params.h alone). A public header includes
 # nothing of src/ or toolkit/. toolkit/ (what the programs, tests and benchmarks share) sits on
@@ -19,17 +21,17 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
-types='floodplane/(point_grid|plane_fit|params|noise_model)\.h'
+types='floodplane/(point_grid|plane_fit|params|noise_model|segmentation_stats|segmentation)\.h'
 # Allowed targets of #include "..." per folder, as one extended regex each.
 declare -A allowed=(
   [util]="^(util/|${types})"
   [params]="^(params/|${types})"
   [models]="^(util/|models/|${types})"
-  [frame]="^(util/|models/|frame/|${types}|floodplane/segmenter\.h)"
-  [seeds]="^(util/|models/|frame/|seeds/|${types}|floodplane/segmenter\.h)"
-  [flood]="^(util/|models/|frame/|seeds/|flood/|${types}|floodplane/segmenter\.h)"
-  [coarse]="^(util/|models/|frame/|seeds/|flood/|coarse/|${types}|floodplane/segmenter\.h)"
-  [regions]="^(util/|models/|frame/|seeds/|flood/|regions/|${types}|floodplane/segmenter\.h)"
+  [frame]="^(util/|models/|frame/|${types})"
+  [seeds]="^(util/|models/|frame/|seeds/|${types})"
+  [flood]="^(util/|models/|frame/|seeds/|flood/|${types})"
+  [coarse]="^(util/|models/|frame/|seeds/|flood/|coarse/|${types})"
+  [regions]="^(util/|models/|frame/|seeds/|flood/|regions/|${types})"
   [segmenter]="^(util/|models/|frame/|seeds/|flood/|coarse/|regions/|segmenter/|${types}|floodplane/segmenter\.h)"
   [tracking]="^(util/|models/|tracking/|floodplane/)"
   [semantics]="^(util/|models/|semantics/|floodplane/)"

@@ -7,73 +7,15 @@
 #include <memory>
 #include <vector>
 
-#include "floodplane/noise_model.h"
 #include "floodplane/params.h"
-#include "floodplane/plane_fit.h"
 #include "floodplane/point_grid.h"
+#include "floodplane/segmentation.h"
 
 /// \file
-/// floodplane::Segmenter, the PCL-free core, and its result floodplane::Segmentation.
+/// floodplane::Segmenter, the PCL-free core (its result, floodplane::Segmentation, is in
+/// floodplane/segmentation.h).
 
 namespace floodplane {
-
-/// Time spent in each phase of one segmentation (the paper's Fig. 5), in milliseconds.
-/// Filled only when Segmenter::Options::measure_phases is set.
-struct PhaseTimes {
-  double preparation = 0.0;     ///< noise estimation, hole filling, smoothing, sub-sampling
-  double seed_selection = 0.0;  ///< scanning for seeds and testing them (Sec. III-C)
-  double flood_fill = 0.0;      ///< growing segments (Sec. III-A, III-B); at s > 1 also the coarse planes claimed
-                                ///< into the fine pass
-  double relabelling = 0.0;     ///< connected components after Eq. 4 reassignments
-  double merging = 0.0;         ///< agglomerative plane merging (Sec. III-D)
-  double region_output = 0.0;   ///< labels at full resolution, refinement, plane fits
-  /// The PCL class's work around the core: input checks, the shift to the sensor origin and
-  /// PCL's outputs (regions, coefficients, indices, the label cloud). 0 from Segmenter.
-  double pcl_conversion = 0.0;
-  /// \return the sum of the phases [ms]
-  double total() const {
-    return preparation + seed_selection + flood_fill + relabelling + merging + region_output + pcl_conversion;
-  }
-};
-
-/// What happened inside one segmentation, for tests, benchmarks and curious users.
-struct SegmentationStats {
-  std::size_t seed_candidates = 0;    ///< unclaimed pixels tested as seeds
-  std::size_t seeds = 0;              ///< candidates that passed Eqs. 5-7 (one flood each)
-  std::size_t pixels_taken_over = 0;  ///< pixels reassigned by Eq. 4
-  std::size_t segments = 0;           ///< segments after relabelling
-  std::size_t merges = 0;             ///< merges by Eq. 9
-  /// The noise model was the previous frame's (Segmenter::Options::head_start), not measured.
-  bool head_start = false;
-};
-
-/// One plane found in the cloud.
-struct SegmentedPlane {
-  PlaneFit fit;                    ///< least-squares plane of the inliers (sensor frame)
-  std::uint32_t inlier_count = 0;  ///< pixels at full resolution
-  /// Where its boundary starts: its first pixel in raster order; at sub-sampling s > 1 the left
-  /// end of the row through the first pixel of its body (the first block inside it), so
-  /// that a stray pixel that fits the plane apart from it does not stand for its boundary.
-  std::size_t first_pixel = 0;
-};
-
-/// The result: a label per pixel of the full-resolution grid and the planes.
-struct Segmentation {
-  int width = 0;                       ///< the grid's width (points per row)
-  int height = 0;                      ///< the grid's height (rows)
-  std::vector<std::uint32_t> labels;   ///< row-major; 0 = no plane, k = planes[k - 1]
-  std::vector<SegmentedPlane> planes;  ///< largest first
-  NoiseModel noise;                    ///< the depth noise the segmentation assumed
-  PhaseTimes phases;                   ///< time per phase, with Segmenter::Options::measure_phases
-  SegmentationStats stats;             ///< counts of what happened inside
-
-  /// Appends the outer boundary of planes[plane] to `contour`: linear pixel indices in order,
-  /// clockwise on screen (y down), 8-connected, starting at the plane's first pixel; a pixel
-  /// on a one-pixel-wide neck appears twice. Costs the boundary's length, not the area.
-  /// \param plane        index into planes (label - 1)
-  /// \param[out] contour the boundary's pixels are appended to it
-  void boundary(std::size_t plane, std::vector<int>& contour) const;
-};
 
 /// The paper's method over a plain point grid, PCL-free: seed selection, span flood fill
 /// with the distance buffer, union-find relabelling, plane merging, region output.

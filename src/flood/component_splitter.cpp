@@ -13,11 +13,21 @@ std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int wid
                                                    std::size_t smallest_piece) {
   runs_.assign(runs, runs + run_count);
   for (Run& run : runs_) run.set = -1;
-  std::vector<std::int32_t> created;
   sets_.reset(0);
   set_size_.clear();
   released_ = 0;
+  uniteRuns();
+  // A segment still in one piece (the common case) needs no second pass.
+  const std::size_t roots = sumSizesPerRoot();
+  if (roots == 0) return {};
+  if (roots == 1 && set_size_[static_cast<std::size_t>(sets_.find(0))] >= smallest_piece) {
+    for (Run& run : runs_) run.set = label;
+    return {};
+  }
+  return relabel(labels, width, label, next_label, smallest_piece);
+}
 
+void ComponentSplitter::uniteRuns() {
   // Pass 1 over runs, not pixels: each run is united with the runs of the row above it
   // overlaps (4-connectivity: they share a column). A segment is a few long runs per row, so
   // the union-find work is per run.
@@ -46,8 +56,9 @@ std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int wid
     }
     set_size_[static_cast<std::size_t>(run.set)] += static_cast<std::size_t>(run.x_end - run.x_begin + 1);
   }
+}
 
-  // Sizes per root; a segment still in one piece (the common case) needs no second pass.
+std::size_t ComponentSplitter::sumSizesPerRoot() {
   std::size_t roots = 0;
   for (std::size_t set = 0; set < set_size_.size(); ++set) {
     const std::int32_t root = sets_.find(static_cast<std::int32_t>(set));
@@ -57,14 +68,14 @@ std::vector<std::int32_t> ComponentSplitter::split(std::int32_t* labels, int wid
       set_size_[static_cast<std::size_t>(root)] += set_size_[set];
     }
   }
-  if (roots == 0) return created;
-  if (roots == 1 && set_size_[static_cast<std::size_t>(sets_.find(0))] >= smallest_piece) {
-    for (Run& run : runs_) run.set = label;
-    return created;
-  }
+  return roots;
+}
 
+std::vector<std::int32_t> ComponentSplitter::relabel(std::int32_t* labels, int width, std::int32_t label,
+                                                     std::int32_t& next_label, std::size_t smallest_piece) {
   // Pass 2 over the runs: one label per root, in raster order of first appearance; crumbs
   // get 0. Afterwards each run's `set` holds the label its pixels received.
+  std::vector<std::int32_t> created;
   final_label_.assign(set_size_.size(), -1);
   bool first = true;
   for (Run& run : runs_) {

@@ -39,6 +39,11 @@ class ComponentSplitter {
   const std::vector<Run>& runs() const { return runs_; }
 
  private:
+  void uniteRuns();               // pass 1: the runs' sets, their sizes per set
+  std::size_t sumSizesPerRoot();  // the sizes per root; returns how many roots
+  std::vector<std::int32_t> relabel(std::int32_t* labels, int width, std::int32_t label, std::int32_t& next_label,
+                                    std::size_t smallest_piece);  // pass 2
+
   std::vector<Run> runs_;
   std::vector<std::int32_t> final_label_;  // per set root: the label it receives
   std::vector<std::size_t> set_size_;      // pixels per set; per root after pass 1

@@ -12,7 +12,7 @@
 #include "flood/segment_borders.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
-#include "floodplane/segmenter.h"
+#include "floodplane/segmentation_stats.h"
 #include "frame/flood_grid.h"
 #include "models/tolerances.h"
 #include "seeds/leftover_seeds.h"

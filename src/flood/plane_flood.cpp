@@ -200,20 +200,7 @@ class FloodVisitor {
     float distances[kGroup];
     distance.store(distances);
     if (pass.all()) {
-      buffer_.claimRun(first, kGroup, label_, distances);
-      LaneSums lanes;
-      lanes.add(q);
-      if (owner == 0) {
-        lanes.addTo(self_.sums);
-      } else {
-        PlaneSums group;  // of the four points, once for both segments
-        lanes.addTo(group);
-        Segment& loser = segments_[owner];
-        loser.sums.subtract(group);
-        loser.lost_pixels = true;
-        taken_over_ += kGroup;
-        self_.sums.merge(group);
-      }
+      claimGroup(first, owner, q, distances);
       return kGroup;
     }
     // The pixels before the first that fails, in the order of the walk, as join() takes them.
@@ -232,6 +219,24 @@ class FloodVisitor {
       self_.sums.add(point);
     }
     return passing;
+  }
+
+  // Claims the kGroup pixels from `first` on, points `q`, at `distances`, from `owner` (0: none).
+  void claimGroup(std::size_t first, std::int32_t owner, const PointLanes& q, const float* distances) {
+    buffer_.claimRun(first, kGroup, label_, distances);
+    LaneSums lanes;
+    lanes.add(q);
+    if (owner == 0) {
+      lanes.addTo(self_.sums);
+      return;
+    }
+    PlaneSums group;  // of the four points, once for both segments
+    lanes.addTo(group);
+    Segment& loser = segments_[owner];
+    loser.sums.subtract(group);
+    loser.lost_pixels = true;
+    taken_over_ += kGroup;
+    self_.sums.merge(group);
   }
 
 #endif

@@ -117,6 +117,31 @@ void PlaneMerger::sortEdges() {
   edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
 }
 
+void PlaneMerger::inheritNeighbours(std::int32_t keep, std::int32_t gone, SegmentBorderMap& borders) {
+  // The survivor inherits the other's neighbours and its borders with them; they now point
+  // at the survivor.
+  borders.erase(borderKey(keep, gone));
+  std::vector<std::int32_t>& kept = neighbours_[keep];
+  for (const std::int32_t other : neighbours_[gone]) {
+    if (other == keep) continue;
+    kept.push_back(other);
+    if (const auto inherited = borders.find(borderKey(gone, other)); inherited != borders.end()) {
+      const SegmentBorder moved = inherited->second;  // copied: the insertion below may rehash
+      borders.erase(inherited);
+      // gone's side of the moved border is keep's side of this one.
+      borders[borderKey(keep, other)].merge(moved, (gone < other) != (keep < other));
+    }
+    std::vector<std::int32_t>& theirs = neighbours_[other];
+    std::replace(theirs.begin(), theirs.end(), gone, keep);
+    std::sort(theirs.begin(), theirs.end());
+    theirs.erase(std::unique(theirs.begin(), theirs.end()), theirs.end());
+  }
+  neighbours_[gone].clear();
+  kept.erase(std::remove(kept.begin(), kept.end(), gone), kept.end());
+  std::sort(kept.begin(), kept.end());
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+}
+
 void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& criterion, SegmentBorderMap& borders) {
   const std::size_t n = parent_.size();
   fits_.resize(n);
@@ -146,29 +171,8 @@ void PlaneMerger::merge(std::vector<PlaneSums>& sums, const MergeCriterion& crit
     parent_[gone] = keep;
     ++merges_;
 
-    // The survivor inherits the other's neighbours and its borders with them; they now point
-    // at the survivor.
-    borders.erase(borderKey(keep, gone));
-    std::vector<std::int32_t>& kept = neighbours_[keep];
-    for (const std::int32_t other : neighbours_[gone]) {
-      if (other == keep) continue;
-      kept.push_back(other);
-      if (const auto inherited = borders.find(borderKey(gone, other)); inherited != borders.end()) {
-        const SegmentBorder moved = inherited->second;  // copied: the insertion below may rehash
-        borders.erase(inherited);
-        // gone's side of the moved border is keep's side of this one.
-        borders[borderKey(keep, other)].merge(moved, (gone < other) != (keep < other));
-      }
-      std::vector<std::int32_t>& theirs = neighbours_[other];
-      std::replace(theirs.begin(), theirs.end(), gone, keep);
-      std::sort(theirs.begin(), theirs.end());
-      theirs.erase(std::unique(theirs.begin(), theirs.end()), theirs.end());
-    }
-    neighbours_[gone].clear();
-    kept.erase(std::remove(kept.begin(), kept.end(), gone), kept.end());
-    std::sort(kept.begin(), kept.end());
-    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
-    for (const std::int32_t other : kept) consider(keep, other, sums, criterion, borders);
+    inheritNeighbours(keep, gone, borders);
+    for (const std::int32_t other : neighbours_[keep]) consider(keep, other, sums, criterion, borders);
   }
 
   // Point every segment at its final root.

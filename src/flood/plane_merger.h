@@ -76,6 +76,9 @@ class PlaneMerger {
   const std::int32_t* rootData() const { return parent_.data(); }
 
  private:
+  // The survivor `keep` of a merge inherits `gone`'s neighbours and its borders with them,
+  // which now point at the survivor.
+  void inheritNeighbours(std::int32_t keep, std::int32_t gone, SegmentBorderMap& borders);
   struct Candidate {
     double cost;
     std::int32_t a, b;

@@ -222,25 +222,83 @@ void BlockGrid::readRow(const PointGrid& full, int by) {
   }
 }
 
+namespace {
+
+// The pixels of one block, numbered in raster order.
+struct BlockPixels {
+  const PointGrid& full;
+  Span span;
+  int w, h;
+  BlockPixels(const PointGrid& grid, const Span& b)
+      : full(grid), span(b), w(b.u_end - b.u_begin), h(b.v_end - b.v_begin) {}
+  const float* at(int k) const {
+    return full.point(static_cast<std::size_t>(span.v_begin + k / w) * static_cast<std::size_t>(full.width) +
+                      static_cast<std::size_t>(span.u_begin + k % w));
+  }
+};
+
+// Marks in `kept` the pixels connected to pixel `first` through depth steps of at most `step`
+// (4-neighbours); returns how many.
+std::uint32_t keepFirstSurface(const BlockPixels& block, int first, float step, std::vector<std::uint8_t>& kept,
+                               std::vector<int>& stack) {
+  const int w = block.w, h = block.h;
+  kept.assign(static_cast<std::size_t>(w * h), 0);
+  kept[static_cast<std::size_t>(first)] = 1;
+  stack.assign(1, first);
+  std::uint32_t count = 1;
+  while (!stack.empty()) {
+    const int k = stack.back();
+    stack.pop_back();
+    const float depth = block.at(k)[2];
+    const int x = k % w, y = k / w;
+    const int neighbours[4] = {x > 0 ? k - 1 : -1, x + 1 < w ? k + 1 : -1, y > 0 ? k - w : -1, y + 1 < h ? k + w : -1};
+    for (const int j : neighbours) {
+      if (j < 0 || kept[static_cast<std::size_t>(j)]) continue;
+      const float* q = block.at(j);
+      if (!finitePoint(q) || !(std::abs(q[2] - depth) <= step)) continue;
+      kept[static_cast<std::size_t>(j)] = 1;
+      stack.push_back(j);
+      ++count;
+    }
+  }
+  return count;
+}
+
+// The mean (padded to 4 floats) and scatter moments (8 floats) of the `count` kept pixels.
+void sumKept(const BlockPixels& block, const std::vector<std::uint8_t>& kept, std::uint32_t count, float* mean,
+             float* moments) {
+  float sum[3] = {0.f, 0.f, 0.f};
+  for (int k = 0; k < block.w * block.h; ++k) {
+    if (!kept[static_cast<std::size_t>(k)]) continue;
+    const float* p = block.at(k);
+    sum[0] += p[0];
+    sum[1] += p[1];
+    sum[2] += p[2];
+  }
+  const float n = static_cast<float>(count);
+  Vec3{sum[0] / n, sum[1] / n, sum[2] / n}.storePadded(mean);
+  ScatterSums scatter;
+  for (int k = 0; k < block.w * block.h; ++k) {
+    if (kept[static_cast<std::size_t>(k)]) scatter.add(block.at(k), mean);
+  }
+  scatter.store(moments);
+}
+
+}  // namespace
+
 void BlockGrid::separateSurfaces(const PointGrid& full, const NoiseModel& pixel_noise, float angular_pitch) {
   const int s = factor_;
-  std::vector<int>& stack = stack_;
-  std::vector<std::uint8_t>& kept = kept_;
   for (int by = 0; by < means_.height; ++by) {
     for (int bx = 0; bx < means_.width; ++bx) {
       const std::size_t i =
           static_cast<std::size_t>(by) * static_cast<std::size_t>(means_.width) + static_cast<std::size_t>(bx);
       if (counts_[i] < 2) continue;
-      const Span b{bx * s, std::min(bx * s + s, full.width), by * s, std::min(by * s + s, full.height)};
-      const int w = b.u_end - b.u_begin, h = b.v_end - b.v_begin;
-      const auto at = [&](int k) {  // pixel k of the block, in raster order
-        return full.point(static_cast<std::size_t>(b.v_begin + k / w) * static_cast<std::size_t>(full.width) +
-                          static_cast<std::size_t>(b.u_begin + k % w));
-      };
+      const BlockPixels block(
+          full, Span{bx * s, std::min(bx * s + s, full.width), by * s, std::min(by * s + s, full.height)});
       // The block's first measured pixel, in raster order: the surface the block samples.
       int first = 0;
-      while (!finitePoint(at(first))) ++first;
-      const float* reference = at(first);
+      while (!finitePoint(block.at(first))) ++first;
+      const float* reference = block.at(first);
       const double range_sq = static_cast<double>(reference[0]) * reference[0] +
                               static_cast<double>(reference[1]) * reference[1] +
                               static_cast<double>(reference[2]) * reference[2];
@@ -249,48 +307,13 @@ void BlockGrid::separateSurfaces(const PointGrid& full, const NoiseModel& pixel_
       const float step = static_cast<float>(kNeighbourFootprints * angular_pitch * std::sqrt(range_sq) +
                                             noiseDeviations(pixel_noise, kDifferenceDeviations, range_sq));
       if (!(depth_spread_[i] > step)) continue;  // one surface, up to the noise
-      if (static_cast<int>(counts_[i]) == w * h && connectedAlongRowsAndFirstColumn(full, b, step))
+      if (static_cast<int>(counts_[i]) == block.w * block.h && connectedAlongRowsAndFirstColumn(full, block.span, step))
         continue;  // every pixel measured and joined to the first by such steps: one surface
-      // The pixels connected to the first through such steps (4-neighbours).
-      kept.assign(static_cast<std::size_t>(w * h), 0);
-      kept[static_cast<std::size_t>(first)] = 1;
-      stack.assign(1, first);
-      std::uint32_t count = 1;
-      while (!stack.empty()) {
-        const int k = stack.back();
-        stack.pop_back();
-        const float depth = at(k)[2];
-        const int x = k % w, y = k / w;
-        const int neighbours[4] = {x > 0 ? k - 1 : -1, x + 1 < w ? k + 1 : -1, y > 0 ? k - w : -1,
-                                   y + 1 < h ? k + w : -1};
-        for (const int j : neighbours) {
-          if (j < 0 || kept[static_cast<std::size_t>(j)]) continue;
-          const float* q = at(j);
-          if (!finitePoint(q) || !(std::abs(q[2] - depth) <= step)) continue;
-          kept[static_cast<std::size_t>(j)] = 1;
-          stack.push_back(j);
-          ++count;
-        }
-      }
+      const std::uint32_t count = keepFirstSurface(block, first, step, kept_, stack_);
       if (count == counts_[i]) continue;  // every measured pixel on the first one's surface
       split_[i] = 1;
       counts_[i] = static_cast<std::uint16_t>(count);
-      float sum[3] = {0.f, 0.f, 0.f};
-      for (int k = 0; k < w * h; ++k) {
-        if (!kept[static_cast<std::size_t>(k)]) continue;
-        const float* p = at(k);
-        sum[0] += p[0];
-        sum[1] += p[1];
-        sum[2] += p[2];
-      }
-      float* mean = &mean_points_[4 * i];
-      const float n = static_cast<float>(count);
-      Vec3{sum[0] / n, sum[1] / n, sum[2] / n}.storePadded(mean);
-      ScatterSums scatter;
-      for (int k = 0; k < w * h; ++k) {
-        if (kept[static_cast<std::size_t>(k)]) scatter.add(at(k), mean);
-      }
-      scatter.store(&moments_[8 * i]);
+      sumKept(block, kept_, count, &mean_points_[4 * i], &moments_[8 * i]);
     }
   }
 }

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "floodplane/noise_model.h"
 #include "floodplane/point_grid.h"
-#include "floodplane/segmenter.h"
 
 namespace floodplane {
 

@@ -56,6 +56,10 @@ void FacetPairs::find(const PointGrid& grid, const Labels& labels, const std::ve
       touching_.push_back({key, 1});
   };
   forEachLabelBorder(grid, labels.image, touch);
+  keepLongBorders();
+}
+
+void FacetPairs::keepLongBorders() {
   std::sort(touching_.begin(), touching_.end(), [](const Touch& a, const Touch& b) { return a.key < b.key; });
   // The runs of pixel pairs by border, each border's in the scan's order.
   std::stable_sort(runs_.begin(), runs_.end(), [](const Run& a, const Run& b) { return a.key < b.key; });

@@ -68,6 +68,9 @@ class FacetPairs {
     std::uint32_t first;  // its first pixel pair in pixel_pairs_
     std::uint32_t count;  // its pixel pairs, 3-D neighbours or not
   };
+  // The pairs whose borders have at least kMinimumBorder 3-D neighbours, with their runs.
+  void keepLongBorders();
+
   std::vector<Touch> touching_;  // per stretch of one border in the scan, 3-D neighbours
   std::vector<Run> runs_;        // per stretch of one border in the scan
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pixel_pairs_;  // (low plane's pixel, high one's)

@@ -9,6 +9,7 @@
 
 #include "floodplane/plane_fit.h"
 #include "models/tolerances.h"
+#include "util/simd.h"
 #include "util/vec3.h"
 
 namespace floodplane {
@@ -143,7 +144,45 @@ inline void PlanarityTest::addScaled(std::uint32_t k, const Vec3& point, Scale s
 }
 
 inline void PlanarityTest::add(std::uint32_t k, const Vec3& point) {
+#if FLOODPLANE_SIMD
+  // The same 35 sums two at a time (SSE2 doubles): each lane's product and sum is the scalar
+  // one's IEEE operation on the same operands, so the sums are bit for bit addScaled's.
+  const Vec3 d = point - origins_[k - 1];
+  double* m = moments_.data() + static_cast<std::size_t>(k - 1) * kMonomials;
+  const auto accumulate = [m](int i, __m128d values) { _mm_storeu_pd(m + i, _mm_add_pd(_mm_loadu_pd(m + i), values)); };
+  const double x = d.x, y = d.y, z = d.z;
+  const __m128d vx = _mm_set1_pd(x), vz = _mm_set1_pd(z);
+  const __m128d x_y = _mm_set_pd(y, x), y_z = _mm_set_pd(z, y);
+  const __m128d xx_xy = _mm_mul_pd(vx, x_y);                // (xx, xy)
+  const __m128d xz_yy = _mm_mul_pd(x_y, _mm_set_pd(y, z));  // (xz, yy)
+  const __m128d yz_zz = _mm_mul_pd(vz, y_z);                // (yz, zz)
+  const __m128d xy_xz = _mm_shuffle_pd(xx_xy, xz_yy, 1);    // (xy, xz)
+  const __m128d yy_yz = _mm_shuffle_pd(xz_yy, yz_zz, 1);    // (yy, yz)
+  const __m128d xx = _mm_unpacklo_pd(xx_xy, xx_xy);
+  const __m128d yy = _mm_unpackhi_pd(xz_yy, xz_yy);
+  const __m128d zz = _mm_unpackhi_pd(yz_zz, yz_zz);
+  const __m128d xy = _mm_unpackhi_pd(xx_xy, xx_xy);
+  accumulate(0, _mm_set_pd(x, 1.0));
+  accumulate(2, y_z);
+  accumulate(4, xx_xy);
+  accumulate(6, xz_yy);
+  accumulate(8, yz_zz);
+  accumulate(10, _mm_mul_pd(xx, x_y));                              // xx x, xx y
+  accumulate(12, _mm_mul_pd(xx_xy, _mm_set_pd(y, z)));              // xx z, xy y
+  accumulate(14, _mm_mul_pd(xy_xz, vz));                            // xy z, xz z
+  accumulate(16, _mm_mul_pd(yy, y_z));                              // yy y, yy z
+  accumulate(18, _mm_mul_pd(yz_zz, vz));                            // yz z, zz z
+  accumulate(20, _mm_mul_pd(xx, xx_xy));                            // xx xx, xx xy
+  accumulate(22, _mm_mul_pd(xx, _mm_shuffle_pd(xy_xz, yy_yz, 1)));  // xx xz, xx yy
+  accumulate(24, _mm_mul_pd(xx, yz_zz));                            // xx yz, xx zz
+  accumulate(26, _mm_mul_pd(xy, yy_yz));                            // xy yy, xy yz
+  accumulate(28, _mm_mul_pd(xy_xz, zz));                            // xy zz, xz zz
+  accumulate(30, _mm_mul_pd(yy, yy_yz));                            // yy yy, yy yz
+  accumulate(32, _mm_mul_pd(yy_yz, zz));                            // yy zz, yz zz
+  m[34] += _mm_cvtsd_f64(zz) * _mm_cvtsd_f64(zz);
+#else
   addScaled(k, point, [](double value) { return value; });
+#endif
 }
 
 inline void PlanarityTest::add(std::uint32_t k, const Vec3& point, double weight) {

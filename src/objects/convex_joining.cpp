@@ -34,36 +34,25 @@ bool convexContact(const SurfacePatch& a, const SurfacePatch& b, double concavit
   return (a.normal - b.normal).dot(line) > 0.0;
 }
 
-void joinConvexPatches(const SurfacePatches& patches, double concavity_tolerance_rad, UnionFind& objects) {
-  const std::size_t count = patches.patches.size();
-  objects.reset(count);
-  // The touching patches of one plane are one surface: a plane seen in two parts (a box's top
-  // on either side of what stands before it) is two, as the image shows them.
-  for (const PatchContact& contact : patches.contacts) {
-    const std::uint32_t plane = patches.patches[static_cast<std::size_t>(contact.first)].plane;
-    if (plane != 0 && plane == patches.patches[static_cast<std::size_t>(contact.second)].plane) {
-      objects.unite(contact.first, contact.second);
-    }
+namespace {
+
+/// The steps of joinConvexPatches over one frame's patches, in the order they unite.
+class ConvexJoiner {
+ public:
+  ConvexJoiner(const SurfacePatches& patches, double concavity_tolerance_rad, UnionFind& objects)
+      : patches_(patches), tolerance_(concavity_tolerance_rad), objects_(objects) {}
+
+  void run() {
+    joinPlaneParts();
+    judgeContacts();
+    judgeAcrossStrips();
+    countVotes();
+    joinStrips();
   }
-  // The surface a patch is part of: its plane's part (as a negative number), or itself on none.
-  std::vector<std::int64_t> surface_of(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    const auto patch = static_cast<std::int32_t>(k);
-    surface_of[k] = patches.patches[k].plane != 0 ? -1 - static_cast<std::int64_t>(objects.find(patch)) : patch;
-  }
-  const auto surface = [&](std::int32_t patch) { return surface_of[static_cast<std::size_t>(patch)]; };
-  // The contact with the most pixel pairs of each patch that spans no plane.
-  std::vector<std::int32_t> best(count, -1);
-  std::vector<std::uint32_t> best_pairs(count, 0);
-  auto offer = [&](std::int32_t patch, std::int32_t other, std::uint32_t pairs) {
-    const auto k = static_cast<std::size_t>(patch);
-    if (pairs > best_pairs[k]) {
-      best_pairs[k] = pairs;
-      best[k] = other;
-    }
-  };
-  // Votes of the contacts between two surfaces at least one of which is a plane: pixel pairs
-  // in convex contacts (positive) against concave ones.
+
+ private:
+  /// Votes of the contacts between two surfaces at least one of which is a plane: pixel pairs
+  /// in convex contacts (positive) against concave ones.
   struct Vote {
     std::int64_t first;
     std::int64_t second;
@@ -71,69 +60,129 @@ void joinConvexPatches(const SurfacePatches& patches, double concavity_tolerance
     std::int32_t patch_a;
     std::int32_t patch_b;
   };
-  std::vector<Vote> votes;
-  // Two patches with normals that touch, directly or across a patch with none (a strip along
-  // a crease), weighing `pairs` pixel pairs.
-  const auto judge = [&](std::int32_t first, std::int32_t second, std::uint32_t pairs) {
-    const std::int64_t sa = surface(first);
-    const std::int64_t sb = surface(second);
-    if (sa == sb) return;
-    const SurfacePatch& a = patches.patches[static_cast<std::size_t>(first)];
-    const SurfacePatch& b = patches.patches[static_cast<std::size_t>(second)];
-    const bool convex = convexContact(a, b, concavity_tolerance_rad);
-    if (a.plane == 0 && b.plane == 0) {
-      if (convex) objects.unite(first, second);
-      return;
-    }
-    const std::int64_t weight = convex ? pairs : -static_cast<std::int64_t>(pairs);
-    votes.push_back({std::min(sa, sb), std::max(sa, sb), weight, first, second});
-  };
-  // The neighbours with normals of each patch without one.
+  /// A neighbour with a normal of a patch without one.
   struct Across {
     std::int32_t middle;
     std::int32_t other;
     std::uint32_t pairs;
   };
-  std::vector<Across> across;
-  for (const PatchContact& contact : patches.contacts) {
-    const SurfacePatch& a = patches.patches[static_cast<std::size_t>(contact.first)];
-    const SurfacePatch& b = patches.patches[static_cast<std::size_t>(contact.second)];
-    if (a.normal.isZero() || b.normal.isZero()) {
-      if (a.normal.isZero()) offer(contact.first, contact.second, contact.pairs);
-      if (b.normal.isZero()) offer(contact.second, contact.first, contact.pairs);
-      if (a.normal.isZero() && !b.normal.isZero()) across.push_back({contact.first, contact.second, contact.pairs});
-      if (b.normal.isZero() && !a.normal.isZero()) across.push_back({contact.second, contact.first, contact.pairs});
-      continue;
+
+  const SurfacePatch& patch(std::int32_t k) const { return patches_.patches[static_cast<std::size_t>(k)]; }
+
+  /// The touching patches of one plane are one surface: a plane seen in two parts (a box's top
+  /// on either side of what stands before it) is two, as the image shows them. Then the surface
+  /// a patch is part of: its plane's part (as a negative number), or itself on none.
+  void joinPlaneParts() {
+    const std::size_t count = patches_.patches.size();
+    objects_.reset(count);
+    for (const PatchContact& contact : patches_.contacts) {
+      const std::uint32_t plane = patch(contact.first).plane;
+      if (plane != 0 && plane == patch(contact.second).plane) objects_.unite(contact.first, contact.second);
     }
-    judge(contact.first, contact.second, contact.pairs);
+    surface_of_.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto id = static_cast<std::int32_t>(k);
+      surface_of_[k] = patches_.patches[k].plane != 0 ? -1 - static_cast<std::int64_t>(objects_.find(id)) : id;
+    }
+    best_.assign(count, -1);
+    best_pairs_.assign(count, 0);
   }
-  std::sort(across.begin(), across.end(), [](const Across& x, const Across& y) { return x.middle < y.middle; });
-  for (std::size_t k = 0; k < across.size();) {
-    std::size_t end = k;
-    while (end < across.size() && across[end].middle == across[k].middle) ++end;
-    for (std::size_t i = k; i < end; ++i) {
-      for (std::size_t j = i + 1; j < end; ++j) {
-        judge(std::min(across[i].other, across[j].other), std::max(across[i].other, across[j].other),
-              std::min(across[i].pairs, across[j].pairs));
+
+  /// Keeps the contact with the most pixel pairs of each patch that spans no plane.
+  void offer(std::int32_t strip, std::int32_t other, std::uint32_t pairs) {
+    const auto k = static_cast<std::size_t>(strip);
+    if (pairs > best_pairs_[k]) {
+      best_pairs_[k] = pairs;
+      best_[k] = other;
+    }
+  }
+
+  /// Two patches with normals that touch, directly or across a patch with none (a strip along
+  /// a crease), weighing `pairs` pixel pairs.
+  void judge(std::int32_t first, std::int32_t second, std::uint32_t pairs) {
+    const std::int64_t sa = surface_of_[static_cast<std::size_t>(first)];
+    const std::int64_t sb = surface_of_[static_cast<std::size_t>(second)];
+    if (sa == sb) return;
+    const SurfacePatch& a = patch(first);
+    const SurfacePatch& b = patch(second);
+    const bool convex = convexContact(a, b, tolerance_);
+    if (a.plane == 0 && b.plane == 0) {
+      if (convex) objects_.unite(first, second);
+      return;
+    }
+    const std::int64_t weight = convex ? pairs : -static_cast<std::int64_t>(pairs);
+    votes_.push_back({std::min(sa, sb), std::max(sa, sb), weight, first, second});
+  }
+
+  void judgeContacts() {
+    for (const PatchContact& contact : patches_.contacts) {
+      const bool a_flat = patch(contact.first).normal.isZero();
+      const bool b_flat = patch(contact.second).normal.isZero();
+      if (!a_flat && !b_flat) {
+        judge(contact.first, contact.second, contact.pairs);
+        continue;
       }
+      if (a_flat) offer(contact.first, contact.second, contact.pairs);
+      if (b_flat) offer(contact.second, contact.first, contact.pairs);
+      if (a_flat && !b_flat) across_.push_back({contact.first, contact.second, contact.pairs});
+      if (b_flat && !a_flat) across_.push_back({contact.second, contact.first, contact.pairs});
     }
-    k = end;
   }
-  std::sort(votes.begin(), votes.end(),
-            [](const Vote& x, const Vote& y) { return x.first != y.first ? x.first < y.first : x.second < y.second; });
-  for (std::size_t k = 0; k < votes.size();) {
-    std::size_t end = k;
-    std::int64_t sum = 0;
-    while (end < votes.size() && votes[end].first == votes[k].first && votes[end].second == votes[k].second) {
-      sum += votes[end].pairs;
-      ++end;
+
+  /// The patches with normals on either side of a strip without one, judged as touching.
+  void judgeAcrossStrips() {
+    std::sort(across_.begin(), across_.end(), [](const Across& x, const Across& y) { return x.middle < y.middle; });
+    for (std::size_t k = 0; k < across_.size();) {
+      std::size_t end = k;
+      while (end < across_.size() && across_[end].middle == across_[k].middle) ++end;
+      for (std::size_t i = k; i < end; ++i) {
+        for (std::size_t j = i + 1; j < end; ++j) {
+          judge(std::min(across_[i].other, across_[j].other), std::max(across_[i].other, across_[j].other),
+                std::min(across_[i].pairs, across_[j].pairs));
+        }
+      }
+      k = end;
     }
-    if (sum > 0) objects.unite(votes[k].patch_a, votes[k].patch_b);
-    k = end;
   }
-  for (std::size_t k = 0; k < count; ++k) {
-    if (best[k] >= 0) objects.unite(static_cast<std::int32_t>(k), best[k]);
+
+  /// Two surfaces one of which is a plane are joined when their contacts' votes sum positive.
+  void countVotes() {
+    std::sort(votes_.begin(), votes_.end(), [](const Vote& x, const Vote& y) {
+      return x.first != y.first ? x.first < y.first : x.second < y.second;
+    });
+    for (std::size_t k = 0; k < votes_.size();) {
+      std::size_t end = k;
+      std::int64_t sum = 0;
+      while (end < votes_.size() && votes_[end].first == votes_[k].first && votes_[end].second == votes_[k].second) {
+        sum += votes_[end].pairs;
+        ++end;
+      }
+      if (sum > 0) objects_.unite(votes_[k].patch_a, votes_[k].patch_b);
+      k = end;
+    }
   }
+
+  /// Each strip without a normal joins the patch it shares the most pixel pairs with.
+  void joinStrips() {
+    for (std::size_t k = 0; k < best_.size(); ++k) {
+      if (best_[k] >= 0) objects_.unite(static_cast<std::int32_t>(k), best_[k]);
+    }
+  }
+
+  const SurfacePatches& patches_;
+  const double tolerance_;
+  UnionFind& objects_;
+  std::vector<std::int64_t> surface_of_;
+  std::vector<std::int32_t> best_;
+  std::vector<std::uint32_t> best_pairs_;
+  std::vector<Vote> votes_;
+  std::vector<Across> across_;
+};
+
+}  // namespace
+
+void joinConvexPatches(const SurfacePatches& patches, double concavity_tolerance_rad, UnionFind& objects) {
+  ConvexJoiner(patches, concavity_tolerance_rad, objects).run();
 }
 
 void absorbFragments(const SurfacePatches& patches, std::uint32_t min_pixels, UnionFind& objects) {

@@ -92,6 +92,76 @@ struct ObjectWorkspace {
   SurfaceWorkspace surfaces;
 };
 
+/// The objects: the joined patches, largest first (ties in raster order of their first
+/// pixel), those still below the smallest size (touching no object) dropped. Returns the
+/// object id of each patch (0: none) and sizes `objects`, numbered, with empty boxes.
+std::vector<std::uint32_t> numberObjects(const SurfacePatches& patches, UnionFind& union_find, std::uint32_t min_pixels,
+                                         std::vector<SegmentedObject>& objects) {
+  const std::size_t patch_count = patches.patches.size();
+  std::vector<std::uint32_t> pixels_of_root(patch_count, 0);
+  for (std::size_t k = 0; k < patch_count; ++k) {
+    pixels_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))] +=
+        patches.patches[k].pixels;
+  }
+  std::vector<std::int32_t> roots;
+  for (std::size_t k = 0; k < patch_count; ++k) {
+    if (union_find.find(static_cast<std::int32_t>(k)) == static_cast<std::int32_t>(k) &&
+        pixels_of_root[k] >= min_pixels) {
+      roots.push_back(static_cast<std::int32_t>(k));
+    }
+  }
+  std::stable_sort(roots.begin(), roots.end(), [&](std::int32_t a, std::int32_t b) {
+    return pixels_of_root[static_cast<std::size_t>(a)] > pixels_of_root[static_cast<std::size_t>(b)];
+  });
+  std::vector<std::uint32_t> id_of_root(patch_count, 0);
+  objects.resize(roots.size());
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    id_of_root[static_cast<std::size_t>(roots[k])] = static_cast<std::uint32_t>(k + 1);
+    SegmentedObject& object = objects[k];
+    object.id = static_cast<std::uint32_t>(k + 1);
+    object.min.setConstant(std::numeric_limits<double>::infinity());
+    object.max.setConstant(-std::numeric_limits<double>::infinity());
+  }
+  std::vector<std::uint32_t> id_of_patch(patch_count);
+  for (std::size_t k = 0; k < patch_count; ++k) {
+    id_of_patch[k] = id_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))];
+  }
+  return id_of_patch;
+}
+
+/// Writes the objects' labels and sums their points: size, centroid, box, and the support each
+/// stands on (the one nearest below its lowest point).
+void labelObjects(const PointGrid& grid, const ObjectPoints& points, const SurfacePatches& patches,
+                  const std::vector<std::uint32_t>& id_of_patch, const Supports& supports, ObjectSegmentation& result) {
+  std::vector<double> lowest(result.objects.size(), std::numeric_limits<double>::infinity());
+  std::vector<std::uint32_t> support_of(result.objects.size(), 0);
+  for (std::size_t k = 0; k < points.pixels.size(); ++k) {
+    const std::size_t i = points.pixels[k];
+    const std::uint32_t id = id_of_patch[static_cast<std::size_t>(patches.patch_of_point[k])];
+    if (id == 0) continue;
+    result.labels[i] = id;
+    SegmentedObject& object = result.objects[id - 1];
+    const float* p = grid.point(i);
+    const Eigen::Vector3d point(p[0], p[1], p[2]);
+    object.pixel_count += 1;
+    object.centroid += point;
+    object.min = object.min.cwiseMin(point);
+    object.max = object.max.cwiseMax(point);
+    for (const SupportSurface& surface : supports.surfaces) {
+      const double height = surface.height(point);
+      if (height < lowest[id - 1]) {
+        lowest[id - 1] = height;
+        support_of[id - 1] = surface.label;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < result.objects.size(); ++k) {
+    SegmentedObject& object = result.objects[k];
+    object.centroid /= static_cast<double>(object.pixel_count);
+    object.support = support_of[k];
+  }
+}
+
 }  // namespace
 
 ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& planes, const ObjectOptions& options) {
@@ -123,65 +193,9 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   joinConvexPatches(patches, options.concavity_tolerance_rad, union_find);
   absorbFragments(patches, options.min_object_pixels, union_find);
 
-  // The objects: the joined patches, largest first (ties in raster order of their first
-  // pixel), those still below the smallest size (touching no object) dropped.
-  const std::size_t patch_count = patches.patches.size();
-  std::vector<std::uint32_t> pixels_of_root(patch_count, 0);
-  for (std::size_t k = 0; k < patch_count; ++k) {
-    pixels_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))] +=
-        patches.patches[k].pixels;
-  }
-  std::vector<std::int32_t> roots;
-  for (std::size_t k = 0; k < patch_count; ++k) {
-    if (union_find.find(static_cast<std::int32_t>(k)) == static_cast<std::int32_t>(k) &&
-        pixels_of_root[k] >= options.min_object_pixels) {
-      roots.push_back(static_cast<std::int32_t>(k));
-    }
-  }
-  std::stable_sort(roots.begin(), roots.end(), [&](std::int32_t a, std::int32_t b) {
-    return pixels_of_root[static_cast<std::size_t>(a)] > pixels_of_root[static_cast<std::size_t>(b)];
-  });
-  std::vector<std::uint32_t> id_of_root(patch_count, 0);
-  result.objects.resize(roots.size());
-  for (std::size_t k = 0; k < roots.size(); ++k) {
-    id_of_root[static_cast<std::size_t>(roots[k])] = static_cast<std::uint32_t>(k + 1);
-    SegmentedObject& object = result.objects[k];
-    object.id = static_cast<std::uint32_t>(k + 1);
-    object.min.setConstant(std::numeric_limits<double>::infinity());
-    object.max.setConstant(-std::numeric_limits<double>::infinity());
-  }
-  std::vector<std::uint32_t> id_of_patch(patch_count);
-  for (std::size_t k = 0; k < patch_count; ++k) {
-    id_of_patch[k] = id_of_root[static_cast<std::size_t>(union_find.find(static_cast<std::int32_t>(k)))];
-  }
-  std::vector<double> lowest(roots.size(), std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> support_of(roots.size(), 0);
-  for (std::size_t k = 0; k < points.pixels.size(); ++k) {
-    const std::size_t i = points.pixels[k];
-    const std::uint32_t id = id_of_patch[static_cast<std::size_t>(patches.patch_of_point[k])];
-    if (id == 0) continue;
-    result.labels[i] = id;
-    SegmentedObject& object = result.objects[id - 1];
-    const float* p = grid.point(i);
-    const Eigen::Vector3d point(p[0], p[1], p[2]);
-    object.pixel_count += 1;
-    object.centroid += point;
-    object.min = object.min.cwiseMin(point);
-    object.max = object.max.cwiseMax(point);
-    // The support it stands on: the one nearest below its lowest point.
-    for (const SupportSurface& surface : supports.surfaces) {
-      const double height = surface.height(point);
-      if (height < lowest[id - 1]) {
-        lowest[id - 1] = height;
-        support_of[id - 1] = surface.label;
-      }
-    }
-  }
-  for (std::size_t k = 0; k < result.objects.size(); ++k) {
-    SegmentedObject& object = result.objects[k];
-    object.centroid /= static_cast<double>(object.pixel_count);
-    object.support = support_of[k];
-  }
+  const std::vector<std::uint32_t> id_of_patch =
+      numberObjects(patches, union_find, options.min_object_pixels, result.objects);
+  labelObjects(grid, points, patches, id_of_patch, supports, result);
   return result;
 }
 

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "floodplane/object_segmentation.h"
-#include "floodplane/segmenter.h"
+#include "floodplane/segmentation.h"
 
 namespace floodplane {
 

@@ -144,15 +144,20 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const CurrentLab
   // A neighbour without a return does not make a border: on a speckled surface there would be
   // no inside.
   //
-  // A large plane is sampled on a lattice (every s-th point of every s-th row) of about
-  // kPlanaritySamples measured pixels: its test is then still sensitive to a bend a tenth of
-  // the noise deep (see PlanarityTest), and the walls and floor, most of a frame, cost little.
+  // A large plane is sampled on a lattice (every c-th point of every r-th row, c >= r >= 1,
+  // c r as near its pixels / kPlanaritySamples as whole numbers get) of kPlanaritySamples to
+  // twice that many measured pixels: its test is then still sensitive to a bend a tenth of the
+  // noise deep (see PlanarityTest), and the walls and floor, most of a frame, cost little. (A
+  // square lattice, c = r, would sample a plane of just under 4 kPlanaritySamples pixels whole.)
   const PointGrid& grid = frame.grid;
   const std::vector<PlaneCandidate>& list = candidates_.list();
   strides_.assign(list.size() + 1, 1);
+  column_strides_.assign(list.size() + 1, 1);
   for (std::size_t k = 1; k <= list.size(); ++k) {
-    const double s = std::floor(std::sqrt(list[k - 1].sums.count / kPlanaritySamples));
-    strides_[k] = static_cast<std::uint32_t>(std::max(1.0, s));
+    const double ratio = list[k - 1].sums.count / kPlanaritySamples;
+    const double rows = std::max(1.0, std::floor(std::sqrt(ratio)));
+    strides_[k] = static_cast<std::uint32_t>(rows);
+    column_strides_[k] = static_cast<std::uint32_t>(std::max(1.0, std::floor(ratio / rows)));
   }
   const std::size_t width = static_cast<std::size_t>(grid.width);
   const HoleFilling& holes = *frame.holes;
@@ -165,13 +170,15 @@ void RegionBuilder::samplePlanarity(const PreparedFrame& frame, const CurrentLab
     const std::size_t row = y * width;
     labels.forEachRunInRow(row, 1, grid.width - 2, [&](std::uint32_t k, int begin, int end) {
       if (k == 0 || y % strides_[k] != 0) return;
-      const std::uint32_t s = strides_[k];
+      const std::uint32_t s = column_strides_[k];
       // The first column of the run on the plane's lattice.
       const std::uint32_t first = (static_cast<std::uint32_t>(begin) + s - 1) / s * s;
       for (std::size_t u = first; u < static_cast<std::size_t>(end); u += s) {
         const std::size_t i = row + u;
-        if (inside(i - 1, k) && inside(i + 1, k) && inside(i - width, k) && inside(i + width, k))
-          test.add(k, Vec3::load(grid.point(i)));
+        // Within the run the left and right neighbours are on k: only its ends look.
+        const bool across = (u > static_cast<std::size_t>(begin) || inside(i - 1, k)) &&
+                            (u + 1 < static_cast<std::size_t>(end) || inside(i + 1, k));
+        if (across && inside(i - width, k) && inside(i + width, k)) test.add(k, Vec3::load(grid.point(i)));
       }
     });
   }

@@ -11,7 +11,7 @@
 #include "flood/flood_pass.h"
 #include "floodplane/params.h"
 #include "floodplane/point_grid.h"
-#include "floodplane/segmenter.h"
+#include "floodplane/segmentation.h"
 #include "frame/prepared_frame.h"
 #include "models/facet_pairs.h"
 #include "models/flood_criterion.h"
@@ -64,8 +64,9 @@ class RegionBuilder {
   PlanarityTest planarity_;
   std::vector<PlaneFit> fits_;
   std::vector<bool> curved_, judgeable_;
-  std::vector<bool> union_bends_;       // per facet pair: its union bends (PlanarityTest::curvedPair)
-  std::vector<std::uint32_t> strides_;  // each plane's sampling stride in samplePlanarity
+  std::vector<bool> union_bends_;              // per facet pair: its union bends (PlanarityTest::curvedPair)
+  std::vector<std::uint32_t> strides_;         // per plane, samplePlanarity's rows: every strides_[k]-th
+  std::vector<std::uint32_t> column_strides_;  // ... and in them every column_strides_[k]-th point
   FacetPairs facet_pairs_;
   OcclusionMerging occlusion_merging_;
   BendMerging bend_merging_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "floodplane/point_grid.h"
+#include "models/plane_sums.h"
 #include "models/tolerances.h"
 #include "seeds/seed_selector.h"
 #include "util/distance_buffer.h"
@@ -25,6 +26,15 @@ class LeftoverSeeds {
                                 std::size_t min_pixels);
 
  private:
+  /// A region of unclaimed points (its pixels in members_).
+  struct Region {
+    PlaneSums sums;
+    double spacing = 0.0;  ///< summed distances of the neighbour links
+    std::size_t links = 0;
+  };
+  Region gather(const PointGrid& grid, const DistanceBuffer& buffer, const Tolerances& tolerances, std::size_t start);
+  bool seedOf(const PointGrid& grid, const Tolerances& tolerances, const Region& region, Seed& seed) const;
+
   std::vector<std::uint8_t> visited_;
   std::vector<std::size_t> stack_, members_;
   std::vector<Seed> seeds_;

@@ -3,6 +3,7 @@
 #include "seeds/seed_selector.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "models/plane_sums.h"
@@ -25,6 +26,46 @@ float widenedCosine(float angle, float noise_band, float lever) {
 bool sameDirection(const Vec3& u, const Vec3& v, float cos_angle) {
   const float dot = u.dot(v);
   return dot > 0.0f && dot * dot >= cos_angle * cos_angle * u.squaredNorm() * v.squaredNorm();
+}
+
+// Eq. 6: the normals of the four quadrants of the cross (spanned by the arms from the centre)
+// agree within acos(cos_angle).
+bool quadrantsAgree(const Vec3& to_right, const Vec3& to_up, const Vec3& to_left, const Vec3& to_down,
+                    float cos_angle) {
+  const Vec3 normals[4] = {to_right.cross(to_up), to_up.cross(to_left), to_left.cross(to_down),
+                           to_down.cross(to_right)};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      if (!sameDirection(normals[i], normals[j], cos_angle)) return false;
+    }
+  }
+  return true;
+}
+
+// Eq. 7, normalised: every point P_i of each arm (up, down, left, right of `center`, `rho`
+// long) lies in the direction of the arm's endpoint. To keep the lever long against noise,
+// points in the near half of an arm are seen from the endpoint (E - P_i against E - P) and the
+// far half from the centre (P_i - P against E - P); an edge anywhere on the arm bends one of
+// the two. Adds the centre and every point of the arms to `cross`.
+SeedVerdict testArms(const PointGrid& grid, std::size_t center, int width, int rho, const Vec3& p,
+                     const std::array<const Vec3*, 4>& endpoints, float cos_fine, PlaneSums& cross) {
+  const std::ptrdiff_t steps[4] = {-static_cast<std::ptrdiff_t>(width), static_cast<std::ptrdiff_t>(width), -1, 1};
+  cross.add(p);
+  for (int arm = 0; arm < 4; ++arm) {
+    const Vec3& end = *endpoints[static_cast<std::size_t>(arm)];
+    const Vec3 chord = end - p;
+    cross.add(end);
+    for (int i = 1; i < rho; ++i) {
+      const Vec3 pi =
+          Vec3::load(grid.point(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(center) + i * steps[arm])));
+      cross.add(pi);
+      const Vec3 direction = 2 * i >= rho ? pi - p : end - pi;
+      if (!sameDirection(direction, chord, cos_fine)) {
+        return std::isfinite(direction.squaredNorm()) ? SeedVerdict::kFineCurvature : SeedVerdict::kHole;
+      }
+    }
+  }
+  return SeedVerdict::kAccepted;
 }
 
 }  // namespace
@@ -82,41 +123,18 @@ SeedVerdict SeedSelector::test(const PointGrid& grid, int x, int y, Seed& seed) 
 
   // Eq. 6: the normals of the four quadrants of the cross agree.
   const Vec3 to_right = right - p, to_up = up - p, to_left = left - p, to_down = down - p;
-  Vec3 normals[4] = {to_right.cross(to_up), to_up.cross(to_left), to_left.cross(to_down), to_down.cross(to_right)};
   const float lever_sq = std::min(std::min(to_right.squaredNorm(), to_left.squaredNorm()),
                                   std::min(to_up.squaredNorm(), to_down.squaredNorm()));
   const float lever = std::sqrt(lever_sq);
   const float noise_band = noiseDeviations(tolerances_.noise(), kPointDeviations, range_sq);
   const float cos_coarse = widenedCosine(angle_, noise_band, lever);
-  for (int i = 0; i < 4; ++i) {
-    for (int j = i + 1; j < 4; ++j) {
-      if (!sameDirection(normals[i], normals[j], cos_coarse)) return SeedVerdict::kCoarseCurvature;
-    }
-  }
+  if (!quadrantsAgree(to_right, to_up, to_left, to_down, cos_coarse)) return SeedVerdict::kCoarseCurvature;
 
-  // Eq. 7, normalised: every point P_i of each arm lies in the direction of the arm's
-  // endpoint. To keep the lever long against noise, points in the near half of an arm are
-  // seen from the endpoint (E - P_i against E - P) and the far half from the centre
-  // (P_i - P against E - P); an edge anywhere on the arm bends one of the two.
+  // Eq. 7 over the half lever: every point of each arm lies in the direction of its endpoint.
   const float cos_fine = widenedCosine(angle_, noise_band, 0.5f * lever);
-  const std::ptrdiff_t steps[4] = {-static_cast<std::ptrdiff_t>(width_), static_cast<std::ptrdiff_t>(width_), -1, 1};
-  const Vec3* endpoints[4] = {&up, &down, &left, &right};
   PlaneSums cross;  // the points of the cross, for n_seed
-  cross.add(p);
-  for (int arm = 0; arm < 4; ++arm) {
-    const Vec3& end = *endpoints[arm];
-    const Vec3 chord = end - p;
-    cross.add(end);
-    for (int i = 1; i < rho; ++i) {
-      const Vec3 pi =
-          Vec3::load(grid.point(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(center) + i * steps[arm])));
-      cross.add(pi);
-      const Vec3 direction = 2 * i >= rho ? pi - p : end - pi;
-      if (!sameDirection(direction, chord, cos_fine)) {
-        return std::isfinite(direction.squaredNorm()) ? SeedVerdict::kFineCurvature : SeedVerdict::kHole;
-      }
-    }
-  }
+  const SeedVerdict arms = testArms(grid, center, width_, rho, p, {&up, &down, &left, &right}, cos_fine, cross);
+  if (arms != SeedVerdict::kAccepted) return arms;
 
   // n_seed: the least-squares normal of the cross, facing the sensor at 0 (fit() does).
   const PlaneFit fit = cross.fit();

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "segmenter/region_boundary.h"
 
-#include "floodplane/segmenter.h"
+#include "floodplane/segmentation.h"
 
 namespace floodplane {
 

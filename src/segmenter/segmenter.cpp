@@ -121,6 +121,43 @@ struct Segmenter::Workspace {
     return frame;
   }
 
+  // s > 1: the coarse pass over the block means and the coarse planes it finds, in
+  // coarse_planes.
+  void findCoarsePlanes(const PreparedFrame& frame, const Params& params, bool timed, Segmentation& result) {
+    {
+      PhaseTimer timer(timed, result.phases.flood_fill);
+      coarse.begin(frame.coarse, params);
+    }
+    coarse.seedAndFlood(timed, result.stats, result.phases);
+    PhaseTimer timer(timed, result.phases.merging);
+    coarse.relabel();
+    const MergedSegments clusters = coarse.merge(MergeCriterion(params, frame.coarse.tolerances));
+    coarse_planes.find(*frame.blocks, frame.coarse, coarse, clusters, params, frame.measured_tolerances);
+  }
+
+  // The fine pass over the pixels, from the coarse planes' inner blocks (s > 1): the merged
+  // segments, valid until the fine pass begins again.
+  MergedSegments segmentPixels(const PreparedFrame& frame, const Params& params, bool timed, Segmentation& result) {
+    {
+      // The fine pass starts with the coarse planes' inner blocks claimed and flooded on from
+      // their edges: flood work.
+      PhaseTimer timer(timed, result.phases.flood_fill);
+      fine.begin(fine_grid, params);
+      if (frame.blocks)
+        coarse_planes.claim(*frame.blocks, frame.grid, *frame.holes, frame.tolerances, frame.pitch, fine, result.stats);
+    }
+    fine.seedAndFlood(timed, result.stats, result.phases);
+    {
+      PhaseTimer timer(timed, result.phases.relabelling);
+      fine.relabel();
+      result.stats.segments = fine.segments().size() - 1;
+    }
+    PhaseTimer timer(timed, result.phases.merging);
+    MergedSegments clusters = fine.merge(MergeCriterion(params, frame.tolerances));
+    result.stats.merges = fine.mergeCount();
+    return clusters;
+  }
+
   // The noise model: measured on the full-resolution grid unless the parameters fix it.
   NoiseModel noiseModel(const PointGrid& full, const Params& params) {
     if (params.estimatesNoise()) return noise_estimator.estimate(full);
@@ -164,38 +201,8 @@ const Segmentation& Segmenter::segment(const PointGrid& full, const Options& opt
     PhaseTimer timer(timed, result_.phases.preparation);
     frame = ws.prepare(full, params_, reuse_noise, result_.noise);
   }
-  if (frame.blocks) {
-    {
-      PhaseTimer timer(timed, result_.phases.flood_fill);
-      ws.coarse.begin(frame.coarse, params_);
-    }
-    ws.coarse.seedAndFlood(timed, result_.stats, result_.phases);
-    PhaseTimer timer(timed, result_.phases.merging);
-    ws.coarse.relabel();
-    const MergedSegments clusters = ws.coarse.merge(MergeCriterion(params_, frame.coarse.tolerances));
-    ws.coarse_planes.find(*frame.blocks, frame.coarse, ws.coarse, clusters, params_, frame.measured_tolerances);
-  }
-  {
-    // The fine pass starts with the coarse planes' inner blocks claimed and flooded on from
-    // their edges: flood work.
-    PhaseTimer timer(timed, result_.phases.flood_fill);
-    ws.fine.begin(ws.fine_grid, params_);
-    if (frame.blocks)
-      ws.coarse_planes.claim(*frame.blocks, frame.grid, *frame.holes, frame.tolerances, frame.pitch, ws.fine,
-                             result_.stats);
-  }
-  ws.fine.seedAndFlood(timed, result_.stats, result_.phases);
-  {
-    PhaseTimer timer(timed, result_.phases.relabelling);
-    ws.fine.relabel();
-    result_.stats.segments = ws.fine.segments().size() - 1;
-  }
-  MergedSegments clusters;
-  {
-    PhaseTimer timer(timed, result_.phases.merging);
-    clusters = ws.fine.merge(MergeCriterion(params_, frame.tolerances));
-    result_.stats.merges = ws.fine.mergeCount();
-  }
+  if (frame.blocks) ws.findCoarsePlanes(frame, params_, timed, result_);
+  const MergedSegments clusters = ws.segmentPixels(frame, params_, timed, result_);
   {
     PhaseTimer timer(timed, result_.phases.region_output);
     ws.regions.assemble(frame, clusters, params_, options.refine);

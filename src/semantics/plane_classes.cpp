@@ -82,6 +82,31 @@ const char* planeClassName(PlaneClass plane_class) {
   return "unknown";
 }
 
+namespace {
+
+// The class of a plane of this orientation, `height` above the floor (when the frame has one).
+PlaneClass classOf(Orientation orientation, const PlaneFit& fit, double height, bool has_floor,
+                   const PlaneClassOptions& options) {
+  switch (orientation) {
+    case Orientation::up_facing:
+      return has_floor && std::abs(height) <= options.floor_height_tolerance_m ? PlaneClass::kFloor
+                                                                               : PlaneClass::kHorizontalSurface;
+    case Orientation::down_facing: {
+      const bool large = spreadArea(fit) >= options.min_ceiling_area_m2;
+      // Without a floor, the height cannot be told: the size alone decides.
+      const bool high = !has_floor || height >= options.min_ceiling_height_m;
+      return large && high ? PlaneClass::kCeiling : PlaneClass::kOther;
+    }
+    case Orientation::vertical:
+      return PlaneClass::kWall;
+    case Orientation::inclined:
+      break;
+  }
+  return PlaneClass::kOther;
+}
+
+}  // namespace
+
 std::vector<PlaneDescription> describePlanes(const std::vector<SegmentedPlane>& planes, const Eigen::Vector3d& up,
                                              const PlaneClassOptions& options) {
   if (!up.allFinite() || up.isZero(0.0)) {
@@ -120,27 +145,8 @@ std::vector<PlaneDescription> describePlanes(const std::vector<SegmentedPlane>& 
     description.height_above_floor = floor_plane && fit.centroid.allFinite()
                                          ? floor_plane->heightOf(fit.centroid, unit_up)
                                          : std::numeric_limits<double>::quiet_NaN();
-    const double height = description.height_above_floor;
-    switch (orientations[k]) {
-      case Orientation::up_facing:
-        description.plane_class = floor_plane && std::abs(height) <= options.floor_height_tolerance_m
-                                      ? PlaneClass::kFloor
-                                      : PlaneClass::kHorizontalSurface;
-        break;
-      case Orientation::down_facing: {
-        const bool large = spreadArea(fit) >= options.min_ceiling_area_m2;
-        // Without a floor, the height cannot be told: the size alone decides.
-        const bool high = !floor_plane || height >= options.min_ceiling_height_m;
-        description.plane_class = large && high ? PlaneClass::kCeiling : PlaneClass::kOther;
-        break;
-      }
-      case Orientation::vertical:
-        description.plane_class = PlaneClass::kWall;
-        break;
-      case Orientation::inclined:
-        description.plane_class = PlaneClass::kOther;
-        break;
-    }
+    description.plane_class =
+        classOf(orientations[k], fit, description.height_above_floor, floor_plane.has_value(), options);
   }
   return descriptions;
 }

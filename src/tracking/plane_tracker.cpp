@@ -253,6 +253,19 @@ void startTracks(const std::vector<SegmentedPlane>& planes, std::size_t frame, s
   }
 }
 
+// The tracks into the current camera frame, moved by `motion` (the camera's since the last
+// frame). Without a motion the best measurement is in a camera frame that has since moved by an
+// unknown amount, and the newest takes its place: a stale view of one surface would match
+// whatever the camera now sees where that surface was (measured: bench/HISTORY.md,
+// "Tracking without a camera motion"). No track has a plane of this frame yet.
+void bringIntoCurrentFrame(const Eigen::Isometry3d* motion, std::vector<PlaneTrack>& tracks) {
+  if (motion)
+    for (PlaneTrack& track : tracks) moveIntoCurrentFrame(track, *motion);
+  else
+    for (PlaneTrack& track : tracks) forgetBest(track);
+  for (PlaneTrack& track : tracks) track.plane = -1;
+}
+
 }  // namespace
 
 PlaneTracker::PlaneTracker() = default;
@@ -305,15 +318,7 @@ const std::vector<std::uint32_t>& PlaneTracker::associate(const Segmentation& se
     checkLabels(segmentation.labels, planes.size(), "update");
 
   // 2. The tracks into the current camera frame.
-  // Without a motion the best measurement is in a camera frame that has since moved by an
-  // unknown amount, and the newest takes its place: a stale view of one surface would match
-  // whatever the camera now sees where that surface was (measured: bench/HISTORY.md,
-  // "Tracking without a camera motion").
-  if (motion && frame > 0)
-    for (PlaneTrack& track : tracks_) moveIntoCurrentFrame(track, *motion);
-  else
-    for (PlaneTrack& track : tracks_) forgetBest(track);
-  for (PlaneTrack& track : tracks_) track.plane = -1;
+  bringIntoCurrentFrame(motion && frame > 0 ? motion : nullptr, tracks_);
 
   // 3. The overlap as intersection over union per (track, plane).
   const std::vector<double> overlap = intersectionOverUnion(counts, tracks_, plane_track_ids_, planes.size());

@@ -103,6 +103,29 @@ TEST(PlanarityTest, RejectsAPatchOfABall) {
   EXPECT_TRUE(curved(sample(ballCap, 60, 0.0, 5), tolerancesFor(0.0)));
 }
 
+// The unweighted sums (two at a time where the core has SIMD) are bit for bit those of a
+// weight of one (the per-monomial scalar loop): every judgement follows from them.
+TEST(PlanarityTest, UnweightedSumsAreThoseOfAWeightOfOne) {
+  const std::vector<Eigen::Vector3d> points = sample(columnFront, 40, 0.0019, 7);
+  PlaneSums sums;
+  for (const Eigen::Vector3d& p : points) sums.add(Vec3{float(p.x()), float(p.y()), float(p.z())});
+  PlanarityTest plain, weighted;
+  plain.reset({sums.fit(), sums.fit()});
+  weighted.reset({sums.fit(), sums.fit()});
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 p{float(points[i].x()), float(points[i].y()), float(points[i].z())};
+    const std::uint32_t k = 1 + static_cast<std::uint32_t>(i % 2);  // plane 2's sums are not 16-byte aligned
+    plain.add(k, p);
+    weighted.add(k, p, 1.0);
+  }
+  for (const std::uint32_t k : {1u, 2u}) {
+    EXPECT_EQ(plain.curvature(k), weighted.curvature(k)) << k;
+    EXPECT_GT(plain.curvature(k), 0.0) << k;
+  }
+  PlaneSums joint = sums;
+  EXPECT_EQ(plain.unionCurvature(1, 2, joint.fit()), weighted.unionCurvature(1, 2, joint.fit()));
+}
+
 TEST(PlanarityTest, KeepsAWallBentByFarLessThanTheCurvedThingsInRooms) {
   // The bend is significant (centimetres over a low noise) but its radius is far beyond
   // that of a column or a ball.
