@@ -50,11 +50,19 @@ void checkOptions(const ObjectOptions& options) {
   }
 }
 
+// Per object point: the support it is lowest above (0: none) and its height above it [m].
+struct LowestSupports {
+  std::vector<double> height;
+  std::vector<std::uint32_t> label;
+};
+
 // The object points: finite, on no support, and above every support by the clearance and
-// three noise deviations at their range.
+// three noise deviations at their range; with the support each is lowest above, found on the way.
 void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const Supports& supports,
-                      const ObjectOptions& options, ObjectPoints& points) {
+                      const ObjectOptions& options, ObjectPoints& points, LowestSupports& lowest) {
   points.clear();
+  lowest.height.clear();
+  lowest.label.clear();
   // Bytes, not std::vector<bool>'s bits: one load per pixel.
   const std::vector<std::uint8_t> on_support(supports.is_support.begin(), supports.is_support.end());
   const std::size_t labels = on_support.size();
@@ -69,15 +77,24 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
     const double clearance = options.support_clearance_m + noiseDeviations(planes.noise, kPointDeviations, range_sq) +
                              planes.noise.step_constant + planes.noise.step_quadratic * range_sq;
     bool above = true;
+    double lowest_height = std::numeric_limits<double>::infinity();
+    std::uint32_t lowest_label = 0;
     for (const SupportSurface& surface : supports.surfaces) {
-      if (surface.height(point) <= clearance) {
+      const double height = surface.height(point);
+      if (height <= clearance) {
         above = false;
         break;
+      }
+      if (height < lowest_height) {
+        lowest_height = height;
+        lowest_label = surface.label;
       }
     }
     if (above) {
       points.pixels.push_back(i);
       points.ranges.push_back(static_cast<float>(std::sqrt(range_sq)));
+      lowest.height.push_back(lowest_height);
+      lowest.label.push_back(lowest_label);
     }
   }
 }
@@ -87,6 +104,7 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
 // cost about as much as the work in it.
 struct ObjectWorkspace {
   ObjectPoints points;
+  LowestSupports lowest;
   UnionFind union_find;
   SurfacePatches patches;
   SurfaceWorkspace surfaces;
@@ -130,9 +148,10 @@ std::vector<std::uint32_t> numberObjects(const SurfacePatches& patches, UnionFin
 }
 
 /// Writes the objects' labels and sums their points: size, centroid, box, and the support each
-/// stands on (the one nearest below its lowest point).
+/// stands on (the one nearest below its lowest point, from each point's `lowest_support`).
 void labelObjects(const PointGrid& grid, const ObjectPoints& points, const SurfacePatches& patches,
-                  const std::vector<std::uint32_t>& id_of_patch, const Supports& supports, ObjectSegmentation& result) {
+                  const std::vector<std::uint32_t>& id_of_patch, const LowestSupports& lowest_support,
+                  ObjectSegmentation& result) {
   std::vector<double> lowest(result.objects.size(), std::numeric_limits<double>::infinity());
   std::vector<std::uint32_t> support_of(result.objects.size(), 0);
   for (std::size_t k = 0; k < points.pixels.size(); ++k) {
@@ -147,12 +166,9 @@ void labelObjects(const PointGrid& grid, const ObjectPoints& points, const Surfa
     object.centroid += point;
     object.min = object.min.cwiseMin(point);
     object.max = object.max.cwiseMax(point);
-    for (const SupportSurface& surface : supports.surfaces) {
-      const double height = surface.height(point);
-      if (height < lowest[id - 1]) {
-        lowest[id - 1] = height;
-        support_of[id - 1] = surface.label;
-      }
+    if (lowest_support.height[k] < lowest[id - 1]) {
+      lowest[id - 1] = lowest_support.height[k];
+      support_of[id - 1] = lowest_support.label[k];
     }
   }
   for (std::size_t k = 0; k < result.objects.size(); ++k) {
@@ -181,7 +197,7 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
   for (const SupportSurface& surface : supports.surfaces) result.supports.push_back(surface.label);
   thread_local ObjectWorkspace work;
   ObjectPoints& points = work.points;
-  findObjectPoints(grid, planes, supports, options, points);
+  findObjectPoints(grid, planes, supports, options, points, work.lowest);
 
   SurfaceStep step;
   step.noise = planes.noise;
@@ -195,7 +211,7 @@ ObjectSegmentation segmentObjects(const PointGrid& grid, const Segmentation& pla
 
   const std::vector<std::uint32_t> id_of_patch =
       numberObjects(patches, union_find, options.min_object_pixels, result.objects);
-  labelObjects(grid, points, patches, id_of_patch, supports, result);
+  labelObjects(grid, points, patches, id_of_patch, work.lowest, result);
   return result;
 }
 
