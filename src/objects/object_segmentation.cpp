@@ -63,6 +63,11 @@ void findObjectPoints(const PointGrid& grid, const Segmentation& planes, const S
   points.clear();
   lowest.height.clear();
   lowest.label.clear();
+  // Room for every pixel: no copy as they grow (only the pages written are touched).
+  points.pixels.reserve(grid.size());
+  points.ranges.reserve(grid.size());
+  lowest.height.reserve(grid.size());
+  lowest.label.reserve(grid.size());
   // Bytes, not std::vector<bool>'s bits: one load per pixel.
   const std::vector<std::uint8_t> on_support(supports.is_support.begin(), supports.is_support.end());
   const std::size_t labels = on_support.size();
