@@ -7,7 +7,7 @@
 #include <system_error>
 #include <utility>
 
-#include "io/label_file.h"
+#include "floodplane/io/label_file.h"
 
 namespace pcd_compare {
 

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/input_frame.h"
+#include "floodplane/io/labelled_cloud.h"
+#include "floodplane/io/pcd_file.h"
 #include "floodplane/object_segmentation.h"
-#include "io/input_frame.h"
-#include "io/labelled_cloud.h"
-#include "io/pcd_file.h"
 
 namespace floodplane::python {
 namespace {

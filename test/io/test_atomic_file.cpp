@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/atomic_file.h"
+#include "floodplane/io/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>

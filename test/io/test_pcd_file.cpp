@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/pcd_file.h"
+#include "floodplane/io/pcd_file.h"
 #include "temp_path.h"
 
 #include <gtest/gtest.h>

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/label_palette.h"
 #include "floodplane/params.h"
 #include "floodplane/version.h"
-#include "io/label_palette.h"
 #include "support/app_run.h"
 #include "support/library_labels.h"
 #include "support/png_images.h"

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/pcd_file.h"
+#include "floodplane/io/pcd_file.h"
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/conversions.h>
@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "io/atomic_file.h"
+#include "floodplane/io/atomic_file.h"
 
 namespace floodplane::io {
 namespace {
