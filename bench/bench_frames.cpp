@@ -9,8 +9,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/input_files.h"
-#include "io/input_frame.h"
+#include "floodplane/io/input_files.h"
+#include "floodplane/io/input_frame.h"
 #include "synth/point_cloud.h"
 #include "synth/renderer.h"
 #include "synth/scene_file.h"

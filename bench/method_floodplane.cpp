@@ -9,7 +9,7 @@
 
 #include "bench_frames.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
-#include "io/params_json.h"
+#include "floodplane/io/params_json.h"
 #include "methods.h"
 
 namespace floodplane::bench {

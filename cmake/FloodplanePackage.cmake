@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
-# The installed package: the API headers, the CMake package floodplane (components core, pcl
-# and ros, one targets file each: floodplaneConfig.cmake.in says why) and the pkg-config files
+# The installed package: the API headers, the CMake package floodplane (components core, pcl,
+# io and ros, one targets file each: floodplaneConfig.cmake.in says why) and the pkg-config files
 # floodplane-core.pc and floodplane.pc. Included by the top-level CMakeLists.txt after the
 # targets are defined (src/CMakeLists.txt installs them into their export sets).
 include(CMakePackageConfigHelpers)
@@ -20,12 +20,18 @@ endif()
 install(FILES ${PROJECT_BINARY_DIR}/include/floodplane/version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/floodplane)
 
-# ---- CMake: find_package(floodplane CONFIG [COMPONENTS core pcl]) ------------------------
+# ---- CMake: find_package(floodplane CONFIG [COMPONENTS core pcl io ros]) ----------------
 install(EXPORT floodplane-core-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
 if(FLOODPLANE_WITH_PCL)
   install(EXPORT floodplane-pcl-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
 endif()
-install(EXPORT floodplane-ros-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
+# The file formats (io/) and the ROS node's conversions on them: built with PCL.
+if(TARGET floodplane_io)
+  install(EXPORT floodplane-io-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
+endif()
+if(TARGET floodplane_ros_conversion)
+  install(EXPORT floodplane-ros-targets NAMESPACE floodplane:: DESTINATION ${floodplane_cmake_dir})
+endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/floodplaneConfig.cmake.in
   ${PROJECT_BINARY_DIR}/floodplaneConfig.cmake
   INSTALL_DESTINATION ${floodplane_cmake_dir})

@@ -5,10 +5,11 @@
 # temporary directory as one of the variants that the tests' own build is not, then checks
 # their install as users see it (scripts/check_install.sh):
 #   shared       BUILD_SHARED_LIBS=ON: the CMake consumers, the core without PCL, the
-#                components and pkg-config, each program using the installed .so files
+#                components, pkg-config and the components io and ros, each program using
+#                the installed .so files
 #   without-pcl  FLOODPLANE_WITH_PCL=OFF, configured with PCL unfindable (as on a machine
 #                without PCL): the core alone builds and installs, its consumers work, and
-#                asking for the pcl component says that it was not built
+#                asking for the pcl or io component says that it was not built
 # Given a build tree of the same sources (the tests give theirs), the variant takes from it the
 # objects that it compiled with the very same command and that are up to date
 # (scripts/compile_or_reuse.py: the libraries' sources compile alike in every variant; what
@@ -21,7 +22,7 @@ variant=${1:-}
 case $variant in
   shared)
     options=(-DBUILD_SHARED_LIBS=ON)
-    checks=(consumer core components pkg-config) ;;
+    checks=(consumer core components pkg-config io) ;;
   without-pcl)
     options=(-DFLOODPLANE_WITH_PCL=OFF -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON)
     checks=(core components pkg-config) ;;

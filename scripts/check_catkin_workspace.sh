@@ -2,9 +2,10 @@
 # SPDX-FileCopyrightText: 2026 The floodplane authors
 # SPDX-License-Identifier: BSD-3-Clause
 # The ROS package builds the ROS way too: from scratch, in a temporary folder,
-#   1. floodplane is configured without its apps, tests, Python module, PCL class and ROS
-#      build (what the package needs is the core and the conversions, its component ros),
-#      built and installed to a prefix with `cmake --install`;
+#   1. floodplane is configured without its apps, tests, Python module and ROS build (what the
+#      package needs is the core, the file formats' library floodplane::io, which needs PCL,
+#      and the conversions: its components core, io and ros), built and installed to a prefix
+#      with `cmake --install`;
 #   2. a catkin workspace whose src holds a copy of ros/floodplane_ros (a copy: nothing outside
 #      the package is within its reach) is built with catkin_make against that prefix
 #      (CMAKE_PREFIX_PATH), with Debian's python for catkin (-DPYTHON_EXECUTABLE) while another
@@ -66,10 +67,9 @@ step() {
 }
 
 prefix=$scratch/prefix
-echo "check_catkin_workspace: 1. floodplane, the core and its component ros, installed to $prefix"
+echo "check_catkin_workspace: 1. floodplane, the core and its components io and ros, installed to $prefix"
 step "$scratch/floodplane-configure.log" cmake -S "$root" -B "$scratch/floodplane-build" -DCMAKE_BUILD_TYPE=Release \
-  -DFLOODPLANE_BUILD_TESTS=OFF -DFLOODPLANE_BUILD_APPS=OFF -DFLOODPLANE_BUILD_PYTHON=OFF \
-  -DFLOODPLANE_WITH_PCL=OFF -DFLOODPLANE_BUILD_ROS=OFF
+  -DFLOODPLANE_BUILD_TESTS=OFF -DFLOODPLANE_BUILD_APPS=OFF -DFLOODPLANE_BUILD_PYTHON=OFF -DFLOODPLANE_BUILD_ROS=OFF
 step "$scratch/floodplane-build.log" cmake --build "$scratch/floodplane-build" --parallel "$jobs"
 step "$scratch/floodplane-install.log" cmake --install "$scratch/floodplane-build" --prefix "$prefix"
 

@@ -15,6 +15,10 @@
 #   components  what find_package(floodplane) answers to unknown, missing and optional components
 #   pkg-config  one-file programs built with `pkg-config --cflags --libs` floodplane-core (and
 #               floodplane, when the PCL class is installed)
+#   io          test/package/io_consumer (CMake, COMPONENTS io ros): the file formats' library and
+#               the ROS node's conversions on it, each of its headers on its own; and no header
+#               installed but the API's (include/floodplane), the file formats'
+#               (include/floodplane/io) and the conversions' (include/floodplane_ros_conversion)
 # When the install has shared libraries (BUILD_SHARED_LIBS=ON), the programs are also checked to
 # use them.
 #
@@ -25,7 +29,7 @@
 # PCL findable leaves no PCL_DIR in its cache: nothing even looked for PCL.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-[ $# -ge 2 ] || { echo "usage: $0 <build-dir> [--deb] <consumer|core|components|pkg-config>..." >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: $0 <build-dir> [--deb] <consumer|core|components|pkg-config|io>..." >&2; exit 2; }
 build=$(cd "$1" && pwd)
 shift
 from_deb=no
@@ -187,6 +191,10 @@ check_components() {
   expect_find optional-pcl-without-pcl "find_components: core=TRUE pcl=FALSE targets: core=yes floodplane=no" \
     -DFLOODPLANE_COMPONENTS=core -DFLOODPLANE_OPTIONAL_COMPONENTS=pcl -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
   if [ "$with_pcl" = yes ]; then
+    expect_find io "io=TRUE ros= targets: io=yes ros=no" -DFLOODPLANE_COMPONENTS=io
+    expect_find ros "io= ros=TRUE targets: io=yes ros=yes" -DFLOODPLANE_COMPONENTS=ros
+    expect_find_failure io-without-pcl "component io (floodplane::io) needs PCL" \
+      -DFLOODPLANE_COMPONENTS=io -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
     expect_find_failure pcl-without-pcl "component pcl (floodplane::floodplane) needs PCL 1.10 or later" \
       -DFLOODPLANE_COMPONENTS=pcl -DCMAKE_DISABLE_FIND_PACKAGE_PCL=ON
     expect_find_failure default-without-pcl "component pcl (floodplane::floodplane) needs PCL" \
@@ -196,6 +204,8 @@ check_components() {
   else
     expect_find_failure pcl-not-built "component pcl: this floodplane was built without it" \
       -DFLOODPLANE_COMPONENTS=pcl
+    expect_find_failure io-not-built "component io: this floodplane was built without it" \
+      -DFLOODPLANE_COMPONENTS=io
   fi
 }
 
@@ -223,12 +233,29 @@ check_pkg_config() {
   fi
 }
 
+check_io() {
+  [ -f "$config_dir/floodplane-io-targets.cmake" ] || fail "io: this install has no component io"
+  configure "$root/test/package/io_consumer" "$work/io-consumer"
+  logged "$work/io-consumer.build.log" cmake --build "$work/io-consumer" --parallel "$(nproc)"
+  "$work/io-consumer/io_consumer"
+  "$work/io-consumer/ros_conversion_consumer"
+  "$work/io-consumer/io_headers_link"
+  local stray
+  # Allowed: the API, its template definitions, io's and the conversions' headers, and where the
+  # ROS build is on, the catkin package's generated messages and dynamic_reconfigure config.
+  stray=$(cd "$prefix/include" && find . -type f | sed 's|^\./||' |
+    grep -vE '^floodplane/([^/]+|io/[^/]+)\.h$|^floodplane/impl/[^/]+\.hpp$|^floodplane_ros_conversion/[^/]+\.h$' |
+    grep -vE '^floodplane_ros/[A-Za-z]+\.h$' || true)
+  [ -z "$stray" ] || fail "io: headers installed outside the API, io's and the conversions' folders:"$'\n'"$stray"
+}
+
 for check in "$@"; do
   case $check in
     consumer) check_consumer ;;
     core) check_core ;;
     components) check_components ;;
     pkg-config) check_pkg_config ;;
+    io) check_io ;;
     *) echo "check_install: unknown check '$check'" >&2; exit 2 ;;
   esac
   echo "check_install: $check: passed"

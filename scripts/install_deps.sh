@@ -9,6 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libpcl-dev libeigen3-dev libflann-dev      # PCL (brings VTK and Boost), Eigen, FLANN
   liblz4-dev libpng-dev                      # PCD compression link line, PNG output
+  liblzf-dev                                 # PCD binary_compressed (LZF), written in bulk
   libgtest-dev libgmock-dev libbenchmark-dev # tests and benchmarks
   libcli11-dev nlohmann-json3-dev            # command-line parsing, JSON
   libtbb-dev                                 # pcd_segment -j: oneTBB's parallel_pipeline

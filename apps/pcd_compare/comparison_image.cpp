@@ -11,7 +11,7 @@
 #include <string>
 #include <utility>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 #include "view/plane_view.h"
 
 namespace pcd_compare {

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "floodplane/io/rgb_image.h"
 #include "input_cloud.h"
-#include "io/rgb_image.h"
 
 namespace pcd_compare {
 

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
-#include "io/params_json.h"
+#include "floodplane/io/params_json.h"
 #include "method.h"
 
 namespace pcd_compare {

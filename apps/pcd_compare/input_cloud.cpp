@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "io/input_frame.h"
+#include "floodplane/io/input_frame.h"
 
 namespace pcd_compare {
 

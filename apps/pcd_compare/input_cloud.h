@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/depth_camera.h"
+#include "floodplane/io/depth_camera.h"
 #include "method.h"
 
 namespace pcd_compare {

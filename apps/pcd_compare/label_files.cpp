@@ -7,7 +7,7 @@
 #include <system_error>
 #include <utility>
 
-#include "io/label_file.h"
+#include "floodplane/io/label_file.h"
 
 namespace pcd_compare {
 
@@ -31,6 +31,15 @@ std::string labelFileOf(const std::string& directory, const InputCloud& input, c
   const fs::path pcd = fs::path(directory) / (input.name + pcd_suffix);
   const fs::path png = fs::path(directory) / (input.name + ".png");
   std::error_code error;
+  // Something other than a file under a label file's name (a directory) is named as such,
+  // rather than reported missing.
+  for (const fs::path& candidate : {pcd, png}) {
+    if (fs::exists(candidate, error) && !fs::is_regular_file(candidate, error)) {
+      throw std::runtime_error(candidate.string() + " is " +
+                               (fs::is_directory(candidate, error) ? "a directory" : "not a regular file") +
+                               ", not a label file");
+    }
+  }
   const bool has_pcd = fs::is_regular_file(pcd, error);
   const bool has_png = fs::is_regular_file(png, error);
   if (has_pcd && has_png) {

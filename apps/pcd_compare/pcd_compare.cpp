@@ -32,14 +32,15 @@
 #include "cli/output_target.h"
 #include "comparison_image.h"
 #include "eval/segmentation_metrics.h"
+#include "floodplane/io/atomic_file.h"
+#include "floodplane/io/input_files.h"
+#include "floodplane/io/json_text.h"
+#include "floodplane/io/labelled_cloud.h"
+#include "floodplane/io/output_rule.h"
+#include "floodplane/io/pcd_file.h"
+#include "floodplane/io/png_file.h"
 #include "floodplane/version.h"
 #include "input_cloud.h"
-#include "io/atomic_file.h"
-#include "io/input_files.h"
-#include "io/json_text.h"
-#include "io/labelled_cloud.h"
-#include "io/pcd_file.h"
-#include "io/png_file.h"
 #include "label_files.h"
 #include "method.h"
 #include "object_report.h"
@@ -165,8 +166,8 @@ Methods makeMethods(const Options& options, Json& configuration) {
     }
     for (const LabelSource& source : options.label_sources) {
       configuration["object method " + source.name] =
-          "objects another program wrote (--labels): " + source.directory +
-          "/<stem>.objects.pcd or <stem>.png per input; not run here, no time";
+          "objects another program wrote (--labels): " + (fs::path(source.directory) / "<stem>.objects.pcd").string() +
+          " or <stem>.png per input; not run here, no time";
     }
     return methods;
   }
@@ -175,8 +176,9 @@ Methods makeMethods(const Options& options, Json& configuration) {
     configuration["method " + name] = methods.selected.back()->parameters();
   }
   for (const LabelSource& source : options.label_sources) {
-    configuration["method " + source.name] = "labels another program wrote (--labels): " + source.directory +
-                                             "/<stem>.labels.pcd or <stem>.png per input; not run here, no time";
+    configuration["method " + source.name] =
+        "labels another program wrote (--labels): " + (fs::path(source.directory) / "<stem>.labels.pcd").string() +
+        " or <stem>.png per input; not run here, no time";
   }
   if (options.tuned) {
     const TunedValues tuned = readTunedValues(options.tuned_file);
@@ -667,10 +669,10 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  if (const std::optional<std::string> collision = floodplane::cli::outputOverwritingInput(
+  if (const std::optional<std::string> collision = floodplane::io::outputCollision(
           outputsOfRun(options, scene_names), inputsOfRun(options, files, scene_names))) {
-    return floodplane::cli::usageError(app,
-                                       *collision + "; nothing written: give --json, --png or --png3d another place");
+    const std::string flags = options.objects ? "--json or --write-objects" : "--json, --png or --png3d";
+    return floodplane::cli::usageError(app, *collision + "; nothing written: give " + flags + " another place");
   }
   // Before any work: the comparison can take minutes, and every image would fail alike.
   if (const auto reason = options.png3d_dir.empty() ? std::nullopt : floodplane::view::renderingUnavailableReason()) {

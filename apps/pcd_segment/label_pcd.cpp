@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <type_traits>
 
-#include "io/pcd_file.h"
+#include "floodplane/io/pcd_file.h"
 
 namespace pcd_segment {
 

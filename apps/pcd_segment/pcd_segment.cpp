@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,14 +30,15 @@
 #include "cli/output_target.h"
 #include "cli/param_options.h"
 #include "floodplane/flood_fill_plane_segmentation.h"
+#include "floodplane/io/atomic_file.h"
+#include "floodplane/io/input_files.h"
+#include "floodplane/io/input_frame.h"
+#include "floodplane/io/json_text.h"
+#include "floodplane/io/label_palette.h"
+#include "floodplane/io/labelled_cloud.h"
+#include "floodplane/io/output_rule.h"
+#include "floodplane/io/png_file.h"
 #include "floodplane/plane_classes.h"
-#include "io/atomic_file.h"
-#include "io/input_files.h"
-#include "io/input_frame.h"
-#include "io/json_text.h"
-#include "io/label_palette.h"
-#include "io/labelled_cloud.h"
-#include "io/png_file.h"
 #include "label_pcd.h"
 #include "ordered_batch.h"
 #include "output_paths.h"
@@ -123,7 +125,7 @@ void addOutputFlags(CLI::App& app, Options& options) {
                "Also find the objects standing on the planes (floodplane::segmentObjects) and write "
                "<name>.objects.pcd (x y z label: object ids 1..K, largest first, 0 no object; <stem>.objects.pcd "
                "beside a single output file); with --json, each object's size, centroid, bounding box and "
-               "supporting plane in <name>.planes.json's \"objects\"");
+               "supporting plane (its label: with --track, its track id) in <name>.planes.json's \"objects\"");
   app.add_flag("-q,--quiet", options.quiet, "Print only errors");
   app.add_flag("--track", options.track,
                "The inputs are one sequence of frames, in the order given (a directory's files sorted by name): "
@@ -338,6 +340,13 @@ std::string reportText(const std::string& input, const Cloud& points, const floo
   report.planes = pcd_segment::planeRecords(segmented.coefficients, segmented.regions, segmented.inliers,
                                             segmented.boundaries, points.width);
   for (std::size_t k = 0; k < track_ids.size() && k < report.planes.size(); ++k) report.planes[k].track = track_ids[k];
+  if (report.objects && !track_ids.empty()) {
+    // With --track the labels hold track ids: an object's support names its plane the same way,
+    // so that support 17 is the plane labelled 17.
+    for (floodplane::SegmentedObject& object : *report.objects) {
+      if (object.support > 0 && object.support <= track_ids.size()) object.support = track_ids[object.support - 1];
+    }
+  }
   if (up) {
     report.up = up->normalized();
     pcd_segment::describeRecords(report.planes, floodplane::describePlanes(planes, *up));
@@ -444,15 +453,20 @@ bool sameFile(const std::string& a, const std::string& b) {
 std::vector<std::string> outputsOfRun(const std::vector<floodplane::io::InputFile>& files, const Options& options,
                                       bool single_file) {
   std::vector<std::string> outputs;
+  // An input of a name already seen is refused on its own (batchItems), and a --snapshot file
+  // for several inputs by checkViewOptions: neither is a collision of the run's outputs.
+  std::set<std::string> names;
   for (const floodplane::io::InputFile& file : files) {
-    if (!file.error.empty()) continue;
+    if (!file.error.empty() || !names.insert(pcd_segment::outputName(file.path)).second) continue;
     const pcd_segment::OutputPaths paths = pcd_segment::outputPaths(file.path, options.output, single_file);
     if (!paths.pcd.empty()) outputs.push_back(paths.pcd);
     if (options.png || paths.pcd.empty()) outputs.push_back(paths.png);
     if (options.json) outputs.push_back(paths.json);
     if (options.overlay) outputs.push_back(paths.overlay);
     if (options.objects) outputs.push_back(paths.objects);
-    if (options.snapshot) outputs.push_back(options.snapshot->empty() ? paths.snapshot : *options.snapshot);
+    if (options.snapshot && (options.snapshot->empty() || names.size() == 1)) {
+      outputs.push_back(options.snapshot->empty() ? paths.snapshot : *options.snapshot);
+    }
   }
   if (options.track && options.json) outputs.push_back(pcd_segment::tracksPath(options.output, single_file));
   return outputs;
@@ -694,8 +708,8 @@ int main(int argc, char** argv) {
     return floodplane::cli::usageError(
         app, "-o " + options.output + " is the input itself; give the " + file_kind + " file another name");
   }
-  if (const std::optional<std::string> collision = floodplane::cli::outputOverwritingInput(
-          outputsOfRun(files, options, single_file), inputsOfRun(files, options))) {
+  if (const std::optional<std::string> collision =
+          floodplane::io::outputCollision(outputsOfRun(files, options, single_file), inputsOfRun(files, options))) {
     return floodplane::cli::usageError(app, *collision + "; nothing written: give another -o");
   }
   if (const std::optional<int> exit_code = checkViewOptions(app, options, files.size())) return *exit_code;

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "planes_json.h"
 
-#include "io/params_json.h"
+#include "floodplane/io/params_json.h"
 
 #include <algorithm>
 #include <cmath>

@@ -80,7 +80,8 @@ struct Report {
 /// with an up direction, each plane's "class" (floodplane::planeClassName) and
 /// "height_above_floor" [m] (null when no floor was found); with objects, "objects_ms",
 /// "object_count" and "objects" (each object's id, pixels, centroid, bounding box min and max
-/// [m] and "support": the id of the plane it stands on, 0 for none).
+/// [m] and "support": the label of the plane it stands on, 0 for none: its "id", or with
+/// --track its "track", as the labels hold it).
 nlohmann::ordered_json reportJson(const Report& report);
 
 }  // namespace pcd_segment

@@ -6,7 +6,7 @@
 #include <regex>
 #include <stdexcept>
 
-#include "io/png_file.h"
+#include "floodplane/io/png_file.h"
 #include "view/plane_view.h"
 
 namespace pcd_segment {

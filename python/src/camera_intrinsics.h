@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "io/depth_camera.h"
+#include "floodplane/io/depth_camera.h"
 
 namespace floodplane::python {
 

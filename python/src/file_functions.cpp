@@ -16,10 +16,10 @@
 
 #include "camera_intrinsics.h"
 #include "errors.h"
-#include "io/depth_png.h"
-#include "io/input_frame.h"
-#include "io/pcd_file.h"
-#include "io/pcd_input.h"
+#include "floodplane/io/depth_png.h"
+#include "floodplane/io/input_frame.h"
+#include "floodplane/io/pcd_file.h"
+#include "floodplane/io/pcd_input.h"
 #include "params_kwargs.h"
 #include "point_arrays.h"
 

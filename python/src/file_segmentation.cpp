@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/atomic_file.h"
+#include "floodplane/io/input_frame.h"
+#include "floodplane/io/labelled_cloud.h"
+#include "floodplane/io/pcd_file.h"
 #include "floodplane/object_segmentation.h"
-#include "io/input_frame.h"
-#include "io/labelled_cloud.h"
-#include "io/pcd_file.h"
 
 namespace floodplane::python {
 namespace {
@@ -69,12 +70,16 @@ FileSummary segmentFile(Segmenter& segmenter, const std::string& input, const st
   std::optional<ObjectSegmentation> objects;
   if (!objects_output.empty()) objects = segmentObjects(grid, result);
   try {
+    // Both files or neither, as pcd_segment writes an input's outputs.
+    io::AtomicFileGroup files;
     if (frame.xyzrgb) {
-      io::savePcd(output, io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, result.labels));
+      files.add(output, io::encodePcd(io::labelledCloud<pcl::PointXYZRGBL>(*frame.xyzrgb, result.labels)));
     } else {
-      io::savePcd(output, io::labelledCloud<pcl::PointXYZL>(frame.xyz, result.labels));
+      files.add(output, io::encodePcd(io::labelledCloud<pcl::PointXYZL>(frame.xyz, result.labels)));
     }
-    if (objects) io::savePcd(objects_output, io::labelledCloud<pcl::PointXYZL>(frame.xyz, objects->labels));
+    if (objects)
+      files.add(objects_output, io::encodePcd(io::labelledCloud<pcl::PointXYZL>(frame.xyz, objects->labels)));
+    files.commit();
   } catch (const std::runtime_error& error) {
     throw OutputFileError(error.what());
   }

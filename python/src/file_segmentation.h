@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "floodplane/io/depth_camera.h"
 #include "floodplane/segmenter.h"
-#include "io/depth_camera.h"
 
 namespace floodplane::python {
 

@@ -7,7 +7,7 @@
 #include <array>
 #include <cstdint>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 
 namespace floodplane::python {
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/depth_camera.h"
 #include "floodplane/point_grid.h"
-#include "io/depth_camera.h"
 
 namespace floodplane::python {
 

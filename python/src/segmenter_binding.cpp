@@ -17,6 +17,7 @@
 #include "camera_intrinsics.h"
 #include "errors.h"
 #include "file_segmentation.h"
+#include "floodplane/io/output_rule.h"
 #include "floodplane/object_segmentation.h"
 #include "floodplane/segmenter.h"
 #include "params/params_table.h"
@@ -67,11 +68,10 @@ py::dict segmentFileSummary(SharedSegmenter& self, const std::filesystem::path& 
   const std::string output = output_file.string();
   const std::string objects_output = objects_file ? objects_file->string() : std::string();
   const std::string function = "Segmenter.segment_file";
-  // The same file by device and inode (another spelling, a link): refused before any work, as
-  // pcd_segment refuses an output over an input.
-  if (std::error_code error; std::filesystem::equivalent(input_file, output_file, error) && !error) {
-    throw py::value_error(function + ": the output '" + output + "' would overwrite the input '" + input +
-                          "'; nothing written");
+  // An output over the input or over the other output, however spelled: refused before any
+  // work, by the rule pcd_segment applies.
+  if (const std::optional<std::string> collision = floodplane::io::outputCollision({output, objects_output}, {input})) {
+    throw py::value_error(function + ": " + *collision + "; nothing written");
   }
   std::optional<DepthInput> depth;
   if (!intrinsics.is_none()) {

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "io/input_frame.h"
+#include "floodplane/io/input_frame.h"
 #include "loader_fuzzing.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

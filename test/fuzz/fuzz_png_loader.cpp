@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "io/depth_png.h"
-#include "io/input_frame.h"
-#include "io/label_file.h"
+#include "floodplane/io/depth_png.h"
+#include "floodplane/io/input_frame.h"
+#include "floodplane/io/label_file.h"
 #include "loader_fuzzing.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,8 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/atomic_file.h"
+#include "floodplane/io/atomic_file.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <linux/fs.h>
+#include <sys/ioctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -144,6 +147,51 @@ TEST_F(AtomicFile, AGroupWithADirectoryInTheWayCommitsNothing) {
   EXPECT_EQ(contents(directory_ / "a.pcd"), "previous");
   EXPECT_TRUE(fs::is_directory(directory_ / "a.png"));
   EXPECT_EQ(entries().size(), 2U) << "no temporary left";
+}
+
+// Sets or clears a file's immutable flag (chattr +i / -i); false where that cannot be done
+// (not root, a file system without the flag).
+bool setImmutable(const fs::path& path, bool immutable) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  int flags = 0;
+  bool done = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+  if (done) {
+    flags = immutable ? (flags | FS_IMMUTABLE_FL) : (flags & ~FS_IMMUTABLE_FL);
+    done = ::ioctl(fd, FS_IOC_SETFLAGS, &flags) == 0;
+  }
+  ::close(fd);
+  return done;
+}
+
+// An old file that cannot be replaced (immutable) behind one that can: the commit fails and
+// every path keeps its previous file, the replaceable one included.
+TEST_F(AtomicFile, AGroupThatCannotReplaceOneFileKeepsEveryPreviousFile) {
+  floodplane::io::writeBytesAtomically((directory_ / "a.pcd").string(), "previous cloud");
+  floodplane::io::writeBytesAtomically((directory_ / "a.objects.pcd").string(), "previous objects");
+  if (!setImmutable(directory_ / "a.objects.pcd", true)) GTEST_SKIP() << "cannot make a file immutable here";
+  floodplane::io::AtomicFileGroup group;
+  group.add((directory_ / "a.pcd").string(), "new cloud");
+  group.add((directory_ / "a.objects.pcd").string(), "new objects");
+  group.add((directory_ / "a.json").string(), "new json");
+  EXPECT_THROW(group.commit(), std::runtime_error);
+  setImmutable(directory_ / "a.objects.pcd", false);
+  EXPECT_EQ(contents(directory_ / "a.pcd"), "previous cloud");
+  EXPECT_EQ(contents(directory_ / "a.objects.pcd"), "previous objects");
+  EXPECT_FALSE(fs::exists(directory_ / "a.json"));
+  EXPECT_EQ(entries().size(), 2U) << "no temporary nor kept copy left";
+}
+
+// A successful commit leaves only the new files: the previous ones kept aside are gone.
+TEST_F(AtomicFile, AGroupCommittedOverPreviousFilesLeavesOnlyTheNewOnes) {
+  floodplane::io::writeBytesAtomically((directory_ / "a.pcd").string(), "previous cloud");
+  floodplane::io::AtomicFileGroup group;
+  group.add((directory_ / "a.pcd").string(), "new cloud");
+  group.add((directory_ / "a.json").string(), "new json");
+  group.commit();
+  EXPECT_EQ(contents(directory_ / "a.pcd"), "new cloud");
+  EXPECT_EQ(contents(directory_ / "a.json"), "new json");
+  EXPECT_EQ(entries().size(), 2U);
 }
 
 TEST_F(AtomicFile, AGroupRefusesAPathTwice) {

@@ -3,7 +3,7 @@
 // The back-projection of depth images: the pinhole formula, zero as no return, and the
 // checks of the intrinsics.
 
-#include "io/depth_camera.h"
+#include "floodplane/io/depth_camera.h"
 
 #include <gtest/gtest.h>
 

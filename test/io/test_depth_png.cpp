@@ -4,7 +4,7 @@
 // (never a crash, never a huge allocation) for a PNG that is not a depth image and for a
 // broken file. These run under AddressSanitizer in CI.
 
-#include "io/depth_png.h"
+#include "floodplane/io/depth_png.h"
 
 #include <gtest/gtest.h>
 #include <png.h>

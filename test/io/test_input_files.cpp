@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Which files a batch reads: the command line's files, and the input files in its directories.
 
-#include "io/input_files.h"
+#include "floodplane/io/input_files.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

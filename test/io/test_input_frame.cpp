@@ -4,7 +4,7 @@
 // crash, never a huge allocation) for every kind of bad file. These run under AddressSanitizer
 // in CI, which would see PCL reading past a truncated file.
 
-#include "io/input_frame.h"
+#include "floodplane/io/input_frame.h"
 
 #include <gtest/gtest.h>
 #include <pcl/common/io.h>
@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/depth_png.h"
+#include "floodplane/io/depth_png.h"
 #include "support/files.h"
 #include "support/one_line_error.h"
 #include "temp_path.h"

@@ -3,7 +3,7 @@
 // Reading label files other programs wrote: grey PNGs of 8 or 16 bits, label by label
 // exactly, and label PCDs as pcd_segment writes them; one clear line for everything else.
 
-#include "io/label_file.h"
+#include "floodplane/io/label_file.h"
 
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "io/depth_png.h"
+#include "floodplane/io/depth_png.h"
 #include "support/files.h"
 #include "support/one_line_error.h"
 #include "support/png_images.h"

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 
 #include <gtest/gtest.h>
 

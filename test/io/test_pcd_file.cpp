@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/pcd_file.h"
+#include "floodplane/io/pcd_file.h"
 #include "temp_path.h"
 
 #include <gtest/gtest.h>
@@ -9,11 +9,13 @@
 
 #include <cmath>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace floodplane::io {
 namespace {
@@ -138,6 +140,69 @@ TEST(PcdFileEncoding, AsciiIsWhatPclsAsciiWriterWrites) {
   expectAsciiAsPcl(rgb);
   expectAsciiAsPcl(rgba);
   expectAsciiAsPcl(normals);
+}
+
+// The binary_compressed encoding made from whole buffers: the header PCL's
+// writeBinaryCompressed writes, and what PCL's reader reads back from it the same cloud, point
+// for point and bit for bit (NaN included), pose and grid kept.
+template <typename PointT>
+void expectBinaryCompressedAsPcl(pcl::PointCloud<PointT> cloud) {
+  cloud.sensor_origin_ = Eigen::Vector4f(0.5F, -1.0F, 2.0F, 0.0F);
+  cloud.sensor_orientation_ = Eigen::Quaternionf(0.5F, -0.5F, 0.5F, -0.5F);
+  const fs::path pcl_path = floodplane::test::uniqueTempPath(".pcd");
+  ASSERT_EQ(pcl::PCDWriter().writeBinaryCompressed(pcl_path.string(), cloud), 0);
+  const std::string by_pcl = fileBytes(pcl_path);
+  fs::remove(pcl_path);
+  const std::string ours = floodplane::io::encodePcd(cloud, floodplane::io::PcdEncoding::binary_compressed);
+  const std::string data_line = "DATA binary_compressed\n";
+  ASSERT_NE(by_pcl.find(data_line), std::string::npos);
+  const std::size_t header = by_pcl.find(data_line) + data_line.size();
+  EXPECT_EQ(ours.substr(0, header), by_pcl.substr(0, header));
+  EXPECT_EQ(ours.substr(header + 4, 4), by_pcl.substr(header + 4, 4)) << "the uncompressed size";
+  const fs::path path = floodplane::test::uniqueTempPath(".pcd");
+  std::ofstream(path, std::ios::binary) << ours;
+  pcl::PointCloud<PointT> read;
+  ASSERT_EQ(pcl::io::loadPCDFile(path.string(), read), 0);
+  fs::remove(path);
+  ASSERT_EQ(read.width, cloud.width);
+  ASSERT_EQ(read.height, cloud.height);
+  EXPECT_EQ(read.is_dense, cloud.is_dense);
+  EXPECT_EQ(read.sensor_origin_, cloud.sensor_origin_);
+  EXPECT_EQ(read.sensor_orientation_.coeffs(), cloud.sensor_orientation_.coeffs());
+  std::vector<pcl::PCLPointField> fields;
+  pcl::getFields<PointT>(fields);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    for (const pcl::PCLPointField& field : fields) {
+      if (field.name == "_") continue;
+      const std::size_t bytes = field.count * pcl::getFieldSize(field.datatype);
+      EXPECT_EQ(std::memcmp(reinterpret_cast<const char*>(&read[i]) + field.offset,
+                            reinterpret_cast<const char*>(&cloud[i]) + field.offset, bytes),
+                0)
+          << "point " << i << ", field " << field.name;
+    }
+  }
+}
+
+TEST(PcdFileEncoding, BinaryCompressedIsWhatPclsReaderReadsAsWritten) {
+  expectBinaryCompressedAsPcl(smallOrganizedCloud());
+  // A frame's size, with a frame's structure (planes of labels, holes), and colours.
+  pcl::PointCloud<pcl::PointXYZRGBL> frame(640, 480);
+  for (std::uint32_t v = 0; v < frame.height; ++v) {
+    for (std::uint32_t u = 0; u < frame.width; ++u) {
+      auto& p = frame.at(u, v);
+      p.z = 1.0F + 0.001F * static_cast<float>(v);
+      p.x = (static_cast<float>(u) - 320.0F) * p.z / 525.0F;
+      p.y = (static_cast<float>(v) - 240.0F) * p.z / 525.0F;
+      p.rgba = 0xFF000000u | (u * 2654435761u % 0xFFFFFFu);
+      p.label = u < 300 ? 1 : (v < 200 ? 2 : 0);
+      if ((u * 7 + v * 3) % 97 == 0) p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
+    }
+  }
+  frame.is_dense = false;
+  expectBinaryCompressedAsPcl(frame);
+  pcl::PointCloud<pcl::PointNormal> normals(5, 1);
+  for (std::size_t i = 0; i < normals.size(); ++i) normals[i].x = normals[i].normal_y = normals[i].curvature = 0.5F * i;
+  expectBinaryCompressedAsPcl(normals);
 }
 
 // A write that fails part-way (here the file size limit, as a full disk would) is reported with

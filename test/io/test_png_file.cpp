@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/png_file.h"
+#include "floodplane/io/png_file.h"
 #include "support/png_images.h"
 #include "temp_path.h"
 

@@ -78,6 +78,35 @@ def test_segment_file_writes_the_objects(tmp_path):
     assert "objects" not in floodplane.segment_file(source, tmp_path / "plain.pcd")
 
 
+def test_segment_file_refuses_an_objects_output_over_the_input_or_the_labels(tmp_path):
+    source = tmp_path / "in.pcd"
+    floodplane.write_labels_pcd(str(source), table_points(), np.zeros((HEIGHT, WIDTH), np.uint32))
+    before = source.read_bytes()
+    # The input itself, by name: the objects would replace it.
+    with pytest.raises(ValueError, match="would overwrite the input"):
+        floodplane.segment_file(source, tmp_path / "l.pcd", objects_output=source)
+    assert source.read_bytes() == before
+    # The labelled cloud, by name or another spelling: the objects would replace it.
+    (tmp_path / "o2").mkdir()
+    for labels, objects in ((tmp_path / "s.pcd", tmp_path / "s.pcd"),
+                            (tmp_path / "o2" / "s.pcd", str(tmp_path / "o2") + "/./s.pcd")):
+        with pytest.raises(ValueError, match="are one file"):
+            floodplane.segment_file(source, labels, objects_output=objects)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.pcd", "o2"]
+    assert list((tmp_path / "o2").iterdir()) == []
+
+
+def test_segment_file_writes_both_outputs_or_neither(tmp_path):
+    source = tmp_path / "in.pcd"
+    floodplane.write_labels_pcd(str(source), table_points(), np.zeros((HEIGHT, WIDTH), np.uint32))
+    (tmp_path / "dir.objects.pcd").mkdir()
+    for objects in (tmp_path / "nodir" / "t.o.pcd", tmp_path / "dir.objects.pcd"):
+        with pytest.raises(OSError):
+            floodplane.segment_file(source, tmp_path / "t.pcd", objects_output=objects)
+        assert not (tmp_path / "t.pcd").exists(), f"{objects}: the labelled cloud left behind"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["dir.objects.pcd", "in.pcd"]
+
+
 def test_objects_pickle():
     result = floodplane.segment(table_points(), objects=True)
     copied = pickle.loads(pickle.dumps(result))

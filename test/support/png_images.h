@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/rgb_image.h"
+#include "floodplane/io/rgb_image.h"
 
 namespace floodplane::test {
 

@@ -39,7 +39,7 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv);
 inline constexpr const char* kUnlabelledPixels =
     "near-black where a point is on no plane, white where there is no point (no depth)";
 
-/// How the apps draw label images (io/label_palette.h's colours), for the help of the options
+/// How the apps draw label images (floodplane/io/label_palette.h's colours), for the help of the options
 /// that write them (--png): a pixel per point, each plane in a colour of its own (label k
 /// always the same colour), then kUnlabelledPixels.
 std::string labelImageHelp();

@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "io/input_frame.h"
+#include "floodplane/io/input_frame.h"
 
 namespace floodplane::cli {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "io/depth_camera.h"
-#include "io/input_files.h"
+#include "floodplane/io/depth_camera.h"
+#include "floodplane/io/input_files.h"
 
 namespace CLI {
 class App;

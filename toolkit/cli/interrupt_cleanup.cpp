@@ -8,7 +8,7 @@
 #include <csignal>
 #include <thread>
 
-#include "io/atomic_file.h"
+#include "floodplane/io/atomic_file.h"
 
 namespace floodplane::cli {
 namespace {

@@ -39,21 +39,4 @@ OutputKind outputKind(const std::string& flag, const std::string& output,
                               "; end a new directory's name with / if it has a dot");
 }
 
-std::optional<std::string> outputOverwritingInput(const std::vector<std::string>& outputs,
-                                                  const std::vector<std::string>& inputs) {
-  std::map<std::pair<dev_t, ino_t>, const std::string*> input_of_file;
-  for (const std::string& input : inputs) {
-    struct stat status {};
-    if (::stat(input.c_str(), &status) == 0)
-      input_of_file.emplace(std::make_pair(status.st_dev, status.st_ino), &input);
-  }
-  for (const std::string& output : outputs) {
-    struct stat status {};
-    if (::stat(output.c_str(), &status) != 0) continue;
-    const auto input = input_of_file.find({status.st_dev, status.st_ino});
-    if (input != input_of_file.end()) return "the output " + output + " would overwrite the input " + *input->second;
-  }
-  return std::nullopt;
-}
-
 }  // namespace floodplane::cli

@@ -24,14 +24,4 @@ enum class OutputKind { file, directory };
 OutputKind outputKind(const std::string& flag, const std::string& output,
                       const std::vector<std::string>& file_extensions, const std::string& meaning);
 
-/// The refusal of a run whose output would overwrite one of its inputs: "the output <output>
-/// would overwrite the input <input>" for the first of `outputs` (every file the run would
-/// write, side outputs included) that is the same file as one of `inputs` (every file it reads),
-/// found by device and inode (links followed: another name, a symbolic or hard link, a
-/// directory reached two ways), or nothing. An output that does not exist yet is no input;
-/// inputs that cannot be examined (missing) are left to the reader's error. Checked before any
-/// write, so that a refused run changes nothing.
-std::optional<std::string> outputOverwritingInput(const std::vector<std::string>& outputs,
-                                                  const std::vector<std::string>& inputs);
-
 }  // namespace floodplane::cli

@@ -227,7 +227,7 @@ std::string cameraPathJson(const std::string& scene_name, const std::vector<Eige
     frames.push_back({{"frame", k}, {"time", static_cast<double>(k) / frame_rate}, {"world_from_camera", rows}});
   }
   document["poses"] = std::move(frames);
-  // A scene named after a file whose name is not UTF-8: replaced as io/json_text.h says.
+  // A scene named after a file whose name is not UTF-8: replaced as floodplane/io/json_text.h says.
   return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

@@ -58,7 +58,7 @@ std::string groundTruthJson(const RenderedFrame& frame) {
                       {"merged_into", plane.merged_into}});
   }
   document["planes"] = std::move(planes);
-  // A scene named after a file whose name is not UTF-8: replaced as io/json_text.h says.
+  // A scene named after a file whose name is not UTF-8: replaced as floodplane/io/json_text.h says.
   return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

@@ -9,7 +9,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 
 namespace floodplane::view {
 namespace {

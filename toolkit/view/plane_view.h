@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "io/rgb_image.h"
+#include "floodplane/io/rgb_image.h"
 #include "view/plane_scene.h"
 
 namespace floodplane::view {

@@ -4,7 +4,7 @@
 // Depth images into points, by depth_image_proc's convention and without ROS types: 16UC1
 // (or mono16) in millimetres or 32FC1 in metres, 0 or NaN for no return, the pinhole
 // intrinsics from CameraInfo's K. The back-projection itself is floodplane_io's
-// (io/depth_camera.h), so a depth image gives the points pcd_segment and the Python module
+// (floodplane/io/depth_camera.h), so a depth image gives the points pcd_segment and the Python module
 // give it.
 
 #include <array>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "io/depth_camera.h"
+#include "floodplane/io/depth_camera.h"
 
 namespace floodplane::conversion {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 
 namespace floodplane::conversion {
 

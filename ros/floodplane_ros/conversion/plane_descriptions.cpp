@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 
 namespace floodplane::conversion {
 

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/depth_camera.h"
+#include "floodplane/io/depth_camera.h"
 
 namespace {
 

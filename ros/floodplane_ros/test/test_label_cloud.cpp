@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 
 namespace {
 

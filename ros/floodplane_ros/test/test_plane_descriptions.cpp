@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "core/test_scenes.h"
+#include "floodplane/io/label_palette.h"
 #include "floodplane/plane_classes.h"
 #include "floodplane/segmenter.h"
-#include "io/label_palette.h"
 #include "up_direction.h"
 
 namespace {

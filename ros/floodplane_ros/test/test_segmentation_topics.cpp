@@ -50,12 +50,12 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/depth_camera.h"
+#include "floodplane/io/label_palette.h"
+#include "floodplane/io/pcd_input.h"
 #include "floodplane/object_segmentation.h"
 #include "floodplane/plane_tracker.h"
 #include "floodplane/segmenter.h"
-#include "io/depth_camera.h"
-#include "io/label_palette.h"
-#include "io/pcd_input.h"
 #include "synth/room_walk.h"
 
 namespace {

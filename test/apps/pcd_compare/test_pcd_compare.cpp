@@ -619,5 +619,34 @@ TEST_F(PcdCompare, ObjectOptionsAreRefusedWithThePlaneComparison) {
                    "pcd_compare", "is a file");
 }
 
+// A directory under an objects file's name is named as a directory, not reported missing; the
+// configuration names the label files without a doubled '/'; a --write-objects file over a
+// label file it reads is refused naming the flags of an --objects run.
+TEST_F(PcdCompare, ObjectLabelsInADirectoryAreNamedAsSuch) {
+  const fs::path lab = dir_ / "lab";
+  fs::create_directories(lab / "tabletop.kinect.objects.pcd");
+  const fs::path json_file = dir_ / "report.json";
+  const Result result =
+      run("--objects --repeat 0 --object-methods floodplane --labels mine=" + quote(lab.string() + "/") + " --json " +
+          quote(json_file.string()) + " " + quote(kTabletop));
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.err.find((lab / "tabletop.kinect.objects.pcd").string() + " is a directory, not a label file"),
+            std::string::npos)
+      << result.err;
+  const nlohmann::json report = nlohmann::json::parse(readFile(json_file));
+  const std::string line = report["configuration"]["object method mine"].get<std::string>();
+  EXPECT_NE(line.find((lab / "<stem>.objects.pcd").string()), std::string::npos) << line;
+  EXPECT_EQ(line.find("//"), std::string::npos) << line;
+
+  const fs::path written = dir_ / "written";
+  fs::create_directories(written / "floodplane");
+  std::ofstream(written / "floodplane" / "tabletop.kinect.objects.pcd") << "labels another run wrote";
+  const Result over =
+      run("--objects --repeat 0 --object-methods floodplane --labels mine=" + quote((written / "floodplane").string()) +
+          " --write-objects " + quote(written.string()) + " " + quote(kTabletop));
+  expectUsageError(over, "pcd_compare", "give --json or --write-objects another place");
+  EXPECT_EQ(readFile(written / "floodplane" / "tabletop.kinect.objects.pcd"), "labels another run wrote");
+}
+
 }  // namespace
 }  // namespace floodplane::test

@@ -20,8 +20,8 @@
 #include <thread>
 #include <vector>
 
-#include "io/depth_camera.h"
-#include "io/depth_png.h"
+#include "floodplane/io/depth_camera.h"
+#include "floodplane/io/depth_png.h"
 #include "support/app_process.h"
 #include "support/app_run.h"
 
@@ -276,7 +276,7 @@ TEST_F(PcdCompareLabels, RefusesImagesOverTheDepthImagesOrTheGroundTruthItReads)
 }
 
 // A file name that is not UTF-8: --json's report is valid JSON, each ill-formed part of the
-// name written as U+FFFD (io/json_text.h: pcd_segment's rule, and Python's "replace").
+// name written as U+FFFD (floodplane/io/json_text.h: pcd_segment's rule, and Python's "replace").
 TEST_F(PcdCompareLabels, JsonOfANameThatIsNotUtf8IsValidWithTheBadBytesReplaced) {
   fs::create_directories(path("depth"));
   const std::string frame = path("depth/caf\xe9.png").string();

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "io/rgb_image.h"
+#include "floodplane/io/rgb_image.h"
 #include "support/app_run.h"
 #include "support/png_images.h"
 #include "view/plane_scene.h"

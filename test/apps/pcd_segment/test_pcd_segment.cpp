@@ -4,9 +4,13 @@
 // says: its labels against the library's on the same cloud, its JSON against its PCD, and
 // one clear error line and exit code for every kind of bad input.
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <linux/fs.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -20,9 +24,9 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/label_palette.h"
 #include "floodplane/params.h"
 #include "floodplane/version.h"
-#include "io/label_palette.h"
 #include "support/app_run.h"
 #include "support/library_labels.h"
 #include "support/png_images.h"
@@ -229,6 +233,83 @@ TEST_F(PcdSegment, ObjectsAreWrittenAsTheLibraryFindsThemWithTheirJson) {
   ASSERT_EQ(run({input, "-o", path("plain").string(), "--json"}).exit_code, 0);
   EXPECT_FALSE(fs::exists(path("plain/scene.objects.pcd")));
   EXPECT_FALSE(nlohmann::json::parse(readFile(path("plain/scene.planes.json"))).contains("objects"));
+}
+
+// Sets or clears a file's immutable flag (chattr +i / -i); false where that cannot be done
+// (not root, a file system without the flag).
+bool setImmutable(const fs::path& file, bool immutable) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  int flags = 0;
+  bool done = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+  if (done) {
+    flags = immutable ? (flags | FS_IMMUTABLE_FL) : (flags & ~FS_IMMUTABLE_FL);
+    done = ::ioctl(fd, FS_IOC_SETFLAGS, &flags) == 0;
+  }
+  ::close(fd);
+  return done;
+}
+
+// A rerun over an earlier run's outputs whose commit fails on one of them (made immutable):
+// the earlier run's outputs are all kept, whichever of them cannot be replaced.
+TEST_F(PcdSegment, ARerunThatCannotReplaceOneOutputKeepsAllTheEarlierOnes) {
+  const std::string input = writeScene("x.pcd", boxScene());
+  const std::vector<std::string> outputs = {"x.labels.pcd", "x.objects.pcd", "x.planes.json"};
+  for (const std::string stuck : {"x.objects.pcd", "x.planes.json", "x.labels.pcd"}) {
+    SCOPED_TRACE(stuck);
+    const fs::path out = path("out_" + stuck.substr(2, stuck.find('.', 2) - 2));  // no dot: a directory
+    ASSERT_EQ(run({input, "-o", out.string(), "--objects", "--json"}).exit_code, 0);
+    // The earlier run's files, told apart from the rerun's (which would write the same bytes).
+    std::map<std::string, std::string> earlier;
+    for (const std::string& name : outputs) {
+      earlier[name] = readFile(out / name) + "\n";
+      writeFile(out / name, earlier[name]);
+    }
+    if (!setImmutable(out / stuck, true)) GTEST_SKIP() << "cannot make a file immutable here";
+    const Result rerun = run({input, "-o", out.string(), "--objects", "--json"});
+    setImmutable(out / stuck, false);
+    EXPECT_EQ(rerun.exit_code, 1) << rerun.err;
+    EXPECT_TRUE(contains(rerun.err, stuck)) << rerun.err;
+    for (const std::string& name : outputs) EXPECT_EQ(readFile(out / name), earlier[name]) << name;
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(out)) ++entries;
+    EXPECT_EQ(entries, outputs.size()) << "no temporary nor kept copy left";
+  }
+}
+
+// With --track the labels hold track ids, and each object's "support" names its plane the
+// same way. The first frame sees more floor than wall, the second (a ball on the wall) more
+// wall: the wall's size rank changes, its track id does not.
+TEST_F(PcdSegment, AnObjectsSupportUnderTrackIsTheLabelOfItsPlane) {
+  Cloud first = twoPlaneScene();
+  for (int v = 0; v < 76; ++v)
+    for (int u = 0; u < static_cast<int>(first.width); ++u)
+      first.at(u, v).x = first.at(u, v).y = first.at(u, v).z = std::numeric_limits<float>::quiet_NaN();
+  fs::create_directory(path("seq"));
+  writeScene("seq/000.pcd", first);
+  // A ball in front of the wall: an object, never a plane.
+  Cloud second = twoPlaneScene();
+  for (int v = 30; v < 50; ++v) {
+    for (int u = 60; u < 80; ++u) {
+      const double r2 = ((u - 69.5) * (u - 69.5) + (v - 39.5) * (v - 39.5)) / 100.0;
+      if (r2 >= 1.0) continue;
+      pcl::PointXYZ& p = second.at(u, v);
+      const float scale = static_cast<float>(1.8 - 0.15 * std::sqrt(1.0 - r2)) / p.z;
+      p.x *= scale;
+      p.y *= scale;
+      p.z *= scale;
+    }
+  }
+  writeScene("seq/001.pcd", second);
+  const Result result = run({path("seq").string(), "-o", path("out").string(), "--track", "--objects", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  pcl::PointCloud<pcl::PointXYZL> labels;
+  ASSERT_EQ(pcl::io::loadPCDFile(path("out/001.labels.pcd").string(), labels), 0);
+  const std::uint32_t wall = labels.at(10, 10).label;
+  const auto json = nlohmann::json::parse(readFile(path("out/001.planes.json")));
+  ASSERT_EQ(json.at("object_count"), 1) << json.dump();
+  EXPECT_NE(wall, 1u) << "the wall's track id is its rank: the scene tells nothing";
+  EXPECT_EQ(json.at("objects").at(0).at("support"), wall) << "the ball stands on the wall";
 }
 
 TEST_F(PcdSegment, JsonAgreesWithThePcdAndPngSitsNextToIt) {

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "io/depth_camera.h"
-#include "io/depth_png.h"
+#include "floodplane/io/depth_camera.h"
+#include "floodplane/io/depth_png.h"
 #include "pcd_segment_test.h"
 #include "support/app_run.h"
 #include "support/library_labels.h"

@@ -30,7 +30,7 @@
 #include <thread>
 #include <vector>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 #include "support/app_process.h"
 #include "support/app_run.h"
 #include "support/png_images.h"

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "floodplane/io/output_rule.h"
 #include "support/app_run.h"
 
 namespace floodplane::test {
@@ -65,7 +66,6 @@ TEST_F(OutputTarget, NamesDirectoriesOnlyWhenTheOptionWritesNoFile) {
 // spelling of it, a symbolic or a hard link, a folder reached through a link. An output that
 // does not exist yet, or another file, is none.
 TEST_F(OutputTarget, FindsAnOutputThatIsAnInputByDeviceAndInode) {
-  using cli::outputOverwritingInput;
   namespace fs = std::filesystem;
   fs::create_directory(path("in"));
   writeFile(path("in/a.pcd"), "a");
@@ -77,12 +77,35 @@ TEST_F(OutputTarget, FindsAnOutputThatIsAnInputByDeviceAndInode) {
   const std::string a = path("in/a.pcd").string();
   for (const std::string& output : {a, path("in/../in/a.pcd").string(), path("hard.pcd").string(),
                                     path("soft.pcd").string(), path("alias/a.pcd").string()}) {
-    EXPECT_EQ(outputOverwritingInput({path("new.pcd").string(), output}, inputs),
+    EXPECT_EQ(io::outputCollision({path("new.pcd").string(), output}, inputs),
               "the output " + output + " would overwrite the input " + a);
   }
-  EXPECT_EQ(outputOverwritingInput({path("new.pcd").string(), path("in/c.pcd").string()}, inputs), std::nullopt);
-  EXPECT_EQ(outputOverwritingInput({a}, {path("missing.pcd").string()}), std::nullopt);
-  EXPECT_EQ(outputOverwritingInput({}, inputs), std::nullopt);
+  EXPECT_EQ(io::outputCollision({path("new.pcd").string(), path("in/c.pcd").string()}, inputs), std::nullopt);
+  EXPECT_EQ(io::outputCollision({a}, {path("missing.pcd").string()}), std::nullopt);
+  EXPECT_EQ(io::outputCollision({}, inputs), std::nullopt);
+}
+
+// Two outputs of one run that name one file, however spelled, or a link to one that exists:
+// the second would silently replace the first.
+TEST_F(OutputTarget, FindsTwoOutputsThatAreOneFile) {
+  namespace fs = std::filesystem;
+  fs::create_directory(path("o2"));
+  writeFile(path("in.pcd"), "in");
+  writeFile(path("o2/old.pcd"), "old");
+  fs::create_symlink(path("o2/old.pcd"), path("link.pcd"));
+  const std::vector<std::string> inputs = {path("in.pcd").string()};
+  const std::string s = path("o2/s.pcd").string();
+  for (const std::string& other : {s, path("o2/./s.pcd").string(), path("o2/../o2/s.pcd").string()}) {
+    EXPECT_EQ(io::outputCollision({s, other}, inputs), "the outputs " + s + " and " + other + " are one file");
+  }
+  EXPECT_EQ(io::outputCollision({path("o2/old.pcd").string(), path("link.pcd").string()}, inputs),
+            "the outputs " + path("o2/old.pcd").string() + " and " + path("link.pcd").string() + " are one file");
+  EXPECT_EQ(io::outputCollision({s, path("o2/s.objects.pcd").string(), ""}, inputs), std::nullopt);
+  // A missing directory on the way is no problem of this rule (the write reports it).
+  EXPECT_EQ(io::outputCollision({s, path("nodir/s.pcd").string()}, inputs), std::nullopt);
+  // An input not written yet by spelling: the rule compares paths too.
+  EXPECT_EQ(io::outputCollision({path("./in.pcd").string()}, inputs),
+            "the output " + path("./in.pcd").string() + " would overwrite the input " + path("in.pcd").string());
 }
 
 }  // namespace

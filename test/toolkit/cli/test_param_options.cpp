@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "floodplane/flood_fill_plane_segmentation.h"
-#include "io/params_json.h"
+#include "floodplane/io/params_json.h"
 #include "params/params_table.h"
 
 namespace floodplane::test {

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "io/pcd_file.h"
+#include "floodplane/io/pcd_file.h"
 #include "synth/ground_truth_json.h"
 #include "synth/point_cloud.h"
 #include "synth/scene_file.h"

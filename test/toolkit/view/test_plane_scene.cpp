@@ -10,7 +10,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "io/label_palette.h"
+#include "floodplane/io/label_palette.h"
 #include "view/plane_scene.h"
 
 namespace {

@@ -1,13 +1,13 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/png_file.h"
+#include "floodplane/io/png_file.h"
 
 #include <png.h>
 
 #include <limits>
 #include <stdexcept>
 
-#include "io/atomic_file.h"
+#include "floodplane/io/atomic_file.h"
 
 namespace floodplane::io {
 namespace {

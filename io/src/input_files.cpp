@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/input_files.h"
+#include "floodplane/io/input_files.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,13 +1,13 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/label_file.h"
+#include "floodplane/io/label_file.h"
 
 #include <stdexcept>
 #include <utility>
 
-#include "io/grey_png.h"
-#include "io/input_frame.h"
-#include "io/pcd_input.h"
+#include "floodplane/io/grey_png.h"
+#include "floodplane/io/input_frame.h"
+#include "floodplane/io/pcd_input.h"
 
 namespace floodplane::io {
 

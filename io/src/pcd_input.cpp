@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/pcd_input.h"
+#include "floodplane/io/pcd_input.h"
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/common/io.h>

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/grey_png.h"
+#include "floodplane/io/grey_png.h"
 
 #include <png.h>
 

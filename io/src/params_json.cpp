@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/params_json.h"
+#include "floodplane/io/params_json.h"
 
 #include <sstream>
 

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/depth_png.h"
+#include "floodplane/io/depth_png.h"
 
 #include <png.h>
 
@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "io/grey_png.h"
-#include "io/png_file.h"
+#include "floodplane/io/grey_png.h"
+#include "floodplane/io/png_file.h"
 
 namespace floodplane::io {
 

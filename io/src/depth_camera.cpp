@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/depth_camera.h"
+#include "floodplane/io/depth_camera.h"
 
 #include <cstdint>
 

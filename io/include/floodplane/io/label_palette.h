@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "io/rgb_image.h"
+#include "floodplane/io/rgb_image.h"
 
 namespace floodplane::io {
 

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/atomic_file.h"
+#include "floodplane/io/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -205,29 +205,67 @@ void AtomicFileGroup::renameAll() {
   pending_.clear();
   LiveTemporaries& live = liveTemporaries();
   const std::lock_guard<std::mutex> lock(live.mutex);
-  const auto remove_all = [&](std::size_t renamed) {
+  // Each path's previous file, kept under a second name until every new file is in place, so
+  // that a rename failing part-way puts the previous files back: the group replaces all of the
+  // old set or none of it. A hard link leaves the path in place meanwhile (a crash still finds
+  // the old file or the new one there); where links are refused (a file system without them)
+  // the old file is moved aside instead. An old file that cannot be linked nor moved (an
+  // immutable one, a directory that cannot change) stops the commit before anything changed.
+  struct Kept {
+    std::string backup;  // empty: the path had no file
+    bool moved = false;  // moved aside rather than linked: the path is empty until the rename
+  };
+  std::vector<Kept> kept(pending.size());
+  const auto give_back = [&](std::size_t renamed) {
     for (std::size_t k = 0; k < pending.size(); ++k) {
-      ::unlink((k < renamed ? pending[k].path : pending[k].temporary).c_str());
+      const Kept& old = kept[k];
+      if (k < renamed || old.moved) {
+        if (old.backup.empty()) {
+          ::unlink(pending[k].path.c_str());
+        } else {
+          ::rename(old.backup.c_str(), pending[k].path.c_str());
+        }
+      } else if (!old.backup.empty()) {
+        ::unlink(old.backup.c_str());
+      }
+      if (k >= renamed) ::unlink(pending[k].temporary.c_str());
       live.paths.erase(pending[k].temporary);
     }
   };
-  // rename() cannot put a file over a directory: found before anything is renamed, so that
-  // the usual failure leaves the previous files as they were.
+  // rename() cannot put a file over a directory: found before anything is renamed.
   for (const Pending& file : pending) {
     struct stat status {};
     if (::lstat(file.path.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) {
-      remove_all(0);
+      give_back(0);
       throw writeError(file.path, systemError(EISDIR));
+    }
+  }
+  for (std::size_t k = 0; k < pending.size(); ++k) {
+    struct stat status {};
+    if (::lstat(pending[k].path.c_str(), &status) != 0) continue;
+    const std::string backup = pending[k].temporary + ".old";
+    if (::link(pending[k].path.c_str(), backup.c_str()) == 0) {
+      kept[k].backup = backup;
+    } else if (::rename(pending[k].path.c_str(), backup.c_str()) == 0) {
+      kept[k] = {backup, true};
+    } else {
+      const int error = errno;
+      give_back(0);
+      throw writeError(pending[k].path, "cannot replace the previous file: " + systemError(error));
     }
   }
   for (std::size_t k = 0; k < pending.size(); ++k) {
     if (::rename(pending[k].temporary.c_str(), pending[k].path.c_str()) != 0) {
       const int error = errno;
-      remove_all(k);
+      give_back(k);
       throw writeError(pending[k].path, "rename failed: " + systemError(error));
     }
+    kept[k].moved = false;  // the path holds the new file
   }
-  for (const Pending& file : pending) live.paths.erase(file.temporary);
+  for (std::size_t k = 0; k < pending.size(); ++k) {
+    if (!kept[k].backup.empty()) ::unlink(kept[k].backup.c_str());
+    live.paths.erase(pending[k].temporary);
+  }
 }
 
 void writeBytesAtomically(const std::string& path, std::string_view bytes) {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "io/input_frame.h"
+#include "floodplane/io/input_frame.h"
 
 namespace floodplane::io {
 

@@ -3,7 +3,7 @@
 #pragma once
 // Reading single-channel grey PNG files sample by sample, exactly, with the checks that keep
 // libpng from reading a broken file into a crash or exhausting memory: the one reader of depth
-// images (16 bits, io/depth_png.h) and label images (8 or 16 bits, io/label_file.h).
+// images (16 bits, floodplane/io/depth_png.h) and label images (8 or 16 bits, floodplane/io/label_file.h).
 
 #include <cstdint>
 #include <string>

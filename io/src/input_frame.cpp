@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The floodplane authors
 // SPDX-License-Identifier: BSD-3-Clause
-#include "io/input_frame.h"
+#include "floodplane/io/input_frame.h"
 
 #include <pcl/common/point_tests.h>
 
@@ -8,8 +8,8 @@
 #include <cctype>
 #include <stdexcept>
 
-#include "io/depth_png.h"
-#include "io/pcd_input.h"
+#include "floodplane/io/depth_png.h"
+#include "floodplane/io/pcd_input.h"
 
 namespace floodplane::io {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "io/rgb_image.h"
+#include "floodplane/io/rgb_image.h"
 
 namespace floodplane::io {
 

@@ -16,9 +16,11 @@ namespace floodplane::io {
 /// next to it (a hidden ".NAME.tmp.<pid>.<n>"), checking every write, so that an error such as
 /// a full disk shows there with the system's reason; commit() then renames them all over their
 /// paths. Until commit() no path has changed; a group destroyed before it (an error, an
-/// exception) removes its temporaries and leaves the paths as they were. If a rename fails
-/// part-way (after the checks commit() makes first, such as a directory at a path), the files
-/// the group already put in place are removed again: nothing of the group is left.
+/// exception) removes its temporaries and leaves the paths as they were. commit() replaces all
+/// of the previous files or none: it keeps each previous file under a second name (a hard link)
+/// until every new one is in place, and if a path cannot be replaced (a directory there, an
+/// immutable file) or a rename fails part-way, every path gets its previous file back (or none,
+/// if it had none): nothing of the group is left and nothing of the old set is lost.
 /// Each temporary is flushed to the disk (fsync) before any rename, and the directories after
 /// them: after a crash or a power loss a path holds its previous file or the whole new one,
 /// never an empty or partial file.

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "io/depth_camera.h"
-#include "io/rgb_image.h"
+#include "floodplane/io/depth_camera.h"
+#include "floodplane/io/rgb_image.h"
 
 namespace floodplane::io {
 
@@ -36,15 +36,15 @@ inline constexpr const char* kDepthImageExtension = ".png";
 bool isDepthImagePath(const std::string& path);
 
 /// Reads the frame in `path`. A depth image (isDepthImagePath) is read with readDepthPng
-/// (io/depth_png.h) and back-projected with `camera` into points without colour, NaN where
+/// (floodplane/io/depth_png.h) and back-projected with `camera` into points without colour, NaN where
 /// the depth is 0; it needs `camera`. Every other input is read as an organized PCD file
-/// (readPcdFrame, io/pcd_input.h). Throws std::runtime_error with a one-line reason, without
+/// (readPcdFrame, floodplane/io/pcd_input.h). Throws std::runtime_error with a one-line reason, without
 /// the path, when the file cannot be read as a frame, or when a depth image comes without a
 /// camera; std::invalid_argument when `camera` has a problem().
 InputFrame loadInputFrame(const std::string& path, const std::optional<DepthCamera>& camera = std::nullopt);
 
 /// 1 for each point of `points` whose x, y and z are finite, 0 for the others (no depth: a
-/// hole), row-major: what a label image paints as a hole (io/label_palette.h).
+/// hole), row-major: what a label image paints as a hole (floodplane/io/label_palette.h).
 std::vector<std::uint8_t> finitePoints(const pcl::PointCloud<pcl::PointXYZ>& points);
 
 /// The colour of every pixel of a frame read with colour (InputFrame::xyzrgb), holes
