@@ -201,7 +201,8 @@ TEST(PcdFileEncoding, BinaryCompressedIsWhatPclsReaderReadsAsWritten) {
   frame.is_dense = false;
   expectBinaryCompressedAsPcl(frame);
   pcl::PointCloud<pcl::PointNormal> normals(5, 1);
-  for (std::size_t i = 0; i < normals.size(); ++i) normals[i].x = normals[i].normal_y = normals[i].curvature = 0.5F * i;
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    normals[i].x = normals[i].normal_y = normals[i].curvature = 0.5F * static_cast<float>(i);
   expectBinaryCompressedAsPcl(normals);
 }
 
